@@ -1,0 +1,96 @@
+"""The one exception family of mechloop.
+
+Every error a user can cause derives from :class:`MechloopError` and also from the builtin a
+caller would naturally catch (``ValueError``).  Each carries typed fields and builds its
+message in ``__str__``, so it reads well on the command line and survives pickling (worker
+processes raise these too).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+class MechloopError(Exception):
+    """Base class of every error mechloop raises on purpose."""
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One thing wrong with a model: where it is, what is wrong and how to fix it.
+
+    ``path`` is the location inside the model document as a tuple of keys and list indices,
+    e.g. ``("vectors", 3, "a")``; ``line`` is the 1-based line in the file when known.
+    """
+
+    path: tuple[str | int, ...]
+    message: str
+    hint: str = ""
+    line: int | None = None
+
+    def where(self) -> str:
+        return format_path(self.path)
+
+    def render(self, file: str | None = None) -> str:
+        place = []
+        if file:
+            place.append(file if self.line is None else f"{file}:{self.line}")
+        elif self.line is not None:
+            place.append(f"line {self.line}")
+        if self.path:
+            place.append(self.where())
+        head = ", ".join(place)
+        text = f"{head}: {self.message}" if head else self.message
+        if self.hint:
+            text += f"\n    fix: {self.hint}"
+        return text
+
+
+def format_path(path: tuple[str | int, ...]) -> str:
+    """Render a document path: ``vectors[3].a``, ``contours[0].variant``."""
+    out = ""
+    for key in path:
+        if isinstance(key, int):
+            out += f"[{key}]"
+        else:
+            out += ("." if out else "") + str(key)
+    return out
+
+
+class ModelError(ValueError, MechloopError):
+    """A model (from a file or built in code) is invalid; lists every problem found."""
+
+    def __init__(self, problems: list[Problem] | tuple[Problem, ...], file: str | None = None):
+        self.problems = tuple(problems)
+        self.file = file
+        super().__init__(self.problems, file)
+
+    def __str__(self) -> str:
+        n = len(self.problems)
+        lines = [p.render(self.file) for p in self.problems]
+        if n == 1:
+            return lines[0]
+        head = f"{n} problems in {self.file or 'the model'}:"
+        return "\n".join([head, *("- " + line.replace("\n", "\n  ") for line in lines)])
+
+    def __reduce__(self):
+        return (type(self), (self.problems, self.file))
+
+
+class ModelFileError(ModelError):
+    """The model file cannot be read or parsed (missing, not YAML, not a mapping)."""
+
+
+class SolveError(ValueError, MechloopError):
+    """A model is valid but its data make a requested quantity undefined."""
+
+    def __init__(self, message: str, hint: str = ""):
+        self.message = message
+        self.hint = hint
+        super().__init__(message, hint)
+
+    def __str__(self) -> str:
+        return self.message + (f"\n    fix: {self.hint}" if self.hint else "")
+
+    def __reduce__(self):
+        return (type(self), (self.message, self.hint))

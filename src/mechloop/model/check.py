@@ -1,0 +1,171 @@
+"""Whole-model validation: structure, units, argument tables and laws, model time.
+
+:func:`check_model` returns every problem at once (STYLE: validate up front, report all);
+:func:`require_valid` raises them as one :class:`~mechloop.errors.ModelError`.
+"""
+
+from __future__ import annotations
+
+from mechloop.errors import ModelError, Problem
+from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument
+from mechloop.model.structure import Structure, analyze
+from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
+
+KIND_OF = {"r": "length", "a": "angle"}
+
+
+def argument_kinds(model: Model) -> dict[int, set[str]]:
+    """For each argument, the kinds ('length', 'angle') of the parameters it drives."""
+    kinds: dict[int, set[str]] = {k: set() for k in model.arguments}
+    for vector in model.vectors.values():
+        for letter in "ra":
+            role = vector.r if letter == "r" else vector.a
+            if isinstance(role, ArgumentRole) and role.argument in kinds:
+                kinds[role.argument].add(KIND_OF[letter])
+    return kinds
+
+
+def argument_kind(model: Model, number: int) -> Kind:
+    """The kind of argument ``number`` (defaults to 'angle' for an unused argument)."""
+    kinds = argument_kinds(model).get(number, set())
+    return "length" if kinds == {"length"} else "angle"
+
+
+def check_model(model: Model) -> tuple[Structure, list[Problem]]:
+    """Every problem of ``model``, in document order as far as practical."""
+    structure, problems = analyze(model)
+    problems = _check_units(model) + problems
+    problems += _check_arguments(model)
+    problems += _check_time(model)
+    return structure, problems
+
+
+def require_valid(model: Model, *, file: str | None = None) -> Structure:
+    """The model's structure, or a :class:`ModelError` listing every problem."""
+    structure, problems = check_model(model)
+    if problems:
+        raise ModelError(problems, file)
+    return structure
+
+
+def _unit_problem(path: tuple, exc: UnitProblem) -> Problem:
+    return Problem(path, exc.message, exc.hint)
+
+
+def _check_units(model: Model) -> list[Problem]:
+    problems: list[Problem] = []
+    for kind in ("length", "angle"):
+        try:
+            unit_factor(getattr(model.units, kind), kind)
+        except UnitProblem as exc:
+            problems.append(_unit_problem(("units", kind), exc))
+    if problems:
+        return problems  # every number below would repeat the same complaint
+    for number, vector in model.vectors.items():
+        for letter in "ra":
+            role = vector.r if letter == "r" else vector.a
+            kind = KIND_OF[letter]
+            default = getattr(model.units, kind)
+            path = ("vectors", number, letter)
+            values: list[tuple[tuple, float | str]] = []
+            if isinstance(role, ArgumentRole):
+                values.append(((*path, "offset"), role.offset))
+            elif isinstance(role, LinkRole):
+                values.append(((*path, "delta"), role.delta))
+            elif isinstance(role, float | int) or (isinstance(role, str)
+                                                  and role.strip() != "function"):
+                values.append((path, role))
+            for where, value in values:
+                try:
+                    to_si(value, kind, default)
+                except UnitProblem as exc:
+                    problems.append(_unit_problem(where, exc))
+    return problems
+
+
+def _check_arguments(model: Model) -> list[Problem]:
+    problems: list[Problem] = []
+    n = model.positions
+    kinds = argument_kinds(model)
+    for number, arg in model.arguments.items():
+        path = ("arguments", number)
+        used = kinds[number]
+        if not used:
+            problems.append(Problem(path, f"argument {number} drives no vector parameter",
+                                    f"use it in a vector (e.g. a: {{argument: {number}}}) "
+                                    "or remove it"))
+        elif len(used) > 1:
+            problems.append(Problem(path, f"argument {number} drives both lengths and angles",
+                                    "give lengths and angles separate arguments"))
+        kind: Kind = "length" if used == {"length"} else "angle"
+        unit = arg.unit or getattr(model.units, kind)
+        try:
+            unit_factor(unit, kind)
+        except UnitProblem as exc:
+            problems.append(_unit_problem((*path, "unit"), exc))
+            continue
+        if isinstance(arg, TableArgument):
+            problems += _check_table(arg.table, n, (*path, "table"), kind, unit)
+        elif isinstance(arg, LawArgument):
+            (k0, v0), (k1, v1) = arg.start, arg.end
+            for key, k in (("start", k0), ("end", k1)):
+                if not 0 <= k <= n:
+                    problems.append(Problem((*path, key, 0), f"{key} position {k} is outside "
+                                            f"the calculation positions 0..{n}",
+                                            f"use a position between 0 and {n}"))
+            if k1 <= k0:
+                problems.append(Problem((*path, "end", 0), f"the law ends at position {k1}, "
+                                        f"not after its start {k0}",
+                                        "make the end position larger than the start"))
+            for key, v in (("start", v0), ("end", v1)):
+                try:
+                    to_si(v, kind, unit)
+                except UnitProblem as exc:
+                    problems.append(_unit_problem((*path, key, 1), exc))
+    return problems
+
+
+def _check_table(table, n: int, path: tuple, kind: Kind | None, unit: str | None
+                 ) -> list[Problem]:
+    problems: list[Problem] = []
+    if isinstance(table, dict):
+        if not table:
+            problems.append(Problem(path, "the table is empty",
+                                    "give at least one 'position: value' pair"))
+        items = table.items()
+    else:
+        if len(table) != n + 1:
+            problems.append(Problem(path, f"the table lists {len(table)} values, but the "
+                                    f"model has {n + 1} positions (0..{n})",
+                                    f"give {n + 1} values, or a sparse mapping "
+                                    "{position: value}"))
+        items = enumerate(table)
+    for k, value in items:
+        if not 0 <= k <= n:
+            problems.append(Problem((*path, k), f"position {k} is outside the calculation "
+                                    f"positions 0..{n}",
+                                    f"use positions between 0 and {n}, or raise 'positions'"))
+        if kind is not None and unit is not None:
+            try:
+                to_si(value, kind, unit)
+            except UnitProblem as exc:
+                problems.append(_unit_problem((*path, k), exc))
+    return problems
+
+
+def _check_time(model: Model) -> list[Problem]:
+    time = model.time
+    if time is None or not hasattr(time, "table"):
+        return []
+    path = ("time", "table")
+    problems = _check_table(time.table, model.positions, path, None, None)
+    if problems:
+        return problems
+    from mechloop.model.tables import fill_table
+
+    t = fill_table(time.table, model.positions)
+    if len(time.table) < 2 or not (t[1:] > t[:-1]).all():
+        problems.append(Problem(path, "model time must increase from position to position",
+                                "give at least the first and the last position with "
+                                "increasing times, e.g. {0: 0, N: 0.03}"))
+    return problems

@@ -1,0 +1,94 @@
+"""Structure and parametric formulas of a vector model, as text (KDAM's "structure of the
+vector model" panel).
+
+Structure formula of a contour: ``n=2, m=4`` (planar, four vectors) plus the links that tie
+its vectors to other parameters.  Parametric formula: ``arguments → functions`` with the
+module type and the solution variant, e.g. ``α1 (arg 1) → α2, r3 · Pl3, V=1``.
+"""
+
+from __future__ import annotations
+
+from mechloop.model.check import argument_kind, require_valid
+from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model
+from mechloop.model.structure import MODULE_SOLUTIONS, is_function, param_role
+
+
+def symbol(name: str) -> str:
+    """'a2' -> 'α2', 'r3' -> 'r3'."""
+    return ("α" if name[0] == "a" else "r") + name[1:]
+
+
+def _unit(model: Model, name: str) -> str:
+    return model.units.angle if name[0] == "a" else model.units.length
+
+
+def _fmt(value, unit: str) -> str:
+    if isinstance(value, str):
+        return value.strip()
+    return f"{value:g} {unit}"
+
+
+def role_text(model: Model, name: str) -> str:
+    """How parameter ``name`` is given: '0.05 m', 'function', 'arg 1 + 10 deg', ..."""
+    role = param_role(model, name)
+    unit = _unit(model, name)
+    if is_function(role):
+        return "function"
+    if isinstance(role, ArgumentRole):
+        off = "" if role.offset in (0, 0.0) else f" + {_fmt(role.offset, unit)}"
+        return f"arg {role.argument}{off}"
+    if isinstance(role, LinkRole):
+        d = "" if role.delta in (0, 0.0) else f" + {_fmt(role.delta, unit)}"
+        return f"{symbol(role.link)}{d}"
+    return _fmt(role, unit)
+
+
+def describe_structure(model: Model) -> str:
+    """Multi-line description of the model's structure, contour by contour."""
+    structure = require_valid(model)
+    lines = []
+    title = model.name or "vector model"
+    lines.append(f"{title}: planar, {len(model.contours)} contour(s), {len(model.vectors)} "
+                 f"vectors, positions 0..{model.positions}")
+    if model.time is None:
+        lines.append("time: none — derivatives are analogs with respect to argument 1")
+    elif hasattr(model.time, "rpm"):
+        lines.append(f"time: {model.time.rpm:g} rpm over positions 0..{model.positions}")
+    else:
+        lines.append(f"time: table over positions 0..{model.positions}")
+    for number, arg in sorted(model.arguments.items()):
+        kind = argument_kind(model, number)
+        driven = [symbol(f"{letter}{n}") for n, v in sorted(model.vectors.items())
+                  for letter in "ra"
+                  if isinstance(v.r if letter == "r" else v.a, ArgumentRole)
+                  and (v.r if letter == "r" else v.a).argument == number]
+        form = (f"law {arg.law} from position {arg.start[0]} to {arg.end[0]}"
+                if isinstance(arg, LawArgument) else f"table of {len(arg.table)} value(s)")
+        lines.append(f"argument {number} ({kind}): {form}; drives {', '.join(driven)}")
+    lines.append("solving order: " + " → ".join(f"contour {n}" for n in structure.order))
+    for info in structure.ordered():
+        lines.append("")
+        name = model.contours[info.number - 1].name
+        lines.append(f"contour {info.number}" + (f" — {name}" if name else "")
+                     + f": vectors {', '.join(map(str, info.vectors))}")
+        link_terms = [f"{symbol(p)} = {role_text(model, p)}" for p in info.links]
+        structure_formula = f"n=2, m={len(info.vectors)}"
+        if link_terms:
+            structure_formula += "; links: " + ", ".join(link_terms)
+        lines.append(f"  structure formula:  {structure_formula}")
+        inputs = [f"{symbol(p)} ({role_text(model, p)})" for p in info.arguments]
+        inputs += [symbol(p) for p in info.links]
+        lhs = ", ".join(inputs) if inputs else "constants only"
+        variant = info.variant if MODULE_SOLUTIONS[info.module] > 1 else 1
+        lines.append(f"  parametric formula: {lhs} → "
+                     f"{', '.join(symbol(f) for f in info.functions)} · {info.module}, "
+                     f"V={variant} ({MODULE_SOLUTIONS[info.module]} solution(s))")
+        known = [f"{symbol(f'{letter}{n}')}={role_text(model, f'{letter}{n}')}"
+                 for n in info.vectors for letter in "ra"
+                 if f"{letter}{n}" not in info.functions
+                 and f"{letter}{n}" not in info.arguments and f"{letter}{n}" not in info.links]
+        if known:
+            lines.append(f"  constants:          {', '.join(known)}")
+        if info.needs:
+            lines.append("  needs contours:     " + ", ".join(map(str, info.needs)))
+    return "\n".join(lines)

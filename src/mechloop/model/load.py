@@ -1,0 +1,258 @@
+"""Reading and writing model files (YAML or JSON) with located, complete error reports.
+
+Every problem — YAML syntax, a wrong type, an unknown key, a structural mistake — becomes a
+:class:`~mechloop.errors.Problem` with the file, the line and the path in the document, and
+all of them are raised together as one :class:`~mechloop.errors.ModelError`.
+Saving writes a temporary file beside the target and renames it, so a crash never leaves a
+half-written model.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import yaml
+from pydantic import ValidationError
+
+from mechloop.errors import ModelError, ModelFileError, Problem
+from mechloop.model.check import check_model
+from mechloop.model.schema import Model
+
+LineMap = dict[tuple[Any, ...], int]
+
+
+class _Loader(yaml.SafeLoader):
+    """SafeLoader that refuses duplicate keys (a silent overwrite loses data)."""
+
+
+def _construct_mapping(loader: _Loader, node: yaml.MappingNode, deep: bool = False):
+    mapping: dict[Any, Any] = {}
+    for key_node, value_node in node.value:
+        key = loader.construct_object(key_node, deep=deep)
+        if key in mapping:
+            raise yaml.constructor.ConstructorError(
+                "while reading a mapping", node.start_mark,
+                f"found the key {key!r} twice", key_node.start_mark)
+        mapping[key] = loader.construct_object(value_node, deep=deep)
+    return mapping
+
+
+_Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
+
+
+def _line_map(node: yaml.Node, loader: _Loader, path: tuple = (), out: LineMap | None = None
+              ) -> LineMap:
+    """Path in the document -> 1-based line where that item starts."""
+    out = {} if out is None else out
+    out[path] = node.start_mark.line + 1
+    if isinstance(node, yaml.MappingNode):
+        for key_node, value_node in node.value:
+            try:
+                key = loader.construct_object(key_node, deep=True)
+            except yaml.YAMLError:
+                continue
+            if isinstance(key, list | dict):
+                continue
+            out[(*path, key)] = key_node.start_mark.line + 1
+            _line_map(value_node, loader, (*path, key), out)
+            out[(*path, key)] = key_node.start_mark.line + 1
+    elif isinstance(node, yaml.SequenceNode):
+        for i, item in enumerate(node.value):
+            _line_map(item, loader, (*path, i), out)
+    return out
+
+
+def _locate(path: tuple, lines: LineMap) -> int | None:
+    """Line of ``path``, or of its nearest ancestor that is in the file."""
+    for cut in range(len(path), -1, -1):
+        line = lines.get(tuple(path[:cut]))
+        if line is not None:
+            return line
+    return None
+
+
+def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
+    """Parse a YAML/JSON file into plain data and a map of lines; errors name the line."""
+    file = str(path)
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ModelFileError([Problem((), "file not found",
+                                      "check the path (mechloop check examples/... )")],
+                             file) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ModelFileError([Problem((), f"cannot read the file: {exc}",
+                                      "save it as UTF-8 text")], file) from None
+    try:
+        loader = _Loader(text)
+        try:
+            node = loader.get_single_node()
+            data = loader.construct_document(node) if node is not None else None
+            lines = _line_map(node, loader) if node is not None else {}
+        finally:
+            loader.dispose()
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+        line = mark.line + 1 if mark is not None else None
+        what = getattr(exc, "problem", None) or str(exc)
+        context = getattr(exc, "context", None)
+        message = f"YAML syntax error: {what}" + (f" ({context})" if context else "")
+        raise ModelFileError([Problem((), message, "fix the YAML syntax at that line "
+                                      "(indentation, a missing ':' or an unclosed bracket)",
+                                      line)], file) from None
+    if not isinstance(data, dict):
+        raise ModelFileError([Problem((), "the file does not hold a model mapping",
+                                      "start with keys like 'positions:', 'vectors:' and "
+                                      "'contours:' (see examples/crank_slider.yaml)", 1)],
+                             file)
+    return data, lines
+
+
+def _data_path(loc: tuple, data: Any) -> tuple:
+    """Turn a pydantic error location into a path of the document (drop union tags)."""
+    path: list[Any] = []
+    current = data
+    for key in loc:
+        if isinstance(current, dict):
+            match = next((k for k in current if k == key or str(k) == str(key)), _MISSING)
+            if match is not _MISSING:
+                path.append(match)
+                current = current[match]
+                continue
+            if isinstance(key, str) and key not in ("function-after", "union") and not \
+                    key[:1].isupper() and key not in _TAGS:
+                path.append(key)
+                current = None
+            continue
+        if isinstance(current, list | tuple) and isinstance(key, int):
+            path.append(key)
+            current = current[key] if 0 <= key < len(current) else None
+            continue
+        if isinstance(key, int) or (isinstance(key, str) and key not in _TAGS):
+            path.append(key)
+    return tuple(path)
+
+
+_MISSING = object()
+_TAGS = {"constant", "function", "quantity", "argument", "link", "table", "law", "rpm",
+         "int", "float", "str", "dict[int,union[float,str]]", "list[union[float,str]]",
+         "dict[int,float]", "list[float]"}
+
+_HINTS = {
+    "missing": "add it",
+    "extra_forbidden": "remove it, or check its spelling",
+    "int_parsing": "write a whole number",
+    "int_from_float": "write a whole number",
+    "float_parsing": "write a number",
+    "literal_error": "use one of the allowed values",
+    "greater_than_equal": "use a larger value",
+    "greater_than": "use a larger value",
+    "too_short": "add more items",
+    "string_pattern_mismatch": "write the parameter as 'a' or 'r' and a vector number, "
+                               "e.g. 'a2'",
+}
+
+
+def _describe(error: dict[str, Any]) -> tuple[str, str]:
+    kind = error["type"]
+    loc = error["loc"]
+    name = str(loc[-1]) if loc else "the model"
+    message = error["msg"]
+    if kind == "missing":
+        message = f"'{name}' is required"
+    elif kind == "extra_forbidden":
+        message = f"unknown key '{name}'"
+    hint = _HINTS.get(kind, "")
+    if kind == "parameter_role":
+        hint = "write e.g. r: 0.05, a: function, a: {argument: 1}, a: {link: a2, delta: 30}"
+    elif kind == "argument_form":
+        hint = "e.g. 1: {table: {0: 0, 72: 360}} or 1: {law: cycloidal, start: [0, 0], " \
+               "end: [36, 90]}"
+    elif kind == "time_form":
+        hint = "e.g. time: {rpm: 3000} or time: {table: {0: 0, 36: 0.03}}"
+    return message, hint
+
+
+def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None = None
+                    ) -> Model:
+    """Validate plain data into a :class:`Model`, raising all problems at once."""
+    lines = lines or {}
+    if not isinstance(data, dict):
+        raise ModelFileError([Problem((), "a model is a mapping of keys",
+                                      "see examples/crank_slider.yaml")], file)
+    try:
+        model = Model.model_validate(data)
+    except ValidationError as exc:
+        problems = []
+        for error in exc.errors():
+            path = _data_path(error["loc"], data)
+            message, hint = _describe(error)
+            problems.append(Problem(path, message, hint, _locate(path, lines)))
+        raise ModelError(_dedupe(problems), file) from None
+    _, problems = check_model(model)
+    if problems:
+        located = [Problem(p.path, p.message, p.hint, _locate(p.path, lines)) for p in problems]
+        raise ModelError(located, file)
+    return model
+
+
+def _dedupe(problems: list[Problem]) -> list[Problem]:
+    seen = set()
+    out = []
+    for p in problems:
+        key = (p.path, p.message)
+        if key not in seen:
+            seen.add(key)
+            out.append(p)
+    return out
+
+
+def load_model(path: str | os.PathLike[str]) -> Model:
+    """Read, validate and check a model file (``.yaml``, ``.yml`` or ``.json``).
+
+    Raises :class:`~mechloop.errors.ModelError` naming the file, line, item and fix of
+    every problem.
+    """
+    data, lines = read_document(path)
+    return model_from_data(data, file=str(path), lines=lines)
+
+
+def model_to_data(model: Model) -> dict[str, Any]:
+    """Plain data of a model, ready for YAML or JSON (defaults left out)."""
+    return model.model_dump(mode="json", exclude_defaults=True)
+
+
+def save_model(model: Model, path: str | os.PathLike[str]) -> None:
+    """Write ``model`` to ``path`` (YAML, or JSON for ``.json``) atomically."""
+    data = model_to_data(model)
+    target = Path(path)
+    if target.suffix.lower() == ".json":
+        text = json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+    else:
+        text = yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
+    atomic_write_text(target, text)
+
+
+def atomic_write_text(target: Path, text: str) -> None:
+    """Write text to a temporary file in the target's folder, then rename it in place."""
+    atomic_write_bytes(target, text.encode("utf-8"))
+
+
+def atomic_write_bytes(target: Path, payload: bytes) -> None:
+    """Write bytes to a temporary file in the target's folder, then rename it in place."""
+    target = Path(target)
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
+                               dir=target.parent or Path("."))
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(payload)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, target)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

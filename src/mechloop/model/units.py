@@ -1,0 +1,84 @@
+"""Units at the edges: pint converts model-file numbers to SI floats and radians.
+
+The core never sees a unit: lengths are metres and angles radians once a model is compiled.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Literal
+
+import pint
+
+Kind = Literal["length", "angle"]
+
+#: What each kind of parameter is called in messages and which unit is SI for it.
+SI_UNIT: dict[Kind, str] = {"length": "m", "angle": "rad"}
+EXAMPLES: dict[Kind, str] = {"length": "m, cm, mm", "angle": "deg, rad, grad"}
+
+
+class UnitProblem(ValueError):
+    """A unit or quantity string that cannot be used; ``hint`` says what would work."""
+
+    def __init__(self, message: str, hint: str):
+        super().__init__(message)
+        self.message = message
+        self.hint = hint
+
+
+@functools.cache
+def registry() -> pint.UnitRegistry:
+    """The one pint registry of mechloop (built on first use: it takes ~0.2 s)."""
+    return pint.UnitRegistry()
+
+
+def _is_kind(unit: pint.Unit, kind: Kind) -> bool:
+    if kind == "length":
+        return unit.dimensionality == registry().parse_units("m").dimensionality
+    return unit.dimensionless and str(unit) != "dimensionless"
+
+
+@functools.cache
+def unit_factor(name: str, kind: Kind) -> float:
+    """Factor that converts a number in unit ``name`` to SI (m or rad)."""
+    try:
+        unit = registry().parse_units(str(name).strip())
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
+            AttributeError, TypeError, ValueError, AssertionError) as exc:
+        raise UnitProblem(f"unknown unit {name!r}", f"use a {kind} unit: {EXAMPLES[kind]}"
+                          ) from exc
+    if not _is_kind(unit, kind):
+        raise UnitProblem(f"{name!r} is not a {kind} unit",
+                          f"use a {kind} unit: {EXAMPLES[kind]}")
+    return float(registry().Quantity(1.0, unit).to(SI_UNIT[kind]).magnitude)
+
+
+def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
+    """Convert a model-file value to SI.
+
+    ``value`` is a number in ``default_unit`` or a string with its own unit ("50 mm").
+    Raises :class:`UnitProblem` for an unreadable string or a unit of the wrong kind.
+    """
+    if not isinstance(value, str):
+        return float(value) * unit_factor(default_unit, kind)
+    text = value.strip()
+    try:
+        return float(text) * unit_factor(default_unit, kind)
+    except ValueError:
+        pass
+    try:
+        qty = registry().Quantity(text)
+    except Exception as exc:  # pint raises many types for unreadable text
+        raise UnitProblem(f"cannot read {value!r} as a {kind}",
+                          f"write a number, or a number and a unit like "
+                          f"'{'50 mm' if kind == 'length' else '90 deg'}'") from exc
+    if not isinstance(qty, pint.Quantity) or (
+        kind == "length" and qty.dimensionless
+    ) or (kind == "angle" and qty.unitless):
+        raise UnitProblem(f"{value!r} has no {kind} unit",
+                          f"write a plain number (model units) or a number with a {kind} "
+                          f"unit ({EXAMPLES[kind]})")
+    if not _is_kind(qty.units, kind):
+        raise UnitProblem(f"{value!r} is not a {kind}",
+                          f"use a {kind} unit: {EXAMPLES[kind]}")
+    return float(qty.to(SI_UNIT[kind]).magnitude)
