@@ -6,6 +6,8 @@
 
 from __future__ import annotations
 
+from difflib import get_close_matches
+
 from mechloop.errors import ModelError, Problem
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument
 from mechloop.model.structure import Structure, analyze
@@ -79,7 +81,12 @@ def _check_units(model: Model) -> list[Problem]:
                 try:
                     to_si(value, kind, default)
                 except UnitProblem as exc:
-                    problems.append(_unit_problem(where, exc))
+                    if isinstance(value, str) and get_close_matches(value.strip(),
+                                                                    ["function"]):
+                        problems.append(Problem(where, f"{value!r} is not a role",
+                                                "did you mean 'function'?"))
+                    else:
+                        problems.append(_unit_problem(where, exc))
     return problems
 
 

@@ -100,6 +100,9 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
         line = mark.line + 1 if mark is not None else None
         what = getattr(exc, "problem", None) or str(exc)
         context = getattr(exc, "context", None)
+        context_mark = getattr(exc, "context_mark", None)
+        if context and context_mark is not None and context_mark is not mark:
+            context += f" that starts at line {context_mark.line + 1}"
         message = f"YAML syntax error: {what}" + (f" ({context})" if context else "")
         raise ModelFileError([Problem((), message, "fix the YAML syntax at that line "
                                       "(indentation, a missing ':' or an unclosed bracket)",
@@ -113,34 +116,29 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
 
 
 def _data_path(loc: tuple, data: Any) -> tuple:
-    """Turn a pydantic error location into a path of the document (drop union tags)."""
+    """Turn a pydantic error location into a path of the document.
+
+    Union tags and other validator names that pydantic puts in ``loc`` are not keys of the
+    document and are dropped; a last element that is not in the document (a missing key)
+    is kept.
+    """
     path: list[Any] = []
     current = data
-    for key in loc:
+    for i, key in enumerate(loc):
         if isinstance(current, dict):
             match = next((k for k in current if k == key or str(k) == str(key)), _MISSING)
             if match is not _MISSING:
                 path.append(match)
                 current = current[match]
-                continue
-            if isinstance(key, str) and key not in ("function-after", "union") and not \
-                    key[:1].isupper() and key not in _TAGS:
+            elif i == len(loc) - 1 and isinstance(key, str):
                 path.append(key)
-                current = None
-            continue
-        if isinstance(current, list | tuple) and isinstance(key, int):
+        elif isinstance(current, list | tuple) and isinstance(key, int):
             path.append(key)
             current = current[key] if 0 <= key < len(current) else None
-            continue
-        if isinstance(key, int) or (isinstance(key, str) and key not in _TAGS):
-            path.append(key)
     return tuple(path)
 
 
 _MISSING = object()
-_TAGS = {"constant", "function", "quantity", "argument", "link", "table", "law", "rpm",
-         "int", "float", "str", "dict[int,union[float,str]]", "list[union[float,str]]",
-         "dict[int,float]", "list[float]"}
 
 _HINTS = {
     "missing": "add it",
@@ -172,6 +170,11 @@ def _describe(error: dict[str, Any]) -> tuple[str, str]:
     elif kind == "argument_form":
         hint = "e.g. 1: {table: {0: 0, 72: 360}} or 1: {law: cycloidal, start: [0, 0], " \
                "end: [36, 90]}"
+    elif kind == "table_form":
+        hint = "e.g. table: {0: 0, 72: 360} or table: [0, 5, 10, ...]"
+    elif kind == "int_parsing" and loc and loc[-1] == "[key]":
+        message = "a table position must be a whole number"
+        hint = "write positions as 0, 1, 2, ..."
     elif kind == "time_form":
         hint = "e.g. time: {rpm: 3000} or time: {table: {0: 0, 36: 0.03}}"
     return message, hint

@@ -82,7 +82,7 @@ Param = Annotated[
         _param_tag,
         custom_error_type="parameter_role",
         custom_error_message="expected a number, a quantity like '50 mm', 'function', "
-        "{argument: K} or {link: 'a2'}",
+        "an argument or a link",
     ),
 ]
 
@@ -111,6 +111,26 @@ class Contour(_Frozen):
     name: str | None = None
 
 
+def _table_tag(value: Any) -> str | None:
+    if isinstance(value, dict):
+        return "mapping"
+    if isinstance(value, list | tuple):
+        return "list"
+    return None
+
+
+def _table_of(item: Any) -> Any:
+    return Annotated[
+        Annotated[dict[int, item], Tag("mapping")] | Annotated[list[item], Tag("list")],
+        Discriminator(
+            _table_tag,
+            custom_error_type="table_form",
+            custom_error_message="a table is a mapping of position: value, or a list with "
+            "one value per position",
+        ),
+    ]
+
+
 class TableArgument(_Frozen):
     """Argument values at calculation positions.
 
@@ -120,7 +140,7 @@ class TableArgument(_Frozen):
     every position ``0..N``.
     """
 
-    table: dict[int, Scalar] | list[Scalar]
+    table: _table_of(Scalar)
     unit: str | None = Field(None, description="unit of the values (default: model unit)")
 
 
@@ -154,8 +174,8 @@ Argument = Annotated[
     Discriminator(
         _argument_tag,
         custom_error_type="argument_form",
-        custom_error_message="an argument is {table: ...} or {law: ..., start: [position, "
-        "value], end: [position, value]}",
+        custom_error_message="an argument needs either a 'table' or a 'law' with 'start' and "
+        "'end'",
     ),
 ]
 
@@ -169,7 +189,7 @@ class RpmTime(_Frozen):
 class TableTime(_Frozen):
     """Model time as a table ``{position: seconds}`` filled like an argument table."""
 
-    table: dict[int, float] | list[float]
+    table: _table_of(float)
 
 
 def _time_tag(value: Any) -> str | None:
@@ -185,7 +205,7 @@ Time = Annotated[
     Discriminator(
         _time_tag,
         custom_error_type="time_form",
-        custom_error_message="time is {rpm: n} or {table: {position: seconds, ...}}",
+        custom_error_message="time needs either 'rpm' or a 'table' of seconds",
     ),
 ]
 

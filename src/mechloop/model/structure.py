@@ -153,8 +153,9 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
                    if len(functions) < 2 else
                    "make all but two of them constants, arguments or links to earlier "
                    "contours")
+            noun = "parameter" if len(functions) == 1 else "parameters"
             problems.append(Problem(path, f"contour {ci + 1} has {len(functions)} function "
-                                    f"parameters ({found}); a planar contour needs exactly 2",
+                                    f"{noun} ({found}); a planar contour needs exactly 2",
                                     fix))
             module, ordered = "?", tuple(functions)
         else:

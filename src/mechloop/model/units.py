@@ -32,6 +32,10 @@ def registry() -> pint.UnitRegistry:
     return pint.UnitRegistry()
 
 
+def _a(kind: str) -> str:
+    return ("an " if kind[0] in "aeiou" else "a ") + kind
+
+
 def _is_kind(unit: pint.Unit, kind: Kind) -> bool:
     if kind == "length":
         return unit.dimensionality == registry().parse_units("m").dimensionality
@@ -48,7 +52,7 @@ def unit_factor(name: str, kind: Kind) -> float:
         raise UnitProblem(f"unknown unit {name!r}", f"use a {kind} unit: {EXAMPLES[kind]}"
                           ) from exc
     if not _is_kind(unit, kind):
-        raise UnitProblem(f"{name!r} is not a {kind} unit",
+        raise UnitProblem(f"{name!r} is not {_a(kind)} unit",
                           f"use a {kind} unit: {EXAMPLES[kind]}")
     return float(registry().Quantity(1.0, unit).to(SI_UNIT[kind]).magnitude)
 
@@ -69,7 +73,7 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
     try:
         qty = registry().Quantity(text)
     except Exception as exc:  # pint raises many types for unreadable text
-        raise UnitProblem(f"cannot read {value!r} as a {kind}",
+        raise UnitProblem(f"cannot read {value!r} as {_a(kind)}",
                           f"write a number, or a number and a unit like "
                           f"'{'50 mm' if kind == 'length' else '90 deg'}'") from exc
     if not isinstance(qty, pint.Quantity) or (
@@ -79,6 +83,6 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
                           f"write a plain number (model units) or a number with a {kind} "
                           f"unit ({EXAMPLES[kind]})")
     if not _is_kind(qty.units, kind):
-        raise UnitProblem(f"{value!r} is not a {kind}",
+        raise UnitProblem(f"{value!r} is not {_a(kind)}",
                           f"use a {kind} unit: {EXAMPLES[kind]}")
     return float(qty.to(SI_UNIT[kind]).magnitude)
