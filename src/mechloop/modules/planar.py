@@ -13,10 +13,13 @@ Pl3       ``r1, α2``      2          1: ``cos(α2 − α1) < 0``; 2: ``cos(α2 
 Pl4       ``α1, α2``      2          1: ``α1 = α_p + B, α2 = α_p − A``; 2: signs swapped
 ========  ==============  =========  ==================================================
 
-Every function is pure and works on arrays of any shape ``(..., P)`` (positions last,
-candidate designs leading) by broadcasting.  Lengths are in any consistent unit, angles in
-radians.  Each returns the unknowns and a boolean ``ok`` mask: where ``ok`` is false the
-contour has no (unique) real solution — a chain break — and the unknowns are NaN.
+Each module has a core ``plN_unit`` that returns directions as cosines and sines (no
+trigonometric calls: they dominate the cost of a solve) and a wrapper ``solve_plN`` that
+returns angles.  Every function is pure and works on arrays of any shape ``(..., P)``
+(positions last, candidate designs leading) by broadcasting.  Lengths are in any consistent
+unit, angles in radians.  Each returns the unknowns and a boolean ``ok`` mask: where ``ok``
+is false the contour has no (unique) real solution — a chain break — and the unknowns are
+NaN.
 
 ``variant`` is 1, 2, or an integer array of 1/2 broadcastable to the result (used when the
 variant is tracked by continuity, see :func:`track_variant`).
@@ -41,6 +44,24 @@ def _sign_of_variant(variant: ArrayLike) -> NDArray[np.float64]:
     return np.where(v == 1, 1.0, -1.0)
 
 
+def _ok_or_nan(ok: NDArray[np.bool_], *arrays: Array) -> tuple[Array, ...]:
+    """NaN where ``ok`` is false (skipped entirely when every position is fine)."""
+    if ok.all():
+        return arrays
+    return tuple(np.where(ok, a, np.nan) for a in arrays)
+
+
+def pl1_unit(x: ArrayLike, y: ArrayLike) -> tuple[Array, Array, Array, NDArray[np.bool_]]:
+    """Pl1 core: ``r1`` and the direction ``(cos α1, sin α1)`` without any trigonometry."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    r1 = np.sqrt(x * x + y * y)
+    ok = r1 > 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        c1, s1 = -x / r1, -y / r1
+    return (*_ok_or_nan(ok, r1, c1, s1), ok)
+
+
 def solve_pl1(x: ArrayLike, y: ArrayLike) -> tuple[Array, Array, NDArray[np.bool_]]:
     """Pl1 — unknown length and angle of one vector.
 
@@ -55,12 +76,24 @@ def solve_pl1(x: ArrayLike, y: ArrayLike) -> tuple[Array, Array, NDArray[np.bool
     a1 : array, shape (..., P), rad — ``atan2(-y, -x)``.
     ok : bool array — false where ``r1 == 0`` (direction undefined).
     """
-    x = np.asarray(x, dtype=float)
-    y = np.asarray(y, dtype=float)
-    r1 = np.hypot(x, y)
-    a1 = np.arctan2(-y, -x)
-    ok = r1 > 0
-    return np.where(ok, r1, np.nan), np.where(ok, a1, np.nan), ok
+    r1, c1, s1, ok = pl1_unit(x, y)
+    return r1, np.arctan2(s1, c1), ok
+
+
+def pl2_unit(
+    x: ArrayLike, y: ArrayLike, c1: ArrayLike, s1: ArrayLike, c2: ArrayLike, s2: ArrayLike
+) -> tuple[Array, Array, NDArray[np.bool_]]:
+    """Pl2 core: lengths ``r1, r2`` for known directions given as cosines and sines."""
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    xp = x * c2 + y * s2  # known sum in the frame of vector 2
+    yp = -x * s2 + y * c2
+    sin_d = np.asarray(s1 * c2 - c1 * s2)  # sin(α1 − α2)
+    cos_d = c1 * c2 + s1 * s2
+    ok = np.abs(sin_d) > 1e-12
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r1 = -yp / sin_d
+    r2 = -xp - r1 * cos_d
+    return (*_ok_or_nan(ok, r1, r2), ok)
 
 
 def solve_pl2(
@@ -71,17 +104,31 @@ def solve_pl2(
     Lengths come out signed: a negative length places the end point behind the vector's
     origin along its (fixed) direction.  ``ok`` is false where the directions are parallel.
     """
-    x, y, a1, a2 = (np.asarray(v, dtype=float) for v in (x, y, a1, a2))
-    c2, s2 = np.cos(a2), np.sin(a2)
-    xp = x * c2 + y * s2  # known sum in the frame of vector 2
-    yp = -x * s2 + y * c2
-    d = a1 - a2
-    sin_d = np.sin(d)
-    ok = np.abs(sin_d) > 1e-12
+    a1, a2 = np.asarray(a1, dtype=float), np.asarray(a2, dtype=float)
+    return pl2_unit(x, y, np.cos(a1), np.sin(a1), np.cos(a2), np.sin(a2))
+
+
+def pl3_unit(
+    x: ArrayLike, y: ArrayLike, c1: ArrayLike, s1: ArrayLike, r2: ArrayLike, *,
+    variant: ArrayLike = 1
+) -> tuple[Array, Array, Array, NDArray[np.bool_]]:
+    """Pl3 core: ``r1`` and the direction ``(cos α2, sin α2)``; vector 1's direction is
+    given as ``(c1, s1)``."""
+    x, y, r2 = (np.asarray(v, dtype=float) for v in (x, y, r2))
+    k = _sign_of_variant(variant)
+    xp = x * c1 + y * s1  # known sum in the frame of vector 1
+    yp = -x * s1 + y * c1
+    r2sq = r2 * r2
+    disc = r2sq - yp * yp
+    ok = (disc >= -EXISTENCE_RTOL * r2sq) & (r2 != 0)
+    dp = np.sqrt(np.maximum(disc, 0.0))
     with np.errstate(divide="ignore", invalid="ignore"):
-        r1 = -yp / sin_d
-    r2 = -xp - r1 * np.cos(d)
-    return np.where(ok, r1, np.nan), np.where(ok, r2, np.nan), ok
+        cphi = -k * dp / r2  # φ = α2 − α1 in the frame of vector 1
+        sphi = -yp / r2
+    r1 = -xp + k * dp
+    c2 = cphi * c1 - sphi * s1
+    s2 = sphi * c1 + cphi * s1
+    return (*_ok_or_nan(ok, r1, c2, s2), ok)
 
 
 def solve_pl3(
@@ -93,18 +140,37 @@ def solve_pl3(
     In the frame of vector 1, ``sin φ = −Y'/r2`` with ``φ = α2 − α1``; variant 1 takes
     ``cos φ < 0`` and variant 2 ``cos φ ≥ 0``.  ``ok`` is false where ``|Y'| > |r2|``.
     """
-    x, y, a1, r2 = (np.asarray(v, dtype=float) for v in (x, y, a1, r2))
+    a1 = np.asarray(a1, dtype=float)
+    r1, c2, s2, ok = pl3_unit(x, y, np.cos(a1), np.sin(a1), r2, variant=variant)
+    return r1, np.arctan2(s2, c2), ok
+
+
+def pl4_unit(
+    x: ArrayLike, y: ArrayLike, r1: ArrayLike, r2: ArrayLike, *, variant: ArrayLike = 1
+) -> tuple[Array, Array, Array, Array, NDArray[np.bool_]]:
+    """Pl4 core: directions ``(cos α1, sin α1), (cos α2, sin α2)`` without trigonometry.
+
+    With ``u`` the unit vector of ``p = r1 + r2 = −(x, y)`` and ``v`` the unit normal to
+    its left, vector 1 is ``along·u + h·v`` and vector 2 is ``(p − along)·u − h·v``, where
+    ``along`` is the projection of vector 1 on ``p`` and ``h = ±sqrt(r1² − along²)``.
+    """
+    x, y, r1, r2 = (np.asarray(v, dtype=float) for v in (x, y, r1, r2))
     k = _sign_of_variant(variant)
-    c1, s1 = np.cos(a1), np.sin(a1)
-    xp = x * c1 + y * s1
-    yp = -x * s1 + y * c1
-    disc = r2 * r2 - yp * yp
-    ok = (disc >= -EXISTENCE_RTOL * r2 * r2) & (r2 != 0)
-    dp = np.sqrt(np.clip(disc, 0.0, None))
+    psq = x * x + y * y
+    p = np.sqrt(psq)
     with np.errstate(divide="ignore", invalid="ignore"):
-        phi = np.arctan2(-yp / r2, -k * dp / r2)
-    r1 = -xp + k * dp
-    return np.where(ok, r1, np.nan), np.where(ok, a1 + phi, np.nan), ok
+        ux, uy = -x / p, -y / p
+        along = (r1 * r1 - r2 * r2 + psq) / (2.0 * p)
+        h2 = (r1 - along) * (r1 + along)
+        scale = np.maximum(r1 * r1, r2 * r2)
+        ok = (p > 0) & (h2 >= -EXISTENCE_RTOL * scale) & (r1 != 0) & (r2 != 0)
+        h = k * np.sqrt(np.maximum(h2, 0.0))
+        rest = p - along
+        c1 = (along * ux - h * uy) / r1
+        s1 = (along * uy + h * ux) / r1
+        c2 = (rest * ux + h * uy) / r2
+        s2 = (rest * uy - h * ux) / r2
+    return (*_ok_or_nan(ok, c1, s1, c2, s2), ok)
 
 
 def solve_pl4(
@@ -117,19 +183,8 @@ def solve_pl4(
     α2 = α_p − A`` (vector 1 turned counter-clockwise from ``p``) and variant 2 the mirror
     image.  ``ok`` is false where the triangle inequality fails or ``p = 0``.
     """
-    x, y, r1, r2 = (np.asarray(v, dtype=float) for v in (x, y, r1, r2))
-    k = _sign_of_variant(variant)
-    p = np.hypot(x, y)
-    ap = np.arctan2(-y, -x)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        along = (r1 * r1 - r2 * r2 + p * p) / (2.0 * p)  # projection of r1 onto p
-    h2 = (r1 - along) * (r1 + along)
-    scale = np.maximum(r1 * r1, r2 * r2)
-    ok = (p > 0) & (h2 >= -EXISTENCE_RTOL * scale) & (r1 != 0) & (r2 != 0)
-    h = k * np.sqrt(np.clip(h2, 0.0, None))
-    a1 = ap + np.arctan2(h, along)
-    a2 = ap + np.arctan2(-h, p - along)
-    return np.where(ok, a1, np.nan), np.where(ok, a2, np.nan), ok
+    c1, s1, c2, s2, ok = pl4_unit(x, y, r1, r2, variant=variant)
+    return np.arctan2(s1, c1), np.arctan2(s2, c2), ok
 
 
 def track_variant(

@@ -23,7 +23,7 @@ from mechloop.model.check import KIND_OF, argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import ContourInfo, is_function
 from mechloop.model.units import to_si
-from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl3, solve_pl4, track_variant
+from mechloop.modules.planar import pl1_unit, pl2_unit, pl3_unit, pl4_unit, track_variant
 from mechloop.solve.inputs import model_arguments, model_time
 from mechloop.solve.results import ChainBreak, Results
 
@@ -44,9 +44,23 @@ DEAD_POINT = "dead point: the loop's Jacobian is singular, velocities are unboun
 
 @dataclass
 class _Param:
+    """A parameter over positions: value, rate, acceleration (arrays or scalars), and for
+    angles the cached cosine and sine of the value."""
+
     value: Array | float
     rate: Array | float
     accel: Array | float
+    cos: Array | float | None = None
+    sin: Array | float | None = None
+
+    def trig(self) -> tuple[Array | float, Array | float]:
+        if self.cos is None:
+            self.cos, self.sin = np.cos(self.value), np.sin(self.value)
+        return self.cos, self.sin
+
+
+def _is_zero(term: Array | float) -> bool:
+    return np.isscalar(term) and term == 0
 
 
 def unwrap_angles(angle: Array, ok: NDArray[np.bool_]) -> Array:
@@ -54,6 +68,14 @@ def unwrap_angles(angle: Array, ok: NDArray[np.bool_]) -> Array:
 
     Rows where ``ok`` is false stay NaN and do not break the continuity of the others.
     """
+    two_pi = 2 * np.pi
+    if ok.all():
+        steps = np.diff(angle, axis=-1)
+        base = np.mod(angle[..., :1], two_pi)
+        if np.all(np.abs(steps) < np.pi):
+            return angle + (base - angle[..., :1])
+        steps = (steps + np.pi) % two_pi - np.pi
+        return np.concatenate([base, base + np.cumsum(steps, axis=-1)], axis=-1)
     idx = np.where(ok, np.arange(angle.shape[-1]), 0)
     idx = np.maximum.accumulate(idx, axis=-1)
     filled = np.take_along_axis(np.where(ok, angle, 0.0), idx, axis=-1)
@@ -61,8 +83,8 @@ def unwrap_angles(angle: Array, ok: NDArray[np.bool_]) -> Array:
     start = np.take_along_axis(filled, first, axis=-1)
     filled = np.where(np.arange(angle.shape[-1]) < first, start, filled)
     steps = np.diff(filled, axis=-1)
-    steps = (steps + np.pi) % (2 * np.pi) - np.pi
-    base = np.mod(start, 2 * np.pi)
+    steps = (steps + np.pi) % two_pi - np.pi
+    base = np.mod(start, two_pi)
     cont = np.concatenate([base, base + np.cumsum(steps, axis=-1)], axis=-1)
     return np.where(ok, cont, np.nan)
 
@@ -107,10 +129,15 @@ def solve(model: Model) -> Results:
             return None
         root = params[chain.root]
         delta = sum(_constant_si(model, name, d) for d in chain.deltas)
-        params[name] = _Param(root.value + delta, root.rate, root.accel)
+        param = _Param(root.value + delta, root.rate, root.accel)
+        if name[0] == "a":
+            rc, rs = root.trig()
+            cd, sd = np.cos(delta), np.sin(delta)
+            param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+        params[name] = param
         if chain.root in constant:
             constant.add(name)
-        return params[name]
+        return param
 
     broken_by: dict[int, NDArray[np.bool_]] = {}
     breaks: list[ChainBreak] = []
@@ -134,14 +161,18 @@ def solve(model: Model) -> Results:
     broken = np.zeros(n_pos, dtype=bool)
     for mask in broken_by.values():
         broken |= mask
+    any_broken = bool(broken.any())
     values, rates, accels = {}, {}, {}
     for name, p in params.items():
-        values[name] = np.broadcast_to(np.asarray(p.value, dtype=float), (n_pos,)).copy()
-        rates[name] = np.broadcast_to(np.asarray(p.rate, dtype=float), (n_pos,)).copy()
-        accels[name] = np.broadcast_to(np.asarray(p.accel, dtype=float), (n_pos,)).copy()
-        if name not in constant:
-            for arr in (values[name], rates[name], accels[name]):
-                arr[broken] = np.nan
+        out = []
+        for field in (p.value, p.rate, p.accel):
+            arr = np.asarray(field, dtype=float)
+            if arr.shape != (n_pos,):
+                arr = np.broadcast_to(arr, (n_pos,))
+            elif any_broken and name not in constant:
+                arr = np.where(broken, np.nan, arr)
+            out.append(arr)
+        values[name], rates[name], accels[name] = out
     arg_kinds = {k: argument_kind(model, k) for k in model.arguments}
     return Results(
         model=model,
@@ -172,109 +203,124 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos:
             if name not in (u1, u2) and resolve(name) is None:
                 raise AssertionError(f"{name} not known before contour {info.number}")
 
-    def value(name: str) -> Array | float:
-        return params[name].value
-
     x: Array | float = 0.0
     y: Array | float = 0.0
     for number in info.vectors:
         rn, an = f"r{number}", f"a{number}"
         if rn in (u1, u2) or an in (u1, u2):
-            continue
-        r, a = value(rn), value(an)
-        x = x + r * np.cos(a)
-        y = y + r * np.sin(a)
-    # vectors that carry an unknown still contribute nothing to X, Y: their known part is
-    # handled by the module itself.
+            continue  # a vector that carries an unknown is handled by the module itself
+        r = params[rn].value
+        c, s = params[an].trig()
+        x = x + r * c
+        y = y + r * s
     module = info.module
     v1, v2 = int(u1[1:]), int(u2[1:])
     x = np.broadcast_to(np.asarray(x, dtype=float), (n_pos,))
     y = np.broadcast_to(np.asarray(y, dtype=float), (n_pos,))
 
     def run(variant):
+        """Unknowns as (value or None, cos, sin) per function, and ok."""
         if module == "Pl1":
-            return solve_pl1(x, y)
+            r1, c1, s1, ok = pl1_unit(x, y)
+            return ((r1, None, None), (None, c1, s1)), ok
         if module == "Pl2":
-            return solve_pl2(x, y, value(f"a{v1}"), value(f"a{v2}"))
+            r1, r2, ok = pl2_unit(x, y, *params[f"a{v1}"].trig(), *params[f"a{v2}"].trig())
+            return ((r1, None, None), (r2, None, None)), ok
         if module == "Pl3":
-            return solve_pl3(x, y, value(f"a{v1}"), value(f"r{v2}"), variant=variant)
-        return solve_pl4(x, y, value(f"r{v1}"), value(f"r{v2}"), variant=variant)
+            r1, c2, s2, ok = pl3_unit(x, y, *params[f"a{v1}"].trig(),
+                                      params[f"r{v2}"].value, variant=variant)
+            return ((r1, None, None), (None, c2, s2)), ok
+        c1, s1, c2, s2, ok = pl4_unit(x, y, params[f"r{v1}"].value, params[f"r{v2}"].value,
+                                      variant=variant)
+        return ((None, c1, s1), (None, c2, s2)), ok
 
     if info.variant == "auto" and module in ("Pl3", "Pl4"):
-        s1, s2 = run(1), run(2)
-        ok_any = s1[2] & s2[2]
-        variant = track_variant(_points(module, s1, value, v1, v2),
-                                _points(module, s2, value, v1, v2), ok_any, start=1)
-        w1, w2, ok = run(variant)
+        first, ok1 = run(1)
+        second, ok2 = run(2)
+        variant = track_variant(_points(module, first, params, v1, v2),
+                                _points(module, second, params, v1, v2), ok1 & ok2, start=1)
+        unknowns, ok = run(variant)
     else:
-        w1, w2, ok = run(info.variant if info.variant != "auto" else 1)
+        unknowns, ok = run(info.variant if info.variant != "auto" else 1)
 
-    if u2[0] == "a":
-        w2 = unwrap_angles(w2, ok)
-    if u1[0] == "a":
-        w1 = unwrap_angles(w1, ok)
-    params[u1] = _Param(w1, 0.0, 0.0)
-    params[u2] = _Param(w2, 0.0, 0.0)
+    for name, (val, c, s) in zip((u1, u2), unknowns, strict=True):
+        if name[0] == "a":
+            params[name] = _Param(unwrap_angles(np.arctan2(s, c), ok), 0.0, 0.0, c, s)
+        else:
+            params[name] = _Param(val, 0.0, 0.0)
 
-    # Jacobian columns of the unknowns.
+    # Jacobian columns of the unknowns: e_j for a length, r_j n_j for an angle.
     def column(name: str) -> tuple[Array, Array]:
         number = int(name[1:])
-        a = np.asarray(value(f"a{number}"), dtype=float)
+        c, s = params[f"a{number}"].trig()
         if name[0] == "r":
-            return np.cos(a), np.sin(a)
-        r = value(f"r{number}")
-        return -r * np.sin(a), r * np.cos(a)
+            return c, s
+        r = params[f"r{number}"].value
+        return -r * s, r * c
 
     c1x, c1y = column(u1)
     c2x, c2y = column(u2)
     det = c1x * c2y - c1y * c2x
-    norm = np.hypot(c1x, c1y) * np.hypot(c2x, c2y)
+    norm = np.sqrt((c1x * c1x + c1y * c1y) * (c2x * c2x + c2y * c2y))
     with np.errstate(invalid="ignore"):
         singular = ok & ~(np.abs(det) > SINGULAR_SIN * norm)
     good = ok & ~singular
-    safe_det = np.where(good, det, 1.0)
+    all_good = bool(good.all())
+    inv_det = 1.0 / (det if all_good else np.where(good, det, 1.0))
 
     def solve2(bx: Array, by: Array) -> tuple[Array, Array]:
-        d1 = (-bx * c2y + by * c2x) / safe_det
-        d2 = (-c1x * by + c1y * bx) / safe_det
+        d1 = (by * c2x - bx * c2y) * inv_det
+        d2 = (bx * c1y - by * c1x) * inv_det
+        if all_good:
+            return d1, d2
         return np.where(good, d1, np.nan), np.where(good, d2, np.nan)
 
-    trig = {}
-    for number in info.vectors:
-        a = np.asarray(value(f"a{number}"), dtype=float)
-        trig[number] = (np.cos(a), np.sin(a))
-
+    # velocity: Σ (ṙ e + r α̇ n) = 0 with the unknown rates still zero
     bx: Array | float = 0.0
     by: Array | float = 0.0
     for number in info.vectors:
-        c, s = trig[number]
         rp, ap = params[f"r{number}"], params[f"a{number}"]
-        r = rp.value
-        bx = bx + rp.rate * c - r * ap.rate * s
-        by = by + rp.rate * s + r * ap.rate * c
-    d1, d2 = solve2(bx, by)
-    params[u1].rate, params[u2].rate = d1, d2
+        c, s = ap.trig()
+        if not _is_zero(rp.rate):
+            bx = bx + rp.rate * c
+            by = by + rp.rate * s
+        if not _is_zero(ap.rate):
+            w = rp.value * ap.rate
+            bx = bx - w * s
+            by = by + w * c
+    params[u1].rate, params[u2].rate = solve2(bx, by)
 
+    # acceleration: Σ (r̈ e + 2ṙα̇ n + r α̈ n − r α̇² e) = 0 with the unknown accelerations zero
     bx, by = 0.0, 0.0
     for number in info.vectors:
-        c, s = trig[number]
         rp, ap = params[f"r{number}"], params[f"a{number}"]
-        r, dr, ddr, da, dda = rp.value, rp.rate, rp.accel, ap.rate, ap.accel
-        tangential = 2 * dr * da + r * dda
-        radial = ddr - r * da * da
-        bx = bx + radial * c - tangential * s
-        by = by + radial * s + tangential * c
-    dd1, dd2 = solve2(bx, by)
-    params[u1].accel, params[u2].accel = dd1, dd2
-
+        c, s = ap.trig()
+        radial: Array | float = rp.accel
+        tangential: Array | float = 0.0
+        if not _is_zero(ap.rate):
+            r_da = rp.value * ap.rate
+            radial = radial - r_da * ap.rate
+            if not _is_zero(rp.rate):
+                tangential = 2.0 * rp.rate * ap.rate
+        if not _is_zero(ap.accel):
+            tangential = tangential + rp.value * ap.accel
+        if not _is_zero(radial):
+            bx = bx + radial * c
+            by = by + radial * s
+        if not _is_zero(tangential):
+            bx = bx - tangential * s
+            by = by + tangential * c
+    params[u1].accel, params[u2].accel = solve2(bx, by)
     return ~ok, singular
 
 
-def _points(module: str, sol, value, v1: int, v2: int) -> tuple[Array, ...]:
+def _points(module: str, unknowns, params: dict[str, _Param], v1: int, v2: int
+            ) -> tuple[Array, ...]:
     """Cartesian coordinates that a solution branch places (for continuity tracking)."""
-    w1, w2, _ = sol
+    (w1, c1, s1), (_, c2, s2) = unknowns
     if module == "Pl3":
-        a1, r2 = value(f"a{v1}"), value(f"r{v2}")
-        return (w1 * np.cos(a1), w1 * np.sin(a1), r2 * np.cos(w2), r2 * np.sin(w2))
-    r1, r2 = value(f"r{v1}"), value(f"r{v2}")
-    return (r1 * np.cos(w1), r1 * np.sin(w1), r2 * np.cos(w2), r2 * np.sin(w2))
+        a1c, a1s = params[f"a{v1}"].trig()
+        r2 = params[f"r{v2}"].value
+        return (w1 * a1c, w1 * a1s, r2 * c2, r2 * s2)
+    r1, r2 = params[f"r{v1}"].value, params[f"r{v2}"].value
+    return (r1 * c1, r1 * s1, r2 * c2, r2 * s2)
