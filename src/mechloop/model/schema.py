@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, WithJsonSchema
 
 FUNCTION = "function"
 
@@ -75,7 +75,9 @@ def _param_tag(value: Any) -> str | None:
 Param = Annotated[
     Annotated[float, Tag("constant")]
     | Annotated[Literal["function"], Tag("function")]
-    | Annotated[str, Tag("quantity")]
+    | Annotated[str, Tag("quantity"), WithJsonSchema({
+        "type": "string", "pattern": r"^(?!\s*function\s*$)",
+        "description": "a number with its unit, e.g. '50 mm' or '90 deg'"})]
     | Annotated[ArgumentRole, Tag("argument")]
     | Annotated[LinkRole, Tag("link")],
     Discriminator(
