@@ -24,7 +24,7 @@ from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import ContourInfo, is_function
 from mechloop.model.units import to_si
 from mechloop.modules.planar import pl1_unit, pl2_unit, pl3_unit, pl4_unit, track_variant
-from mechloop.solve.inputs import model_arguments, model_time
+from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.results import ChainBreak, Results
 
 Array = NDArray[np.float64]
@@ -94,8 +94,16 @@ def _constant_si(model: Model, name: str, value: float | str) -> float:
     return to_si(value, kind, getattr(model.units, kind))
 
 
-def solve(model: Model) -> Results:
+#: Positions solved together in one block: small enough that a block's temporaries stay
+#: in the CPU cache, large enough that NumPy's per-call overhead is negligible.
+BLOCK = 8192
+
+
+def solve(model: Model, *, block: int = BLOCK) -> Results:
     """Solve a model for positions, velocities and accelerations at every position.
+
+    The positions are processed in blocks of ``block`` (all contours of a block at once,
+    every operation vectorized over the block); results do not depend on ``block``.
 
     Returns :class:`~mechloop.solve.results.Results`; raises
     :class:`~mechloop.errors.ModelError` if the model is invalid and
@@ -106,73 +114,106 @@ def solve(model: Model) -> Results:
     time = model_time(model)
     args = model_arguments(model, time)
 
-    params: dict[str, _Param] = {}
-    constant: set[str] = set()
+    constants: dict[str, float] = {}
+    driven: dict[str, tuple[Signal, float]] = {}
     for number, vector in model.vectors.items():
         for letter in "ra":
             name = f"{letter}{number}"
             role = vector.r if letter == "r" else vector.a
             if isinstance(role, ArgumentRole):
-                sig = args[role.argument]
-                params[name] = _Param(sig.value + _constant_si(model, name, role.offset),
-                                      sig.rate, sig.accel)
+                driven[name] = (args[role.argument],
+                                _constant_si(model, name, role.offset))
             elif not isinstance(role, LinkRole) and not is_function(role):
-                params[name] = _Param(_constant_si(model, name, role), 0.0, 0.0)
-                constant.add(name)
+                constants[name] = _constant_si(model, name, role)
+    deltas = {name: sum(_constant_si(model, name, d) for d in chain.deltas)
+              for name, chain in structure.links.items()}
+    constant = set(constants) | {n for n, c in structure.links.items()
+                                 if c.root in constants}
+    varying = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"
+               if f"{letter}{n}" not in constant]
+    out = {name: (np.empty(n_pos), np.empty(n_pos), np.empty(n_pos)) for name in varying}
+    ordered = structure.ordered()
+    no_solution = {c.number: np.zeros(n_pos, dtype=bool) for c in ordered}
+    singular = {c.number: np.zeros(n_pos, dtype=bool) for c in ordered}
+    broken_by = {c.number: np.zeros(n_pos, dtype=bool) for c in ordered}
+    last_variant: dict[int, int] = {}
 
-    def resolve(name: str) -> _Param | None:
-        """The parameter, following links once their root is known."""
-        if name in params:
-            return params[name]
-        chain = structure.links.get(name)
-        if chain is None or chain.root not in params:
-            return None
-        root = params[chain.root]
-        delta = sum(_constant_si(model, name, d) for d in chain.deltas)
-        param = _Param(root.value + delta, root.rate, root.accel)
-        if name[0] == "a":
-            rc, rs = root.trig()
-            cd, sd = np.cos(delta), np.sin(delta)
-            param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
-        params[name] = param
-        if chain.root in constant:
-            constant.add(name)
-        return param
+    for first in range(0, n_pos, max(int(block), 2)):
+        lo = max(first - 1, 0)  # one position of overlap carries variant tracking across
+        hi = min(first + max(int(block), 2), n_pos)
+        size, skip = hi - lo, first - lo
+        params = {name: _Param(value, 0.0, 0.0) for name, value in constants.items()}
+        for name, (sig, offset) in driven.items():
+            params[name] = _Param(sig.value[lo:hi] + offset, sig.rate[lo:hi],
+                                  sig.accel[lo:hi])
 
-    broken_by: dict[int, NDArray[np.bool_]] = {}
-    breaks: list[ChainBreak] = []
-    for info in structure.ordered():
-        inherited = np.zeros(n_pos, dtype=bool)
-        for need in info.needs:
-            inherited |= broken_by[need]
-        no_solution, singular = _solve_contour(info, params, resolve, n_pos)
-        no_solution &= ~inherited
-        singular &= ~inherited
-        broken_by[info.number] = no_solution | singular | inherited
-        for reason, mask in ((BREAK_REASONS[info.module], no_solution),
-                             (DEAD_POINT, singular)):
-            if mask.any():
-                breaks.append(ChainBreak(info.number, info.module, np.flatnonzero(mask),
-                                         reason))
+        def resolve(name: str, params: dict[str, _Param] = params) -> _Param | None:
+            """The parameter, following links once their root is known."""
+            if name in params:
+                return params[name]
+            chain = structure.links.get(name)
+            if chain is None or chain.root not in params:
+                return None
+            root = params[chain.root]
+            delta = deltas[name]
+            param = _Param(root.value + delta, root.rate, root.accel)
+            if name[0] == "a":
+                rc, rs = root.trig()
+                cd, sd = np.cos(delta), np.sin(delta)
+                param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+            params[name] = param
+            return param
 
-    for name in list(structure.links):
-        resolve(name)
+        for info in ordered:
+            inherited = np.zeros(size, dtype=bool)
+            for need in info.needs:
+                inherited |= broken_by[need][lo:hi]
+            none, dead, variant = _solve_contour(info, params, resolve, size,
+                                                 start=last_variant.get(info.number, 1))
+            last_variant[info.number] = variant
+            none &= ~inherited
+            dead &= ~inherited
+            no_solution[info.number][first:hi] = none[skip:]
+            singular[info.number][first:hi] = dead[skip:]
+            broken_by[info.number][lo:hi] = (none | dead | inherited)
+        for name in structure.links:
+            resolve(name)
+        for name, arrays in out.items():
+            p = params[name]
+            for target, field in zip(arrays, (p.value, p.rate, p.accel), strict=True):
+                target[first:hi] = np.broadcast_to(field, (size,))[skip:]
 
     broken = np.zeros(n_pos, dtype=bool)
     for mask in broken_by.values():
         broken |= mask
-    any_broken = bool(broken.any())
+    for info in ordered:
+        for name in info.functions:
+            if name[0] == "a":
+                value = out[name][0]
+                value[:] = unwrap_angles(value, np.isfinite(value))
+    for name, chain in structure.links.items():
+        if name in out and chain.root in out:
+            out[name][0][:] = out[chain.root][0] + deltas[name]
+    if broken.any():
+        for arrays in out.values():
+            for arr in arrays:
+                arr[broken] = np.nan
+
+    breaks = []
+    for info in ordered:
+        for reason, mask in ((BREAK_REASONS[info.module], no_solution[info.number]),
+                             (DEAD_POINT, singular[info.number])):
+            if mask.any():
+                breaks.append(ChainBreak(info.number, info.module, np.flatnonzero(mask),
+                                         reason))
     values, rates, accels = {}, {}, {}
-    for name, p in params.items():
-        out = []
-        for field in (p.value, p.rate, p.accel):
-            arr = np.asarray(field, dtype=float)
-            if arr.shape != (n_pos,):
-                arr = np.broadcast_to(arr, (n_pos,))
-            elif any_broken and name not in constant:
-                arr = np.where(broken, np.nan, arr)
-            out.append(arr)
-        values[name], rates[name], accels[name] = out
+    for name, (value, rate, accel) in out.items():
+        values[name], rates[name], accels[name] = value, rate, accel
+    zero = np.broadcast_to(0.0, (n_pos,))
+    for name in constant:
+        root = structure.links[name].root if name in structure.links else name
+        value = constants[root] + deltas.get(name, 0.0)
+        values[name], rates[name], accels[name] = np.broadcast_to(value, (n_pos,)), zero, zero
     arg_kinds = {k: argument_kind(model, k) for k in model.arguments}
     return Results(
         model=model,
@@ -189,12 +230,14 @@ def solve(model: Model) -> Results:
     )
 
 
-def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos: int
-                   ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
+def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos: int, *,
+                   start: int = 1) -> tuple[NDArray[np.bool_], NDArray[np.bool_], int]:
     """Solve one contour, adding its functions to ``params``.
 
-    Returns two masks over positions: no real solution, and dead point (singular
-    Jacobian).  Positions where an input is already NaN come out in the first mask.
+    ``start`` is the variant at the first position when the variant is tracked (``auto``).
+    Returns two masks over positions — no real solution, and dead point (singular
+    Jacobian; positions where an input is already NaN come out in the first mask) — and
+    the variant in use at the last position.
     """
     u1, u2 = info.functions
     for number in info.vectors:
@@ -238,14 +281,17 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos:
         first, ok1 = run(1)
         second, ok2 = run(2)
         variant = track_variant(_points(module, first, params, v1, v2),
-                                _points(module, second, params, v1, v2), ok1 & ok2, start=1)
+                                _points(module, second, params, v1, v2), ok1 & ok2,
+                                start=start)
         unknowns, ok = run(variant)
+        last = int(variant[-1])
     else:
-        unknowns, ok = run(info.variant if info.variant != "auto" else 1)
+        last = info.variant if info.variant != "auto" else 1
+        unknowns, ok = run(last)
 
     for name, (val, c, s) in zip((u1, u2), unknowns, strict=True):
         if name[0] == "a":
-            params[name] = _Param(unwrap_angles(np.arctan2(s, c), ok), 0.0, 0.0, c, s)
+            params[name] = _Param(np.arctan2(s, c), 0.0, 0.0, c, s)  # unwrapped at the end
         else:
             params[name] = _Param(val, 0.0, 0.0)
 
@@ -311,7 +357,7 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos:
             bx = bx - tangential * s
             by = by + tangential * c
     params[u1].accel, params[u2].accel = solve2(bx, by)
-    return ~ok, singular
+    return ~ok, singular, last
 
 
 def _points(module: str, unknowns, params: dict[str, _Param], v1: int, v2: int
