@@ -133,6 +133,9 @@ def _table_of(item: Any) -> Any:
     ]
 
 
+TableDerivatives = Literal["linear", "spline"]
+
+
 class TableArgument(_Frozen):
     """Argument values at calculation positions.
 
@@ -144,6 +147,10 @@ class TableArgument(_Frozen):
 
     table: _table_of(Scalar)
     unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    derivatives: TableDerivatives = Field(
+        "linear", description="'linear': derivatives of the piecewise-linear fill (central "
+        "differences: the slope inside a segment, zero while a value holds); 'spline': of "
+        "the cubic spline through the filled values (for smooth tabulated motion)")
 
 
 LawName = Literal["constant_speed", "harmonic", "cycloidal", "poly345"]
@@ -192,6 +199,9 @@ class TableTime(_Frozen):
     """Model time as a table ``{position: seconds}`` filled like an argument table."""
 
     table: _table_of(float)
+    derivatives: TableDerivatives = Field(
+        "linear", description="how dt/dposition is taken: 'linear' or 'spline' (as for "
+        "argument tables)")
 
 
 def _time_tag(value: Any) -> str | None:

@@ -6,8 +6,9 @@ the model has a time, otherwise with respect to argument 1 ("analogs", DESIGN §
 * Laws (:mod:`mechloop.model.laws`) are exact in the model's clock: time, or the position
   number when there is no time.
 * Tables are filled by KDAM's rules (:mod:`mechloop.model.tables`); their derivatives are
-  those of the not-a-knot cubic spline through the filled value at every position (exact
-  for a table that is linear or cubic in the position number, e.g. ``{0: 0, 72: 360}``).
+  those of the piecewise-linear fill (central differences over positions) or, on request
+  (``derivatives: spline``), of the not-a-knot cubic spline through the filled values.
+  A table linear in the position number (``{0: 0, 72: 360}``) gets its exact slope.
 """
 
 from __future__ import annotations
@@ -37,20 +38,27 @@ class Signal:
     accel: Array
 
 
-def _position_derivatives(values: Array) -> tuple[Array, Array]:
-    """First and second derivative with respect to the position number (spline)."""
+def _position_derivatives(values: Array, method: str = "linear") -> tuple[Array, Array]:
+    """First and second derivative with respect to the position number.
+
+    ``linear``: the derivatives of the piecewise-linear fill — central differences, which
+    give a segment's slope inside it, zero while a value holds, the mean of the two slopes
+    at a kink (and the jump of slope as the second derivative there).  ``spline``: the
+    not-a-knot cubic spline through the values (smooth tabulated motion).
+    """
     if values.size < 2:
         return np.zeros_like(values), np.zeros_like(values)
-    k = np.arange(values.size, dtype=float)
     second = np.diff(values, 2)
     if not second.size or np.abs(second).max() <= 1e-13 * max(np.abs(values).max(), 1e-300):
-        # linear in the position number (e.g. {0: 0, 72: 360}): exact slope, no spline noise
+        # linear in the position number (e.g. {0: 0, 72: 360}): exact slope, no noise
         slope = (values[-1] - values[0]) / (values.size - 1)
         return np.full(values.shape, slope), np.zeros_like(values)
-    if values.size < 4:
-        slope = np.gradient(values) if values.size > 2 else np.full(values.size,
-                                                                    values[1] - values[0])
-        return np.asarray(slope, dtype=float), np.zeros_like(values)
+    if method == "linear" or values.size < 4:
+        first = np.gradient(values)
+        curvature = np.zeros_like(values)
+        curvature[1:-1] = second
+        return first, curvature
+    k = np.arange(values.size, dtype=float)
     spline = CubicSpline(k, values, bc_type="not-a-knot")
     return spline(k, 1), spline(k, 2)
 
@@ -65,7 +73,7 @@ def model_time(model: Model) -> Signal | None:
         step = 60.0 / model.time.rpm / n
         return Signal(k * step, np.full(k.shape, step), np.zeros(k.shape))
     t = fill_table(model.time.table, n)
-    dt, ddt = _position_derivatives(t)
+    dt, ddt = _position_derivatives(t, model.time.derivatives)
     return Signal(t, dt, ddt)
 
 
@@ -91,7 +99,7 @@ def _argument_in_position(model: Model, number: int, time: Signal | None) -> Sig
     else:
         si = [to_si(v, kind, unit) for v in table]
     q = fill_table(si, n)
-    dq, ddq = _position_derivatives(q)
+    dq, ddq = _position_derivatives(q, arg.derivatives)
     if time is None:
         return Signal(q, dq, ddq)
     # q' = q̇ t',  q'' = q̈ t'² + q̇ t''
