@@ -554,11 +554,6 @@ def test_sparse_argument_rates_follow_the_chain_rule():
                  ACCEL_RTOL)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "src/mechloop/solve/inputs.py differentiates a table argument through a not-a-knot "
-    "cubic spline, which rings around the kinks of KDAM's piecewise-linear fill: the "
-    "actuator reports speed while it stands still (positions 1, 2, 11) and the wrong "
-    "speed inside the linear segments (positions 4, 5, 7, 8, 9)"))
 def test_sparse_argument_rate_is_the_slope_of_the_linear_fill():
     """Where the filled table is a straight line through positions k-1, k, k+1, the
     argument's rate is that line's slope: 0 where it holds (KDAM: "the first value holds",

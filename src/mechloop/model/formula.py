@@ -28,6 +28,16 @@ def _fmt(value, unit: str) -> str:
     return f"{value:g} {unit}"
 
 
+def _plus(value, unit: str) -> str:
+    """' + 10 deg', ' − 10 deg', or '' for zero."""
+    if value in (0, 0.0):
+        return ""
+    text = _fmt(value, unit)
+    if text.startswith("-"):
+        return f" − {text[1:].lstrip()}"
+    return f" + {text}"
+
+
 def role_text(model: Model, name: str) -> str:
     """How parameter ``name`` is given: '0.05 m', 'function', 'arg 1 + 10 deg', ..."""
     role = param_role(model, name)
@@ -35,11 +45,9 @@ def role_text(model: Model, name: str) -> str:
     if is_function(role):
         return "function"
     if isinstance(role, ArgumentRole):
-        off = "" if role.offset in (0, 0.0) else f" + {_fmt(role.offset, unit)}"
-        return f"arg {role.argument}{off}"
+        return f"arg {role.argument}{_plus(role.offset, unit)}"
     if isinstance(role, LinkRole):
-        d = "" if role.delta in (0, 0.0) else f" + {_fmt(role.delta, unit)}"
-        return f"{symbol(role.link)}{d}"
+        return f"{symbol(role.link)}{_plus(role.delta, unit)}"
     return _fmt(role, unit)
 
 
