@@ -57,7 +57,7 @@ def pl1_unit(x: ArrayLike, y: ArrayLike) -> tuple[Array, Array, Array, NDArray[n
     y = np.asarray(y, dtype=float)
     r1 = np.sqrt(x * x + y * y)
     ok = r1 > 0
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         c1, s1 = -x / r1, -y / r1
     return (*_ok_or_nan(ok, r1, c1, s1), ok)
 
@@ -90,7 +90,7 @@ def pl2_unit(
     sin_d = np.asarray(s1 * c2 - c1 * s2)  # sin(α1 − α2)
     cos_d = c1 * c2 + s1 * s2
     ok = np.abs(sin_d) > 1e-12
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         r1 = -yp / sin_d
     r2 = -xp - r1 * cos_d
     return (*_ok_or_nan(ok, r1, r2), ok)
@@ -122,7 +122,7 @@ def pl3_unit(
     disc = r2sq - yp * yp
     ok = (disc >= -EXISTENCE_RTOL * r2sq) & (r2 != 0)
     dp = np.sqrt(np.maximum(disc, 0.0))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         cphi = -k * dp / r2  # φ = α2 − α1 in the frame of vector 1
         sphi = -yp / r2
     r1 = -xp + k * dp
@@ -158,7 +158,7 @@ def pl4_unit(
     k = _sign_of_variant(variant)
     psq = x * x + y * y
     p = np.sqrt(psq)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         ux, uy = -x / p, -y / p
         along = (r1 * r1 - r2 * r2 + psq) / (2.0 * p)
         h2 = (r1 - along) * (r1 + along)
