@@ -27,12 +27,16 @@ def _shape(law: str, tau: Array) -> tuple[Array, Array, Array]:
     """``f, f', f''`` of a normalized law at ``tau`` in [0, 1]."""
     if law == "constant_speed":
         return tau, np.ones_like(tau), np.zeros_like(tau)
+    # sines are taken of the distance to the nearer end so that they vanish exactly there
+    # (sin(π) in floating point is 1.2e-16, which would make a dwell look like motion)
+    near = np.minimum(tau, 1.0 - tau)
     if law == "harmonic":
-        return ((1 - np.cos(np.pi * tau)) / 2, np.pi / 2 * np.sin(np.pi * tau),
+        return ((1 - np.cos(np.pi * tau)) / 2, np.pi / 2 * np.sin(np.pi * near),
                 np.pi**2 / 2 * np.cos(np.pi * tau))
     if law == "cycloidal":
         w = 2 * np.pi
-        return (tau - np.sin(w * tau) / w, 1 - np.cos(w * tau), w * np.sin(w * tau))
+        sin_w = np.where(tau <= 0.5, 1.0, -1.0) * np.sin(w * near)
+        return (tau - sin_w / w, 1 - np.cos(w * tau), w * sin_w)
     if law == "poly345":
         t2, t3 = tau * tau, tau**3
         return (10 * t3 - 15 * t3 * tau + 6 * t3 * t2, 30 * t2 - 60 * t3 + 30 * t2 * t2,
