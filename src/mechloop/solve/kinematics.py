@@ -14,6 +14,7 @@ other terms are known.  No Python loop runs over positions.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,15 +24,25 @@ from mechloop.model.check import KIND_OF, argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import ContourInfo, is_function
 from mechloop.model.units import to_si
-from mechloop.modules.planar import pl1_unit, pl2_unit, pl3_unit, pl4_unit, track_variant
+from mechloop.modules.planar import (
+    EXISTENCE_RTOL,
+    pl1_unit,
+    pl2_unit,
+    pl3_unit,
+    pl4_unit,
+    track_variant,
+)
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.results import ChainBreak, Results
 
 Array = NDArray[np.float64]
 
 #: A contour position whose Jacobian has |sin(angle between its columns)| below this is a
-#: dead point: the position exists but velocities are unbounded.
-SINGULAR_SIN = 1e-10
+#: dead point: the position exists but velocities are unbounded.  Modules accept a
+#: position whose discriminant is as low as ``-EXISTENCE_RTOL·r²`` (rounding), so near a
+#: limit position the computed sine is only known to about ``sqrt(EXISTENCE_RTOL)``;
+#: below that the rates would be noise amplified by up to 1e8.
+SINGULAR_SIN = math.sqrt(EXISTENCE_RTOL)
 
 BREAK_REASONS = {
     "Pl1": "the closing vector has zero length, its direction is undefined",
