@@ -18,12 +18,33 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, WithJsonSchema
+from pydantic import Discriminator, Field, Tag, WithJsonSchema
+
+from mechloop.model.dynamic import (
+    Body,
+    Force,
+    Friction,
+    Gravity,
+    HeadPoint,
+    Joint,
+    Moment,
+    TailPoint,
+)
+from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
+    Argument,
+    LawArgument,
+    LawName,
+    RpmTime,
+    Scalar,
+    TableArgument,
+    TableDerivatives,
+    TableTime,
+    Time,
+    _Frozen,
+)
 
 FUNCTION = "function"
 
-#: A constant: a number in the model's units, or a string with its own unit ("50 mm").
-Scalar = float | str
 
 ParamName = Annotated[
     str,
@@ -33,10 +54,6 @@ ParamName = Annotated[
         "e.g. 'a2' or 'r3'",
     ),
 ]
-
-
-class _Frozen(BaseModel):
-    model_config = ConfigDict(frozen=True, extra="forbid")
 
 
 class ArgumentRole(_Frozen):
@@ -111,115 +128,10 @@ class Contour(_Frozen):
         "continuity from the previous position)"
     )
     name: str | None = None
-
-
-def _table_tag(value: Any) -> str | None:
-    if isinstance(value, dict):
-        return "mapping"
-    if isinstance(value, list | tuple):
-        return "list"
-    return None
-
-
-def _table_of(item: Any) -> Any:
-    return Annotated[
-        Annotated[dict[int, item], Tag("mapping")] | Annotated[list[item], Tag("list")],
-        Discriminator(
-            _table_tag,
-            custom_error_type="table_form",
-            custom_error_message="a table is a mapping of position: value, or a list with "
-            "one value per position",
-        ),
-    ]
-
-
-TableDerivatives = Literal["linear", "spline"]
-
-
-class TableArgument(_Frozen):
-    """Argument values at calculation positions.
-
-    A mapping ``{position: value}`` may be sparse and is filled by KDAM's rules: before the
-    first given position the first value holds, between two given positions values are
-    interpolated linearly, after the last the last value holds.  A list gives a value for
-    every position ``0..N``.
-    """
-
-    table: _table_of(Scalar)
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
-    derivatives: TableDerivatives = Field(
-        "linear", description="'linear': derivatives of the piecewise-linear fill (central "
-        "differences: the slope inside a segment, zero while a value holds); 'spline': of "
-        "the cubic spline through the filled values (for smooth tabulated motion)")
-
-
-LawName = Literal["constant_speed", "harmonic", "cycloidal", "poly345"]
-
-
-class LawArgument(_Frozen):
-    """A motion law from ``start = [position, value]`` to ``end = [position, value]``.
-
-    Evaluated on the model time (or on the position number when the model has no time),
-    with exact first and second derivatives; the start value holds before the start
-    position and the end value after the end position.
-    """
-
-    law: LawName
-    start: tuple[int, Scalar]
-    end: tuple[int, Scalar]
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
-
-
-def _argument_tag(value: Any) -> str | None:
-    if isinstance(value, TableArgument) or (isinstance(value, dict) and "table" in value):
-        return "table"
-    if isinstance(value, LawArgument) or (isinstance(value, dict) and "law" in value):
-        return "law"
-    return None
-
-
-Argument = Annotated[
-    Annotated[TableArgument, Tag("table")] | Annotated[LawArgument, Tag("law")],
-    Discriminator(
-        _argument_tag,
-        custom_error_type="argument_form",
-        custom_error_message="an argument needs either a 'table' or a 'law' with 'start' and "
-        "'end'",
-    ),
-]
-
-
-class RpmTime(_Frozen):
-    """Model time from a speed: one full turn over positions ``0..N``, ``t = 60/n·k/N``."""
-
-    rpm: float = Field(gt=0, description="speed of the input, revolutions per minute")
-
-
-class TableTime(_Frozen):
-    """Model time as a table ``{position: seconds}`` filled like an argument table."""
-
-    table: _table_of(float)
-    derivatives: TableDerivatives = Field(
-        "linear", description="how dt/dposition is taken: 'linear' or 'spline' (as for "
-        "argument tables)")
-
-
-def _time_tag(value: Any) -> str | None:
-    if isinstance(value, RpmTime) or (isinstance(value, dict) and "rpm" in value):
-        return "rpm"
-    if isinstance(value, TableTime) or (isinstance(value, dict) and "table" in value):
-        return "table"
-    return None
-
-
-Time = Annotated[
-    Annotated[RpmTime, Tag("rpm")] | Annotated[TableTime, Tag("table")],
-    Discriminator(
-        _time_tag,
-        custom_error_type="time_form",
-        custom_error_message="time needs either 'rpm' or a 'table' of seconds",
-    ),
-]
+    start: Literal["origin"] | TailPoint | HeadPoint | tuple[Scalar, Scalar] = Field(
+        "origin", description="where the tail of the first vector lies: 'origin', the tail "
+        "or head of a vector of an earlier contour ({tail: K} / {head: K}), or fixed "
+        "coordinates [x, y] (length units); places the contour's points in the plane")
 
 
 class Units(_Frozen):
@@ -227,6 +139,11 @@ class Units(_Frozen):
 
     length: str = Field("m", description="length unit: m, cm, mm, ...")
     angle: str = Field("deg", description="angle unit: deg, rad, grad")
+    mass: str = Field("kg", description="mass unit: kg, g, t")
+    inertia: str = Field("kg*m^2", description="moment of inertia unit: kg*m^2, g*cm^2")
+    force: str = Field("N", description="force unit: N, kN, kgf")
+    moment: str = Field("N*m", description="moment unit: N*m, kN*m, kgf*m")
+    acceleration: str = Field("m/s^2", description="unit of the acceleration of gravity")
 
 
 class Model(_Frozen):
@@ -246,6 +163,15 @@ class Model(_Frozen):
     arguments: dict[int, Argument] = Field(default_factory=dict)
     vectors: dict[int, Vector]
     contours: list[Contour] = Field(min_length=1)
+    bodies: dict[int, Body] = Field(
+        default_factory=dict, description="links with their vectors and masses (body 0 is "
+        "the ground; vectors not listed and fully constant belong to it)")
+    joints: dict[str, Joint] | None = Field(
+        None, description="kinematic pairs by name; inferred from the contours when absent")
+    forces: list[Force] = Field(default_factory=list, description="external forces")
+    moments: list[Moment] = Field(default_factory=list, description="external moments")
+    gravity: Gravity | None = Field(None, description="gravity (off when absent)")
+    friction: Friction = Field(Friction(), description="friction defaults for every joint")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:

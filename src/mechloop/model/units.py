@@ -10,11 +10,19 @@ from typing import Literal
 
 import pint
 
-Kind = Literal["length", "angle"]
+Kind = Literal["length", "angle", "mass", "inertia", "force", "moment", "acceleration"]
 
-#: What each kind of parameter is called in messages and which unit is SI for it.
-SI_UNIT: dict[Kind, str] = {"length": "m", "angle": "rad"}
-EXAMPLES: dict[Kind, str] = {"length": "m, cm, mm", "angle": "deg, rad, grad"}
+#: What each kind of quantity is called in messages and which unit is SI for it.
+SI_UNIT: dict[Kind, str] = {"length": "m", "angle": "rad", "mass": "kg",
+                            "inertia": "kg*m^2", "force": "N", "moment": "N*m",
+                            "acceleration": "m/s^2"}
+EXAMPLES: dict[Kind, str] = {"length": "m, cm, mm", "angle": "deg, rad, grad",
+                             "mass": "kg, g, t", "inertia": "kg*m^2, g*cm^2",
+                             "force": "N, kN, kgf", "moment": "N*m, kN*m, kgf*m",
+                             "acceleration": "m/s^2, g0"}
+SAMPLE: dict[Kind, str] = {"length": "50 mm", "angle": "90 deg", "mass": "2 kg",
+                           "inertia": "0.01 kg*m^2", "force": "1000 N",
+                           "moment": "50 N*m", "acceleration": "9.81 m/s^2"}
 
 
 class UnitProblem(ValueError):
@@ -37,9 +45,9 @@ def _a(kind: str) -> str:
 
 
 def _is_kind(unit: pint.Unit, kind: Kind) -> bool:
-    if kind == "length":
-        return unit.dimensionality == registry().parse_units("m").dimensionality
-    return unit.dimensionless and str(unit) != "dimensionless"
+    if kind == "angle":
+        return unit.dimensionless and str(unit) != "dimensionless"
+    return unit.dimensionality == registry().parse_units(SI_UNIT[kind]).dimensionality
 
 
 @functools.cache
@@ -75,9 +83,9 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
     except Exception as exc:  # pint raises many types for unreadable text
         raise UnitProblem(f"cannot read {value!r} as {_a(kind)}",
                           f"write a number, or a number and a unit like "
-                          f"'{'50 mm' if kind == 'length' else '90 deg'}'") from exc
+                          f"'{SAMPLE[kind]}'") from exc
     if not isinstance(qty, pint.Quantity) or (
-        kind == "length" and qty.dimensionless
+        kind != "angle" and qty.dimensionless
     ) or (kind == "angle" and qty.unitless):
         raise UnitProblem(f"{value!r} has no {kind} unit",
                           f"write a plain number (model units) or a number with a {kind} "

@@ -24,7 +24,7 @@ from mechloop.model.check import argument_kind
 from mechloop.model.laws import evaluate_law
 from mechloop.model.schema import LawArgument, Model, RpmTime, TableArgument
 from mechloop.model.tables import fill_table
-from mechloop.model.units import to_si
+from mechloop.model.units import Kind, to_si
 
 Array = NDArray[np.float64]
 
@@ -77,29 +77,25 @@ def model_time(model: Model) -> Signal | None:
     return Signal(t, dt, ddt)
 
 
-def _argument_in_position(model: Model, number: int, time: Signal | None) -> Signal:
-    """Argument ``number`` (SI) and its derivatives with respect to the model clock.
-
-    The clock is time when the model has one, else the position number.
-    """
-    arg = model.arguments[number]
-    kind = argument_kind(model, number)
-    unit = arg.unit or getattr(model.units, kind)
+def evaluate_signal(spec: TableArgument | LawArgument, model: Model, kind: Kind, unit: str,
+                    time: Signal | None) -> Signal:
+    """A table or law of the model (an argument, a load) in SI over all positions, with its
+    derivatives with respect to the model clock: time when the model has one, else the
+    position number."""
     n = model.positions
-    if isinstance(arg, LawArgument):
-        (k0, v0), (k1, v1) = arg.start, arg.end
+    if isinstance(spec, LawArgument):
+        (k0, v0), (k1, v1) = spec.start, spec.end
         q0, q1 = to_si(v0, kind, unit), to_si(v1, kind, unit)
         clock = time.value if time is not None else np.arange(n + 1, dtype=float)
-        q, dq, ddq = evaluate_law(arg.law, clock, clock[k0], clock[k1], q0, q1)
+        q, dq, ddq = evaluate_law(spec.law, clock, clock[k0], clock[k1], q0, q1)
         return Signal(q, dq, ddq)
-    assert isinstance(arg, TableArgument)
-    table = arg.table
+    table = spec.table
     if isinstance(table, dict):
         si = {k: to_si(v, kind, unit) for k, v in table.items()}
     else:
         si = [to_si(v, kind, unit) for v in table]
     q = fill_table(si, n)
-    dq, ddq = _position_derivatives(q, arg.derivatives)
+    dq, ddq = _position_derivatives(q, spec.derivatives)
     if time is None:
         return Signal(q, dq, ddq)
     # q' = q̇ t',  q'' = q̈ t'² + q̇ t''
@@ -108,15 +104,25 @@ def _argument_in_position(model: Model, number: int, time: Signal | None) -> Sig
     return Signal(q, rate, accel)
 
 
-def model_arguments(model: Model, time: Signal | None) -> dict[int, Signal]:
+def _argument_in_position(model: Model, number: int, time: Signal | None) -> Signal:
+    """Argument ``number`` (SI) and its derivatives with respect to the model clock."""
+    arg = model.arguments[number]
+    kind = argument_kind(model, number)
+    return evaluate_signal(arg, model, kind, arg.unit or getattr(model.units, kind), time)
+
+
+def model_arguments(model: Model, time: Signal | None, *, strict: bool = True
+                    ) -> dict[int, Signal]:
     """Every argument over all positions, SI, derivatives with respect to time — or, when
     the model has no time, with respect to argument 1 (analogs).
 
     Raises :class:`SolveError` when the model has no time and argument 1 stands still at
-    some position, where derivatives with respect to it do not exist.
+    some position, where derivatives with respect to it do not exist (``strict=False``
+    returns the values with derivatives per position number instead, for callers that
+    replace the derivatives).
     """
     raw = {number: _argument_in_position(model, number, time) for number in model.arguments}
-    if time is not None or not raw:
+    if time is not None or not raw or not strict:
         return raw
     first = min(raw)
     base = raw[first]

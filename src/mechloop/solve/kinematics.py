@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from mechloop.errors import SolveError
 from mechloop.model.check import KIND_OF, argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import ContourInfo, is_function
@@ -110,8 +111,12 @@ def _constant_si(model: Model, name: str, value: float | str) -> float:
 BLOCK = 8192
 
 
-def solve(model: Model, *, block: int = BLOCK) -> Results:
+def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) -> Results:
     """Solve a model for positions, velocities and accelerations at every position.
+
+    With ``analogs_of=k`` the derivatives are the analogs with respect to argument ``k``
+    alone (its rate 1 and acceleration 0, every other argument held): first- and
+    second-order transfer functions, per rad or per m of that argument.
 
     The positions are processed in blocks of ``block`` (all contours of a block at once,
     every operation vectorized over the block); results do not depend on ``block``.
@@ -123,7 +128,15 @@ def solve(model: Model, *, block: int = BLOCK) -> Results:
     structure = require_valid(model)
     n_pos = model.positions + 1
     time = model_time(model)
-    args = model_arguments(model, time)
+    if analogs_of is not None:
+        if analogs_of not in model.arguments:
+            raise SolveError(f"the model has no argument {analogs_of}",
+                             f"use one of {sorted(model.arguments)}")
+        args = {k: Signal(s.value, np.full(n_pos, float(k == analogs_of)), np.zeros(n_pos))
+                for k, s in model_arguments(model, time, strict=False).items()}
+        time = None
+    else:
+        args = model_arguments(model, time)
 
     constants: dict[str, float] = {}
     driven: dict[str, tuple[Signal, float]] = {}
@@ -238,6 +251,7 @@ def solve(model: Model, *, block: int = BLOCK) -> Results:
         constant=frozenset(constant),
         broken=broken,
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)),
+        analogs_of=analogs_of,
     )
 
 

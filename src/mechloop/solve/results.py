@@ -72,6 +72,7 @@ class Results:
     constant: frozenset[str]
     broken: NDArray[np.bool_]
     breaks: tuple[ChainBreak, ...] = field(default_factory=tuple)
+    analogs_of: int | None = None
 
     @property
     def positions(self) -> NDArray[np.int64]:
@@ -114,7 +115,7 @@ class Results:
         """Units of first/second derivatives as a divisor: ('s', 's^2') or analogs."""
         if self.has_time:
             return "s", "s^2"
-        first = min(self.arguments) if self.arguments else None
+        first = self.analogs_of or (min(self.arguments) if self.arguments else None)
         base = "m" if first is not None and self.argument_kinds[first] == "length" else "rad"
         return base, f"{base}^2"
 

@@ -1,0 +1,1 @@
+"""Dynamics: masses, loads, kinetostatics, reduced characteristics, energy and machine motion."""

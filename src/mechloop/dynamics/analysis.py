@@ -1,0 +1,211 @@
+"""The basic dynamic model solved: kinematics, loads, reactions, reduced characteristics,
+balancing loads (kinetostatics and virtual power), power and work.
+
+:func:`solve_dynamics` is the entry point; :class:`DynamicResults` holds everything and
+writes the table (``to_frame``) that ``mechloop solve`` prints for a model with bodies.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from numpy.typing import NDArray
+
+from mechloop.dynamics.energy import Summary, summarize
+from mechloop.dynamics.kinetostatics import ForceAnalysis, body_motions, kinetostatics
+from mechloop.dynamics.loads import Loads, build_loads
+from mechloop.dynamics.mechanism import Mechanism, build_mechanism
+from mechloop.dynamics.points import Motion, Placement
+from mechloop.dynamics.reduced import Reduced, balancing_by_virtual_power, reduced
+from mechloop.model.schema import Model
+from mechloop.solve.inputs import model_time
+from mechloop.solve.kinematics import solve
+from mechloop.solve.results import Results
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class DynamicResults:
+    """A solved dynamic model (SI, arrays shaped (P,)).
+
+    ``forces``: reactions and balancing loads by kinetostatics; ``balancing_vp``: the
+    balancing load of each drive by virtual power (friction power included for a
+    one-input machine); ``reduced``: reduced characteristics to the input (one-input
+    machines only, else None); ``centers``: every centre of mass, and ``center`` the
+    common one; ``summary``: power and work over the cycle.  Without model time the
+    analysis is static (no inertia loads).
+    """
+
+    kinematics: Results
+    placement: Placement
+    mechanism: Mechanism
+    loads: Loads
+    forces: ForceAnalysis
+    balancing_vp: dict[int, Array]
+    reduced: Reduced | None
+    centers: dict[int, Motion]
+    center: Motion
+    kinetic_energy: Array
+    powers: dict[str, Array]
+    summary: Summary
+    static: bool
+
+    def balancing_name(self, argument: int) -> tuple[str, str]:
+        """Column stem and unit of the balancing load of ``argument``."""
+        kind = self.kinematics.argument_kinds[argument]
+        stem = "M_bal" if kind == "angle" else "F_bal"
+        if len(self.mechanism.drives) > 1:
+            stem += str(argument)
+        return stem, "N*m" if kind == "angle" else "N"
+
+    def to_frame(self) -> pd.DataFrame:
+        """The kinematic table followed by the dynamic columns: balancing loads (and by
+        virtual power, ``_vp``), reduced characteristics, centres of mass, and for every
+        joint the reaction components and magnitude, and the angle of the reaction to
+        each vector that ends at the joint."""
+        frame = self.kinematics.to_frame()
+        cols: dict[str, Array] = {}
+        for k, value in self.forces.balancing.items():
+            stem, unit = self.balancing_name(k)
+            cols[f"{stem} [{unit}]"] = value
+            cols[f"{stem}_vp [{unit}]"] = self.balancing_vp[k]
+        if self.reduced is not None:
+            k = self.mechanism.drives[0].argument
+            linear = self.kinematics.argument_kinds[k] == "length"
+            cols["m_red [kg]" if linear else "J_red [kg*m^2]"] = self.reduced.inertia
+            cols["dm_red [kg/m]" if linear else "dJ_red [kg*m^2/rad]"] = \
+                self.reduced.d_inertia
+            cols["F_red [N]" if linear else "M_red [N*m]"] = self.reduced.load
+        for body, motion in sorted(self.centers.items()):
+            cols[f"xS{body} [m]"] = motion.z.real
+            cols[f"yS{body} [m]"] = motion.z.imag
+        cols["xS [m]"] = self.center.z.real
+        cols["yS [m]"] = self.center.z.imag
+        for name, reaction in self.forces.reactions.items():
+            cols[f"R{name}_x [N]"] = reaction.force.real
+            cols[f"R{name}_y [N]"] = reaction.force.imag
+            cols[f"R{name} [N]"] = np.abs(reaction.force)
+            if reaction.normal is not None:
+                cols[f"R{name}_n [N]"] = reaction.normal
+                cols[f"R{name}_m [N*m]"] = reaction.moment
+            for v in _vectors_at(self, reaction.pair):
+                angle = np.angle(reaction.force) - self.kinematics.value(f"a{v}")
+                cols[f"R{name}_to_a{v} [deg]"] = np.degrees(np.angle(np.exp(1j * angle)))
+        cols["friction_loss [W]"] = self.forces.friction_loss
+        cols["T [J]"] = self.kinetic_energy
+        extra = pd.DataFrame(cols)
+        return pd.concat([frame.drop(columns="chain_break"), extra,
+                          frame[["chain_break"]]], axis=1)
+
+
+def _vectors_at(results: DynamicResults, pair) -> list[int]:
+    """The body vectors that have an end at the pair's point (for reaction angles)."""
+    model = results.kinematics.model
+    out = []
+    for b in pair.bodies:
+        frame = results.mechanism.bodies.get(b)
+        vectors = frame.vectors if frame is not None else [
+            v for v in model.vectors if v not in {u for f in results.mechanism.bodies.values()
+                                                  for u in f.vectors}]
+        for v in vectors:
+            if v in out:
+                continue
+            z = results.forces.reactions[pair.name].point.z
+            placement_tail = results.placement.tail(v).z
+            head = placement_tail + results.kinematics.value(f"r{v}") * np.exp(
+                1j * results.kinematics.value(f"a{v}"))
+            scale = max(float(np.nanmax(np.abs(z), initial=0.0)), 1.0)
+            if (np.nanmax(np.abs(placement_tail - z), initial=np.inf) <= 1e-9 * scale
+                    or np.nanmax(np.abs(head - z), initial=np.inf) <= 1e-9 * scale):
+                out.append(v)
+    return out
+
+
+def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
+    """Solve ``model`` with its bodies, joints and loads at every position (SI).
+
+    Raises :class:`~mechloop.errors.ModelError` for an invalid model (naming every
+    problem) and :class:`~mechloop.errors.SolveError` when the force analysis cannot be
+    done (friction that does not settle).
+    """
+    kin = solve(model)
+    time = model_time(model)
+    static = time is None
+    placement = Placement(kin)
+    mechanism = build_mechanism(model, placement)
+    loads = build_loads(model, mechanism, placement, time)
+    forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static)
+
+    balancing_vp: dict[int, Array] = {}
+    red: Reduced | None = None
+    analog_cache: dict[int, tuple[Placement, Loads]] = {}
+    for drive in mechanism.drives:
+        analogs = Placement(solve(model, analogs_of=drive.argument))
+        loads_at = build_loads(model, mechanism, analogs, time)
+        analog_cache[drive.argument] = (analogs, loads_at)
+        balancing_vp[drive.argument] = balancing_by_virtual_power(
+            mechanism, placement, analogs, loads_at, static=static)
+    if len(mechanism.drives) == 1:
+        k = mechanism.drives[0].argument
+        analogs, loads_at = analog_cache[k]
+        red = reduced(mechanism, analogs, loads_at)
+        if friction:
+            rate = _argument_rate(kin, k)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                balancing_vp[k] = balancing_vp[k] + np.where(
+                    rate != 0, forces.friction_loss / rate, 0.0)
+
+    centers = {}
+    total = mechanism.total_mass
+    for body in sorted(mechanism.bodies):
+        parts = [m for m in mechanism.masses if m.body == body and m.mass > 0]
+        if not parts:
+            continue
+        mass = sum(m.mass for m in parts)
+        points = [placement.point(m.center) for m in parts]
+        centers[body] = Motion(*(sum(m.mass * getattr(p, f) for m, p in zip(parts, points,
+                                                                              strict=True))
+                                 / mass for f in ("z", "v", "a")))
+    n = kin.broken.size
+    zero = np.zeros(n, dtype=complex)
+    if total > 0:
+        center = Motion(*(sum(sum(m.mass for m in mechanism.masses if m.body == b)
+                              * getattr(c, f) for b, c in centers.items()) / total
+                          for f in ("z", "v", "a")))
+    else:
+        center = Motion(zero, zero, zero)
+
+    motions = body_motions(mechanism, placement)
+    kinetic = np.zeros(n)
+    if not static:
+        for m in mechanism.masses:
+            s = placement.point(m.center)
+            kinetic += 0.5 * (m.mass * np.abs(s.v) ** 2 + m.inertia * motions[m.body].omega ** 2)
+
+    powers: dict[str, Array] = {}
+    for load in loads.forces:
+        powers[load.name] = (np.conj(load.force) * load.point.v).real + powers.get(load.name, 0)
+    for couple in loads.moments:
+        powers[couple.name] = couple.moment * motions[couple.body].omega
+    for drive in mechanism.drives:
+        stem = "M_bal" if drive.kind == "angle" else "F_bal"
+        if len(mechanism.drives) > 1:
+            stem += str(drive.argument)
+        powers[stem] = forces.balancing[drive.argument] * _argument_rate(kin, drive.argument)
+    clock = time.value if time is not None else kin.arguments[min(kin.arguments)]
+    summary = summarize(powers, forces.friction_loss, clock, total, kinetic)
+    return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
+                          centers, center, kinetic, powers, summary, static)
+
+
+def _argument_rate(results: Results, k: int) -> Array:
+    """Rate of argument ``k`` (rad/s or m/s; per argument 1 without time)."""
+    for number, vector in results.model.vectors.items():
+        for letter in "ra":
+            role = getattr(vector, letter)
+            if getattr(role, "argument", None) == k:
+                return results.rate(f"{letter}{number}")
+    raise KeyError(k)

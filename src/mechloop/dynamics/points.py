@@ -1,0 +1,136 @@
+"""Points of a solved vector model in the plane, with exact velocities and accelerations.
+
+A contour is a closed loop: it fixes where its points are relative to each other, not
+where they are in the plane.  Each contour is placed by its ``start`` (the origin by
+default, or an end of a vector of another contour, or fixed coordinates), and then the tail
+of each of its vectors is the sum of the vectors before it.
+
+Points are complex numbers ``z = x + i·y`` (m) over positions, shape ``(P,)``; a vector is
+``r·e^{iα}``, so its derivatives are ``(ṙ + i r α̇)·e^{iα}`` and
+``(r̈ − r α̇² + i(2 ṙ α̇ + r α̈))·e^{iα}``.  Derivatives follow the results: time
+derivatives, or analogs when the results are.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from mechloop.errors import ModelError, Problem
+from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint
+from mechloop.model.units import to_si
+from mechloop.solve.results import Results
+
+Complex = NDArray[np.complex128]
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A point (or vector) over positions: position ``z`` (m), velocity ``v`` (m/s) and
+    acceleration ``a`` (m/s²) as complex arrays, shape ``(P,)``."""
+
+    z: Complex
+    v: Complex
+    a: Complex
+
+    def __add__(self, other: Motion) -> Motion:
+        return Motion(self.z + other.z, self.v + other.v, self.a + other.a)
+
+
+def vector_motion(results: Results, number: int) -> Motion:
+    """Vector ``number`` as ``r·e^{iα}`` with its first and second derivatives."""
+    r, a = results.value(f"r{number}"), results.value(f"a{number}")
+    dr, da = results.rate(f"r{number}"), results.rate(f"a{number}")
+    ddr, dda = results.accel(f"r{number}"), results.accel(f"a{number}")
+    e = np.exp(1j * a)
+    return Motion(r * e, (dr + 1j * r * da) * e,
+                  (ddr - r * da * da + 1j * (2 * dr * da + r * dda)) * e)
+
+
+def offset_motion(results: Results, number: int, share: float, along: float,
+                  across: float) -> Motion:
+    """The offset from vector ``number``'s tail to a point placed on it: ``share`` of its
+    length plus ``along`` (m) along it, ``across`` (m) to its left."""
+    r, a = results.value(f"r{number}"), results.value(f"a{number}")
+    dr, da = results.rate(f"r{number}"), results.rate(f"a{number}")
+    ddr, dda = results.accel(f"r{number}"), results.accel(f"a{number}")
+    w = share * r + along + 1j * across
+    dw, ddw = share * dr, share * ddr
+    e = np.exp(1j * a)
+    return Motion(w * e, (dw + 1j * da * w) * e,
+                  (ddw + 2j * da * dw + 1j * dda * w - da * da * w) * e)
+
+
+class Placement:
+    """Where every vector of a solved model lies: tails and heads over positions."""
+
+    def __init__(self, results: Results):
+        self.results = results
+        self._vectors = {n: vector_motion(results, n) for n in results.model.vectors}
+        self._tails: dict[int, Motion] = {}
+        self._contour_of = {v: i for i, c in enumerate(results.model.contours)
+                            for v in c.vectors}
+        for index in range(len(results.model.contours)):
+            self._place(index, ())
+
+    def _place(self, index: int, visiting: tuple[int, ...]) -> None:
+        contour = self.results.model.contours[index]
+        if contour.vectors[0] in self._tails:
+            return
+        if index in visiting:
+            raise ModelError([Problem(("contours", index, "start"),
+                                      "the starts of contours refer to each other in a cycle",
+                                      "start one of them at the origin or at fixed "
+                                      "coordinates [x, y]")])
+        start = self._start(index, contour.start, (*visiting, index))
+        tail = start
+        for number in contour.vectors:
+            self._tails[number] = tail
+            tail = tail + self._vectors[number]
+
+    def _start(self, index: int, start, visiting: tuple[int, ...]) -> Motion:
+        n = self.results.broken.size
+        zero = np.zeros(n, dtype=complex)
+        if isinstance(start, str):
+            return Motion(zero, zero, zero)
+        if isinstance(start, tuple | list):
+            units = self.results.model.units.length
+            x, y = (to_si(c, "length", units) for c in start)
+            return Motion(np.full(n, complex(x, y)), zero, zero)
+        number = start.tail if isinstance(start, TailPoint) else start.head
+        if number not in self._contour_of:
+            raise ModelError([Problem(("contours", index, "start"),
+                                      f"vector {number} does not exist",
+                                      f"use one of {sorted(self._contour_of)}")])
+        other = self._contour_of[number]
+        if other == index:
+            raise ModelError([Problem(("contours", index, "start"),
+                                      f"vector {number} is in this contour",
+                                      "start a contour at a point of another contour")])
+        self._place(other, visiting)
+        return self.tail(number) if isinstance(start, TailPoint) else self.head(number)
+
+    def vector(self, number: int) -> Motion:
+        return self._vectors[number]
+
+    def tail(self, number: int) -> Motion:
+        return self._tails[number]
+
+    def head(self, number: int) -> Motion:
+        return self._tails[number] + self._vectors[number]
+
+    def point(self, where: TailPoint | HeadPoint | VectorPoint) -> Motion:
+        """A point given as in a model file (model units converted to SI)."""
+        if isinstance(where, TailPoint):
+            return self.tail(where.tail)
+        if isinstance(where, HeadPoint):
+            return self.head(where.head)
+        units = self.results.model.units.length
+        along = 0.0 if where.along is None else to_si(where.along, "length", units)
+        share = 0.0 if where.share is None else float(where.share)
+        across = to_si(where.across, "length", units)
+        return self.tail(where.vector) + offset_motion(self.results, where.vector, share,
+                                                       along, across)

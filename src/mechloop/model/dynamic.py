@@ -1,0 +1,189 @@
+"""The dynamic part of a model file: bodies, joints, loads, gravity (KDAM's "basic dynamic
+model", DESIGN §5).
+
+A **body** is a set of vectors that move together; the ground is body 0.  Points are
+given on vectors: ``{tail: 3}``, ``{head: 3}``, or ``{vector: 2, share: 0.3}`` (a fraction
+of the vector's length from its tail) / ``{vector: 2, along: 0.06, across: 0.01}`` (a
+distance along the vector from its tail and a distance to its left).  Numbers are in the
+model's units (``units``); any value may also carry its own unit ("2 kg", "1 kN").
+
+Sign conventions: angles and moments counter-clockwise positive; a joint's reaction is
+the force that the first body of ``bodies`` exerts on the second.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import Discriminator, Field, Tag, model_validator
+
+from mechloop.model.signals import Argument, Scalar, _Frozen
+
+
+class TailPoint(_Frozen):
+    """The tail (start) of a vector."""
+
+    tail: int = Field(ge=1, description="vector number")
+
+
+class HeadPoint(_Frozen):
+    """The head (end) of a vector."""
+
+    head: int = Field(ge=1, description="vector number")
+
+
+class VectorPoint(_Frozen):
+    """A point placed on a vector: ``share`` of its length from the tail, or ``along`` it
+    from the tail; ``across`` to its left (counter-clockwise side)."""
+
+    vector: int = Field(ge=1, description="vector number")
+    share: float | None = Field(None, description="fraction of the vector's length from "
+                                "its tail (0 = tail, 1 = head)")
+    along: Scalar | None = Field(None, description="distance from the tail along the "
+                                 "vector (length units)")
+    across: Scalar = Field(0.0, description="distance to the left of the vector (length "
+                           "units)")
+
+    @model_validator(mode="after")
+    def _one_placement(self) -> VectorPoint:
+        if (self.share is None) == (self.along is None):
+            raise ValueError("give either 'share' (a fraction of the length) or 'along' "
+                             "(a distance from the tail)")
+        return self
+
+
+def _point_tag(value: Any) -> str | None:
+    for cls, key in ((TailPoint, "tail"), (HeadPoint, "head"), (VectorPoint, "vector")):
+        if isinstance(value, cls) or (isinstance(value, dict) and key in value):
+            return key
+    return None
+
+
+PointOn = Annotated[
+    Annotated[TailPoint, Tag("tail")] | Annotated[HeadPoint, Tag("head")]
+    | Annotated[VectorPoint, Tag("vector")],
+    Discriminator(
+        _point_tag,
+        custom_error_type="point_form",
+        custom_error_message="a point is {tail: K}, {head: K} or {vector: K, share: s} / "
+        "{vector: K, along: d, across: e}",
+    ),
+]
+
+#: A moment of inertia, or ``rod``: a slender rod about its middle, ``m·l²/12`` with ``l``
+#: the length of the vector that carries the centre (KDAM's m→Js button).
+Inertia = Scalar | Literal["rod"]
+
+
+class MassPart(_Frozen):
+    """A lumped mass of a body: mass, moment of inertia about its own centre, centre."""
+
+    mass: Scalar = Field(description="mass (mass units)")
+    inertia: Inertia = Field(0.0, description="moment of inertia about the part's centre "
+                             "of mass (inertia units), or 'rod' for m·l²/12")
+    center: PointOn = Field(description="centre of mass, on one of the body's vectors")
+
+
+class Body(_Frozen):
+    """A link: vectors that move together, with its mass characteristics.
+
+    ``mass``/``inertia``/``center`` describe the body as one lumped mass; ``parts`` adds
+    more (a body with several centres of mass).  A vector whose length varies has one end
+    fixed in the body: the tail, unless ``ends`` says ``head``.
+    """
+
+    vectors: list[int] = Field(min_length=1, description="vectors fixed in this body")
+    name: str | None = None
+    mass: Scalar = Field(0.0, description="mass (mass units)")
+    inertia: Inertia = Field(0.0, description="moment of inertia about the centre of mass "
+                             "(inertia units), or 'rod' for m·l²/12")
+    center: PointOn | None = Field(None, description="centre of mass (required with a mass)")
+    parts: list[MassPart] = Field(default_factory=list, description="further lumped masses")
+    ends: dict[int, Literal["tail", "head"]] = Field(
+        default_factory=dict, description="for a vector of varying length: which of its "
+        "ends is fixed in this body (default tail)")
+
+
+class Joint(_Frozen):
+    """A kinematic pair between two bodies (the ground is body 0).
+
+    ``revolute``: a pin at point ``at``; friction is a moment ``f·radius·|R|`` against the
+    relative rotation.  ``prismatic``: a slide along vector ``along``; its reaction is a
+    normal force and a moment about point ``at`` (default: the end of ``along`` fixed in
+    the second body); friction is a force ``f·max(|N|, 2|M|/length)`` against the relative
+    sliding (a slider of ``length`` loaded at its two edges).
+    """
+
+    type: Literal["revolute", "prismatic"] = "revolute"
+    bodies: tuple[int, int] = Field(description="the two bodies; the reaction is the "
+                                    "force of the first on the second")
+    at: PointOn | None = Field(None, description="revolute: the pin; prismatic: the "
+                               "reference point of the normal force and moment")
+    along: int | None = Field(None, description="prismatic: the vector along which the "
+                              "bodies slide")
+    friction: float | None = Field(None, ge=0, description="coefficient of friction "
+                                   "(default: friction.coefficient, or none)")
+    radius: Scalar | None = Field(None, description="revolute: pin radius for friction "
+                                  "(length units; default friction.radius)")
+    length: Scalar | None = Field(None, description="prismatic: slider length for friction "
+                                  "(length units; default friction.length)")
+
+
+class Friction(_Frozen):
+    """Defaults for every joint that does not set its own."""
+
+    coefficient: float = Field(0.0, ge=0, description="coefficient of friction")
+    radius: Scalar | None = Field(None, description="pin radius of revolute joints")
+    length: Scalar | None = Field(None, description="slider length of prismatic joints")
+
+
+def _value_tag(value: Any) -> str | None:
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, int | float | str):
+        return "constant"
+    if isinstance(value, dict) or hasattr(value, "model_fields"):
+        return "signal"
+    return None
+
+
+#: A load over positions: a constant, or a table / law exactly like a model argument.
+LoadValue = Annotated[
+    Annotated[Scalar, Tag("constant")] | Annotated[Argument, Tag("signal")],
+    Discriminator(
+        _value_tag,
+        custom_error_type="load_value",
+        custom_error_message="a load value is a number, a quantity like '1 kN', a table "
+        "{table: {position: value}} or a law {law: ..., start: [k, v], end: [k, v]}",
+    ),
+]
+
+
+class Force(_Frozen):
+    """A force on a body at a point.  Its direction is the angle ``angle`` from +X, or,
+    with ``along: K``, the direction of vector K turned by ``angle``; a negative value
+    pushes the other way."""
+
+    body: int = Field(ge=1, description="the body the force acts on")
+    at: PointOn = Field(description="point of application")
+    value: LoadValue = Field(description="magnitude over positions (force units)")
+    angle: Scalar = Field(0.0, description="direction (angle units): from +X, or from "
+                          "vector 'along'")
+    along: int | None = Field(None, description="the force follows this vector's direction")
+    name: str | None = None
+
+
+class Moment(_Frozen):
+    """A moment (couple) on a body, counter-clockwise positive."""
+
+    body: int = Field(ge=1, description="the body the moment acts on")
+    value: LoadValue = Field(description="moment over positions (moment units)")
+    name: str | None = None
+
+
+class Gravity(_Frozen):
+    """Gravity: acceleration ``g`` pointing at ``angle`` from +X (default −90°, along −Y)."""
+
+    g: Scalar = Field(9.81, description="acceleration of gravity (acceleration units)")
+    angle: Scalar = Field("-90 deg", description="direction of gravity from +X (angle "
+                          "units)")

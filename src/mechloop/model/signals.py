@@ -1,0 +1,125 @@
+"""Values over calculation positions as a model file states them: tables (sparse, filled by
+KDAM's rules), motion laws, and the model time.  Shared by model arguments and by loads.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+
+#: A constant: a number in the model's units, or a string with its own unit ("50 mm").
+Scalar = float | str
+
+
+class _Frozen(BaseModel):
+    model_config = ConfigDict(frozen=True, extra="forbid")
+
+
+def _table_tag(value: Any) -> str | None:
+    if isinstance(value, dict):
+        return "mapping"
+    if isinstance(value, list | tuple):
+        return "list"
+    return None
+
+
+def _table_of(item: Any) -> Any:
+    return Annotated[
+        Annotated[dict[int, item], Tag("mapping")] | Annotated[list[item], Tag("list")],
+        Discriminator(
+            _table_tag,
+            custom_error_type="table_form",
+            custom_error_message="a table is a mapping of position: value, or a list with "
+            "one value per position",
+        ),
+    ]
+
+
+TableDerivatives = Literal["linear", "spline"]
+
+
+class TableArgument(_Frozen):
+    """Argument values at calculation positions.
+
+    A mapping ``{position: value}`` may be sparse and is filled by KDAM's rules: before the
+    first given position the first value holds, between two given positions values are
+    interpolated linearly, after the last the last value holds.  A list gives a value for
+    every position ``0..N``.
+    """
+
+    table: _table_of(Scalar)
+    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    derivatives: TableDerivatives = Field(
+        "linear", description="'linear': derivatives of the piecewise-linear fill (central "
+        "differences: the slope inside a segment, zero while a value holds); 'spline': of "
+        "the cubic spline through the filled values (for smooth tabulated motion)")
+
+
+LawName = Literal["constant_speed", "harmonic", "cycloidal", "poly345"]
+
+
+class LawArgument(_Frozen):
+    """A motion law from ``start = [position, value]`` to ``end = [position, value]``.
+
+    Evaluated on the model time (or on the position number when the model has no time),
+    with exact first and second derivatives; the start value holds before the start
+    position and the end value after the end position.
+    """
+
+    law: LawName
+    start: tuple[int, Scalar]
+    end: tuple[int, Scalar]
+    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+
+
+def _argument_tag(value: Any) -> str | None:
+    if isinstance(value, TableArgument) or (isinstance(value, dict) and "table" in value):
+        return "table"
+    if isinstance(value, LawArgument) or (isinstance(value, dict) and "law" in value):
+        return "law"
+    return None
+
+
+Argument = Annotated[
+    Annotated[TableArgument, Tag("table")] | Annotated[LawArgument, Tag("law")],
+    Discriminator(
+        _argument_tag,
+        custom_error_type="argument_form",
+        custom_error_message="an argument needs either a 'table' or a 'law' with 'start' and "
+        "'end'",
+    ),
+]
+
+
+class RpmTime(_Frozen):
+    """Model time from a speed: one full turn over positions ``0..N``, ``t = 60/n·k/N``."""
+
+    rpm: float = Field(gt=0, description="speed of the input, revolutions per minute")
+
+
+class TableTime(_Frozen):
+    """Model time as a table ``{position: seconds}`` filled like an argument table."""
+
+    table: _table_of(float)
+    derivatives: TableDerivatives = Field(
+        "linear", description="how dt/dposition is taken: 'linear' or 'spline' (as for "
+        "argument tables)")
+
+
+def _time_tag(value: Any) -> str | None:
+    if isinstance(value, RpmTime) or (isinstance(value, dict) and "rpm" in value):
+        return "rpm"
+    if isinstance(value, TableTime) or (isinstance(value, dict) and "table" in value):
+        return "table"
+    return None
+
+
+Time = Annotated[
+    Annotated[RpmTime, Tag("rpm")] | Annotated[TableTime, Tag("table")],
+    Discriminator(
+        _time_tag,
+        custom_error_type="time_form",
+        custom_error_message="time needs either 'rpm' or a 'table' of seconds",
+    ),
+]
