@@ -7,6 +7,7 @@ vector-loop method.
 >>> results.to_frame()                                           # doctest: +SKIP
 """
 
+from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.errors import MechloopError, ModelError, ModelFileError, Problem, SolveError
 from mechloop.model.load import load_model, save_model
 from mechloop.model.schema import (
@@ -30,6 +31,7 @@ __all__ = [
     "ArgumentRole",
     "ChainBreak",
     "Contour",
+    "DynamicResults",
     "LawArgument",
     "LinkRole",
     "MechloopError",
@@ -47,4 +49,5 @@ __all__ = [
     "load_model",
     "save_model",
     "solve",
+    "solve_dynamics",
 ]

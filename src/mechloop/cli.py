@@ -13,19 +13,22 @@ from functools import wraps
 from pathlib import Path
 from typing import Annotated, Any
 
+import numpy as np
 import typer
 from rich.console import Console
 from rich.table import Table
 
-from mechloop.errors import MechloopError
+from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
+from mechloop.errors import MechloopError, ModelError, Problem
 from mechloop.model.formula import describe_structure
-from mechloop.model.load import atomic_write_bytes, atomic_write_text, load_model
+from mechloop.model.load import atomic_write_bytes, atomic_write_text, load_model, locate
 from mechloop.model.schema import model_json_schema
 from mechloop.solve.kinematics import solve as solve_model
+from mechloop.solve.results import compress_positions
 
 app = typer.Typer(
     name="mechloop",
-    help="Kinematic analysis of mechanisms by the modular vector-loop method.",
+    help="Kinematic and dynamic analysis of mechanisms by the modular vector-loop method.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -60,8 +63,21 @@ def check(model: ModelPath) -> None:
     """
     m = load_model(model)
     n_vec = len(m.vectors)
-    out.print(f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
-              f"{len(m.arguments)} argument(s), positions 0..{m.positions}")
+    text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
+            f"{len(m.arguments)} argument(s), positions 0..{m.positions}")
+    if m.bodies:
+        mech = _dynamics(m, model).mechanism
+        text += (f"; {len(mech.bodies)} moving bodies, {len(mech.pairs)} pairs "
+                 f"({', '.join(p.name for p in mech.pairs)}), {len(mech.drives)} drive(s)")
+    out.print(text)
+
+
+def _dynamics(m, path: Path) -> DynamicResults:
+    """Solve the dynamics of a loaded model; model problems name the file and line."""
+    try:
+        return solve_dynamics(m)
+    except ModelError as exc:
+        raise locate(exc, path) from None
 
 
 @app.command()
@@ -87,7 +103,9 @@ def solve(
         "-o", "--output", help="write the table here: .csv, .json or .xlsx (default: print "
         "a summary only)")] = None,
 ) -> None:
-    """Solve positions, velocities and accelerations at every position.
+    """Solve positions, velocities and accelerations at every position; for a model with
+    bodies also the balancing load, reduced characteristics, centres of mass and the
+    reaction in every joint.
 
     Example: mechloop solve examples/crank_slider.yaml -o results.csv
     """
@@ -96,8 +114,19 @@ def solve(
                   f"'{output.suffix}'\n    fix: use a file name ending in .csv, .json or .xlsx")
         raise typer.Exit(code=2)
     m = load_model(model)
-    results = solve_model(m)
-    frame = results.to_frame()
+    if m.bodies:
+        dynamic = _dynamics(m, model)
+        results, frame = dynamic.kinematics, dynamic.to_frame()
+        if dynamic.static:
+            err.print("[yellow]note:[/] the model has no time: the force analysis is static "
+                      "(no inertia loads)")
+        if dynamic.forces.singular.any():
+            err.print("[yellow]force analysis singular[/] at positions "
+                      f"{compress_positions(np.flatnonzero(dynamic.forces.singular))}: "
+                      "reactions are unbounded there (empty values)")
+    else:
+        results = solve_model(m)
+        frame = results.to_frame()
     for brk in results.breaks:
         err.print(f"[yellow]chain break:[/] {brk.describe()} — check the kinematic chain "
                   "for a break (dimensions, variant, argument range)")
@@ -124,6 +153,43 @@ def _write_frame(frame, output: Path) -> None:
         buffer = io.BytesIO()
         frame.to_excel(buffer, index=False, sheet_name="results")
         atomic_write_bytes(output, buffer.getvalue())
+
+
+@app.command()
+@user_errors
+def energy(model: ModelPath) -> None:
+    """Print the summary characteristics of a cycle: work and power of every load and of
+    friction, the mechanical loss coefficient and the efficiency.
+
+    Example: mechloop energy examples/crank_slider_dynamics.yaml
+    """
+    m = load_model(model)
+    if not m.bodies:
+        raise ModelError([Problem(("bodies",), "the model has no bodies, so no loads",
+                                  "add bodies with masses, and forces or moments")],
+                         str(model))
+    dynamic = _dynamics(m, model)
+    summary = dynamic.summary
+    clock = "s" if not dynamic.static else "argument 1"
+    table = Table(title=f"Summary characteristics — {m.name or model}")
+    for head in ("load", "A+ [J]", "A- [J]", "max N [W]", "min N [W]", "mean N [W]",
+                 "N per kg [W/kg]"):
+        table.add_column(head, justify="left" if head == "load" else "right", no_wrap=True)
+    for row in summary.rows:
+        table.add_row(row.name, *(f"{v:.5g}" for v in (
+            row.positive_work, row.negative_work, row.max_power, row.min_power,
+            row.mean_power, row.specific_power)))
+    Console(highlight=False, width=max(out.width, 110)).print(table)
+    out.print(f"total mass {dynamic.mechanism.total_mass:.6g} kg; work over the cycle "
+              f"({clock}): driving {summary.driving_work:.6g} J, friction "
+              f"{summary.friction_work:.6g} J, change of kinetic energy "
+              f"{summary.kinetic_energy_change:.6g} J")
+    if np.isnan(summary.efficiency):
+        out.print("no load does net positive work over the cycle: loss coefficient and "
+                  "efficiency are undefined")
+    else:
+        out.print(f"mechanical loss coefficient {100 * summary.loss_coefficient:.4g} %, "
+                  f"efficiency {100 * summary.efficiency:.4g} %")
 
 
 @app.command()

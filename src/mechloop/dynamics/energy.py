@@ -56,6 +56,11 @@ def _extreme(values: Array, how) -> float:
     return float(how(finite)) if finite.size else float("nan")
 
 
+def _clean(value: float, tiny: float) -> float:
+    """Rounding noise (below ``tiny``) shown as zero, and no negative zero."""
+    return 0.0 if abs(value) <= tiny else value
+
+
 @dataclass(frozen=True)
 class PowerRow:
     """One line of the summary table (SI: J, W, W/kg)."""
@@ -110,7 +115,14 @@ def summarize(powers: dict[str, Array], friction_loss: Array, clock: Array,
                          _extreme(-friction_loss, np.min), mean,
                          mean / total_mass if total_mass > 0 else float("nan")))
     # a machine whose loads only exchange energy over the cycle has no driving work
-    psi = friction_work / driving if driving > NO_WORK_RTOL * scale else float("nan")
+    tiny = NO_WORK_RTOL * scale
+    rows = [PowerRow(r.name, *(_clean(v, tiny) for v in (
+        r.positive_work, r.negative_work, r.max_power, r.min_power, r.mean_power)),
+        _clean(r.specific_power, tiny / total_mass if total_mass > 0 else 0.0))
+        for r in rows]
+    driving, friction_work = _clean(driving, tiny), _clean(friction_work, tiny)
+    psi = friction_work / driving if driving > 0 else float("nan")
     ke = kinetic_energy[np.isfinite(kinetic_energy)]
-    change = float(ke[-1] - ke[0]) if ke.size else 0.0
-    return Summary(tuple(rows), driving, friction_work, psi, 1.0 - psi, change)
+    change = _clean(float(ke[-1] - ke[0]), tiny) if ke.size else 0.0
+    efficiency = _clean(1.0 - psi, NO_WORK_RTOL)
+    return Summary(tuple(rows), driving, friction_work, psi, efficiency, change)

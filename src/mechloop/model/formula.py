@@ -61,7 +61,8 @@ def describe_structure(model: Model) -> str:
     if model.time is None:
         lines.append("time: none — derivatives are analogs with respect to argument 1")
     elif hasattr(model.time, "rpm"):
-        lines.append(f"time: {model.time.rpm:g} rpm over positions 0..{model.positions}")
+        turns = "" if model.time.turns == 1 else f", {model.time.turns:g} turns"
+        lines.append(f"time: {model.time.rpm:g} rpm{turns} over positions 0..{model.positions}")
     else:
         lines.append(f"time: table over positions 0..{model.positions}")
     for number, arg in sorted(model.arguments.items()):

@@ -224,6 +224,14 @@ def load_model(path: str | os.PathLike[str]) -> Model:
     return model_from_data(data, file=str(path), lines=lines)
 
 
+def locate(error: ModelError, path: str | os.PathLike[str]) -> ModelError:
+    """``error`` (raised for a model after it was loaded, e.g. by the dynamics) with the
+    file and lines of the model file at ``path``."""
+    _, lines = read_document(path)
+    return ModelError([Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
+                       for p in error.problems], str(path))
+
+
 def model_to_data(model: Model) -> dict[str, Any]:
     """Plain data of a model, ready for YAML or JSON (defaults left out)."""
     return model.model_dump(mode="json", exclude_defaults=True)

@@ -93,9 +93,12 @@ Argument = Annotated[
 
 
 class RpmTime(_Frozen):
-    """Model time from a speed: one full turn over positions ``0..N``, ``t = 60/n·k/N``."""
+    """Model time from a speed: ``turns`` full turns (default one) over positions ``0..N``,
+    ``t = 60·turns/n · k/N``."""
 
     rpm: float = Field(gt=0, description="speed of the input, revolutions per minute")
+    turns: float = Field(1.0, gt=0, description="turns of the input over positions 0..N "
+                         "(2 for a four-stroke cycle over 720 degrees)")
 
 
 class TableTime(_Frozen):

@@ -70,7 +70,7 @@ def model_time(model: Model) -> Signal | None:
     if model.time is None:
         return None
     if isinstance(model.time, RpmTime):
-        step = 60.0 / model.time.rpm / n
+        step = 60.0 * model.time.turns / model.time.rpm / n
         return Signal(k * step, np.full(k.shape, step), np.zeros(k.shape))
     t = fill_table(model.time.table, n)
     dt, ddt = _position_derivatives(t, model.time.derivatives)
