@@ -159,7 +159,8 @@ def _write_frame(frame, output: Path) -> None:
 @user_errors
 def energy(model: ModelPath) -> None:
     """Print the summary characteristics of a cycle: work and power of every load and of
-    friction, the mechanical loss coefficient and the efficiency.
+    friction, the mechanical loss coefficient and the efficiency; and the machine motion
+    and flywheel when the model has a machine: section.
 
     Example: mechloop energy examples/crank_slider_dynamics.yaml
     """
@@ -190,6 +191,21 @@ def energy(model: ModelPath) -> None:
     else:
         out.print(f"mechanical loss coefficient {100 * summary.loss_coefficient:.4g} %, "
                   f"efficiency {100 * summary.efficiency:.4g} %")
+    cycle = dynamic.cycle
+    if cycle is not None:
+        angle = dynamic.kinematics.argument_kinds[
+            dynamic.mechanism.drives[0].argument] == "angle"
+        unit, speed, mass = ("N*m", "rad/s", "kg*m^2") if angle else ("N", "m/s", "kg")
+        out.print(f"machine motion: mean speed {cycle.omega_mean:.6g} {speed}; constant "
+                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}; "
+                  f"without a flywheel δ = {cycle.motion.delta:.4g} "
+                  f"(speed {cycle.motion.omega_min:.6g} … {cycle.motion.omega_max:.6g} "
+                  f"{speed})")
+        if cycle.flywheel is not None:
+            out.print(f"flywheel for δ = {cycle.delta:.4g}: {cycle.flywheel:.6g} {mass} "
+                      f"(approximate method: {cycle.flywheel_approx:.6g} {mass}); speed "
+                      f"{cycle.with_flywheel.omega_min:.6g} … "
+                      f"{cycle.with_flywheel.omega_max:.6g} {speed}")
 
 
 @app.command()

@@ -13,12 +13,14 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
+from mechloop.dynamics.cycle import Cycle, steady_cycle
 from mechloop.dynamics.energy import Summary, summarize
 from mechloop.dynamics.kinetostatics import ForceAnalysis, body_motions, kinetostatics
 from mechloop.dynamics.loads import Loads, build_loads
 from mechloop.dynamics.mechanism import Mechanism, build_mechanism
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.dynamics.reduced import Reduced, balancing_by_virtual_power, reduced
+from mechloop.errors import ModelError, Problem
 from mechloop.model.schema import Model
 from mechloop.solve.inputs import model_time
 from mechloop.solve.kinematics import solve
@@ -35,8 +37,9 @@ class DynamicResults:
     balancing load of each drive by virtual power (friction power included for a
     one-input machine); ``reduced``: reduced characteristics to the input (one-input
     machines only, else None); ``centers``: every centre of mass, and ``center`` the
-    common one; ``summary``: power and work over the cycle.  Without model time the
-    analysis is static (no inertia loads).
+    common one; ``summary``: power and work over the cycle; ``cycle``: the machine
+    motion and flywheel when the model asks for them (``machine:``).  Without model time
+    the analysis is static (no inertia loads).
     """
 
     kinematics: Results
@@ -52,6 +55,7 @@ class DynamicResults:
     powers: dict[str, Array]
     summary: Summary
     static: bool
+    cycle: Cycle | None = None
 
     def balancing_name(self, argument: int) -> tuple[str, str]:
         """Column stem and unit of the balancing load of ``argument``."""
@@ -96,6 +100,15 @@ class DynamicResults:
                 cols[f"R{name}_to_a{v} [deg]"] = np.degrees(np.angle(np.exp(1j * angle)))
         cols["friction_loss [W]"] = self.forces.friction_loss
         cols["T [J]"] = self.kinetic_energy
+        if self.cycle is not None:
+            linear = self.reduced is not None and self.kinematics.argument_kinds[
+                self.mechanism.drives[0].argument] == "length"
+            speed, accel = ("m/s", "m/s^2") if linear else ("rad/s", "rad/s^2")
+            cols[f"omega [{speed}]"] = self.cycle.motion.omega
+            cols[f"epsilon [{accel}]"] = self.cycle.motion.epsilon
+            if self.cycle.with_flywheel is not None:
+                cols[f"omega_fw [{speed}]"] = self.cycle.with_flywheel.omega
+                cols[f"epsilon_fw [{accel}]"] = self.cycle.with_flywheel.epsilon
         extra = pd.DataFrame(cols)
         return pd.concat([frame.drop(columns="chain_break"), extra,
                           frame[["chain_break"]]], axis=1)
@@ -197,8 +210,19 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
         powers[stem] = forces.balancing[drive.argument] * _argument_rate(kin, drive.argument)
     clock = time.value if time is not None else kin.arguments[min(kin.arguments)]
     summary = summarize(powers, forces.friction_loss, clock, total, kinetic)
+    cycle = None
+    if model.machine is not None:
+        if red is None or time is None:
+            raise ModelError([Problem(("machine",), "machine motion needs one input and a "
+                                      f"model time (the model has {len(mechanism.drives)} "
+                                      f"drive(s) and {'no' if time is None else 'a'} time)",
+                                      "remove machine:, or drive the machine by one "
+                                      "argument and give time: {rpm: ...}")])
+        k = mechanism.drives[0].argument
+        cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
+                             _argument_rate(kin, k), model.machine)
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
-                          centers, center, kinetic, powers, summary, static)
+                          centers, center, kinetic, powers, summary, static, cycle)
 
 
 def _argument_rate(results: Results, k: int) -> Array:

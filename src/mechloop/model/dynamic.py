@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import Discriminator, Field, Tag, model_validator
+from pydantic import BaseModel, Discriminator, Field, Tag, model_validator
 
 from mechloop.model.signals import Argument, Scalar, _Frozen
 
@@ -142,7 +142,7 @@ def _value_tag(value: Any) -> str | None:
         return None
     if isinstance(value, int | float | str):
         return "constant"
-    if isinstance(value, dict) or hasattr(value, "model_fields"):
+    if isinstance(value, dict | BaseModel):
         return "signal"
     return None
 
@@ -187,3 +187,17 @@ class Gravity(_Frozen):
     g: Scalar = Field(9.81, description="acceleration of gravity (acceleration units)")
     angle: Scalar = Field("-90 deg", description="direction of gravity from +X (angle "
                           "units)")
+
+
+class Machine(_Frozen):
+    """Machine motion (the second sheet of the course project): the steady motion of a
+    one-input machine over its cycle (positions 0..N = one cycle) under its reduced loads
+    plus a constant moment (force) on the input that makes the cycle's net work zero — the
+    resistance of an engine's consumer, or the mean torque of a motor — and the flywheel
+    for a coefficient of speed fluctuation ``delta``."""
+
+    delta: float | None = Field(None, gt=0, lt=2, description="wanted coefficient of speed "
+                                "fluctuation (ω_max − ω_min)/ω_mean; the flywheel is sized "
+                                "for it")
+    friction: bool = Field(True, description="include the friction losses found by the "
+                           "force analysis at the nominal speed")

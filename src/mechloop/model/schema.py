@@ -27,6 +27,7 @@ from mechloop.model.dynamic import (
     Gravity,
     HeadPoint,
     Joint,
+    Machine,
     Moment,
     TailPoint,
 )
@@ -172,6 +173,8 @@ class Model(_Frozen):
     moments: list[Moment] = Field(default_factory=list, description="external moments")
     gravity: Gravity | None = Field(None, description="gravity (off when absent)")
     friction: Friction = Field(Friction(), description="friction defaults for every joint")
+    machine: Machine | None = Field(None, description="machine motion and flywheel sizing "
+                                    "(one-input machines)")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:
