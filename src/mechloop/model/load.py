@@ -21,6 +21,7 @@ from pydantic import ValidationError
 from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
 from mechloop.model.schema import Model
+from mechloop.model.signals import read_csv_table
 
 LineMap = dict[tuple[Any, ...], int]
 
@@ -187,6 +188,11 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     if not isinstance(data, dict):
         raise ModelFileError([Problem((), "a model is a mapping of keys",
                                       "see examples/crank_slider.yaml")], file)
+    base = Path(file).resolve().parent if file else Path.cwd()
+    data, csv_problems = _import_csv_tables(data, base)
+    if csv_problems:
+        raise ModelError([Problem(p.path, p.message, p.hint, _locate(p.path, lines))
+                          for p in csv_problems], file)
     try:
         model = Model.model_validate(data)
     except ValidationError as exc:
@@ -201,6 +207,36 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
         located = [Problem(p.path, p.message, p.hint, _locate(p.path, lines)) for p in problems]
         raise ModelError(located, file)
     return model
+
+
+def _import_csv_tables(data: dict[str, Any], base: Path
+                       ) -> tuple[dict[str, Any], list[Problem]]:
+    """Replace every ``{csv: ...}`` table (arguments, time, load values) by the table it
+    holds; the files are read relative to ``base``."""
+    problems: list[Problem] = []
+
+    def convert(value: Any, path: tuple) -> Any:
+        if not (isinstance(value, dict) and "csv" in value):
+            return value
+        try:
+            return read_csv_table(value, base)
+        except ValueError as exc:
+            message, hint = exc.args if len(exc.args) == 2 else (str(exc), "")
+            problems.append(Problem(path, message, hint))
+            return value
+
+    data = dict(data)
+    if isinstance(data.get("arguments"), dict):
+        data["arguments"] = {k: convert(v, ("arguments", k))
+                             for k, v in data["arguments"].items()}
+    if "time" in data:
+        data["time"] = convert(data["time"], ("time",))
+    for key in ("forces", "moments"):
+        if isinstance(data.get(key), list):
+            data[key] = [dict(item, value=convert(item["value"], (key, i, "value")))
+                         if isinstance(item, dict) and "value" in item else item
+                         for i, item in enumerate(data[key])]
+    return data, problems
 
 
 def _dedupe(problems: list[Problem]) -> list[Problem]:

@@ -4,6 +4,7 @@ KDAM's rules), motion laws, and the model time.  Shared by model arguments and b
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
@@ -73,7 +74,21 @@ class LawArgument(_Frozen):
     unit: str | None = Field(None, description="unit of the values (default: model unit)")
 
 
+class CsvTable(_Frozen):
+    """A table read from a CSV file when the model is loaded: the first column holds
+    position numbers, ``column`` (a header name, or a 0-based column index) the values; the
+    positions may be sparse and are filled like any table.  The path is relative to the
+    model file."""
+
+    csv: str = Field(description="CSV file, relative to the model file")
+    column: str | int = Field(1, description="column of the values: header or index")
+    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    derivatives: TableDerivatives = Field("linear", description="as for a table")
+
+
 def _argument_tag(value: Any) -> str | None:
+    if isinstance(value, CsvTable) or (isinstance(value, dict) and "csv" in value):
+        return "csv"
     if isinstance(value, TableArgument) or (isinstance(value, dict) and "table" in value):
         return "table"
     if isinstance(value, LawArgument) or (isinstance(value, dict) and "law" in value):
@@ -82,12 +97,13 @@ def _argument_tag(value: Any) -> str | None:
 
 
 Argument = Annotated[
-    Annotated[TableArgument, Tag("table")] | Annotated[LawArgument, Tag("law")],
+    Annotated[TableArgument, Tag("table")] | Annotated[LawArgument, Tag("law")]
+    | Annotated[CsvTable, Tag("csv")],
     Discriminator(
         _argument_tag,
         custom_error_type="argument_form",
-        custom_error_message="an argument needs either a 'table' or a 'law' with 'start' and "
-        "'end'",
+        custom_error_message="an argument needs a 'table', a 'law' with 'start' and 'end', "
+        "or a 'csv' file",
     ),
 ]
 
@@ -126,3 +142,45 @@ Time = Annotated[
         custom_error_message="time needs either 'rpm' or a 'table' of seconds",
     ),
 ]
+
+
+def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
+    """The table form of a ``{csv: ...}`` spec (``{table: {position: value}, ...}``).
+
+    Raises ``ValueError`` with a message and a hint (``args = (message, hint)``).
+    """
+    import pandas as pd
+
+    path = Path(str(spec["csv"]))
+    path = path if path.is_absolute() else base / path
+    try:
+        frame = pd.read_csv(path)
+    except FileNotFoundError:
+        raise ValueError(f"CSV file {path} not found",
+                         "give the path relative to the model file") from None
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
+        raise ValueError(f"cannot read {path} as CSV ({exc})",
+                         "write a header line, then position,value rows") from None
+    column = spec.get("column", 1)
+    if isinstance(column, int):
+        if not 0 < column < len(frame.columns):
+            raise ValueError(f"{path} has no value column {column}",
+                             f"use 1..{len(frame.columns) - 1} or a header name")
+        values = frame.iloc[:, column]
+    elif column in frame.columns:
+        values = frame[column]
+    else:
+        raise ValueError(f"{path} has no column {column!r}",
+                         f"use one of {', '.join(map(str, frame.columns[1:]))}")
+    positions = pd.to_numeric(frame.iloc[:, 0], errors="coerce")
+    values = pd.to_numeric(values, errors="coerce")
+    bad = positions.isna() | values.isna() | (positions != positions.round())
+    if bad.any():
+        row = int(bad.to_numpy().nonzero()[0][0]) + 2  # 1-based, after the header
+        raise ValueError(f"{path}, line {row}: not a position number and a value",
+                         "every row is an integer position and a number")
+    table = {int(k): float(v) for k, v in zip(positions, values, strict=True)}
+    out: dict[str, Any] = {"table": table, "derivatives": spec.get("derivatives", "linear")}
+    if spec.get("unit") is not None:
+        out["unit"] = spec["unit"]
+    return out

@@ -14,6 +14,7 @@ the model has a time, otherwise with respect to argument 1 ("analogs", DESIGN §
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
@@ -23,6 +24,7 @@ from mechloop.errors import SolveError
 from mechloop.model.check import argument_kind
 from mechloop.model.laws import evaluate_law
 from mechloop.model.schema import LawArgument, Model, RpmTime, TableArgument
+from mechloop.model.signals import CsvTable, read_csv_table
 from mechloop.model.tables import fill_table
 from mechloop.model.units import Kind, to_si
 
@@ -77,12 +79,14 @@ def model_time(model: Model) -> Signal | None:
     return Signal(t, dt, ddt)
 
 
-def evaluate_signal(spec: TableArgument | LawArgument, model: Model, kind: Kind, unit: str,
-                    time: Signal | None) -> Signal:
+def evaluate_signal(spec: TableArgument | LawArgument | CsvTable, model: Model, kind: Kind,
+                    unit: str, time: Signal | None) -> Signal:
     """A table or law of the model (an argument, a load) in SI over all positions, with its
     derivatives with respect to the model clock: time when the model has one, else the
     position number."""
     n = model.positions
+    if isinstance(spec, CsvTable):  # built in code: load_model reads these when loading
+        spec = TableArgument(**read_csv_table(spec.model_dump(), Path.cwd()))
     if isinstance(spec, LawArgument):
         (k0, v0), (k1, v1) = spec.start, spec.end
         q0, q1 = to_si(v0, kind, unit), to_si(v1, kind, unit)
