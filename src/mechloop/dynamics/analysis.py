@@ -131,10 +131,16 @@ def _vectors_at(results: DynamicResults, pair) -> list[int]:
             head = placement_tail + results.kinematics.value(f"r{v}") * np.exp(
                 1j * results.kinematics.value(f"a{v}"))
             scale = max(float(np.nanmax(np.abs(z), initial=0.0)), 1.0)
-            if (np.nanmax(np.abs(placement_tail - z), initial=np.inf) <= 1e-9 * scale
-                    or np.nanmax(np.abs(head - z), initial=np.inf) <= 1e-9 * scale):
+            if _same_point(placement_tail, z, scale) or _same_point(head, z, scale):
                 out.append(v)
     return out
+
+
+def _same_point(a, b, scale: float) -> bool:
+    """Whether two points coincide at every position where both are known."""
+    gap = np.abs(a - b)
+    gap = gap[np.isfinite(gap)]
+    return bool(gap.size) and float(gap.max()) <= 1e-9 * scale
 
 
 def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:

@@ -248,7 +248,10 @@ def _frames(model, placement, holds, problems) -> dict[int, BodyFrame]:
                     f"the {end} of vector {v} is not fixed in body {number}: it moves "
                     "relative to the body's other points",
                     "a vector of varying length has only one end in a body: name it in "
-                    f"ends (ends: {{{v}: tail}} or head)"))
+                    f"ends (ends: {{{v}: tail}} or head)" if f"r{v}" not in results.constant
+                    else "the body's vectors lie in different contours that are not placed "
+                    "where they are: give the later contour start: {tail: K} (a vector end "
+                    "it shares with an earlier contour) or fixed coordinates [x, y]"))
     return frames
 
 
@@ -388,7 +391,7 @@ def _inferred_pairs(model, placement, holds, member, scale, problems) -> list[Pa
         if len(tail) == 1 and len(head) == 1 and tail != head:
             (bt,), (bh,) = tail, head
             first, second = sorted((bt, bh))
-            at = TailPoint(tail=v) if second == bt else HeadPoint(head=v)
+            at = TailPoint(tail=v)
             f, r, b = _friction(model, None, "prismatic", ("friction",), problems)
             pairs.append(Pair(f"J{first}_{second}", "prismatic", (first, second), at, v,
                               f, r, b, inferred=True))
@@ -478,10 +481,24 @@ def _masses(model: Model, results, problems) -> list[Mass]:
                                         f"place it on one of {body.vectors}"))
                 continue
             sliding = f"r{v}" not in results.constant
+            held = body.ends.get(v, "tail")
             if sliding and isinstance(center, VectorPoint) and center.share:
                 problems.append(Problem((*where, "center"), f"vector {v} changes length, so "
                                         "a share of it is not a fixed point of the body",
                                         "place the centre with along/across from the tail"))
+                continue
+            if sliding and held == "head" and not isinstance(center, HeadPoint):
+                problems.append(Problem((*where, "center"), f"body {number} holds the head of "
+                                        f"vector {v}, which changes length, so a point "
+                                        "placed from its tail moves in the body",
+                                        f"put the centre at {{head: {v}}}, or on a vector of "
+                                        "constant length"))
+                continue
+            if sliding and held == "tail" and isinstance(center, HeadPoint):
+                problems.append(Problem((*where, "center"), f"body {number} holds the tail of "
+                                        f"vector {v}, which changes length, so its head moves "
+                                        "in the body", f"put the centre at {{tail: {v}}} or "
+                                        "along/across from it"))
                 continue
             if inertia == "rod":
                 if sliding:

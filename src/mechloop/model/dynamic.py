@@ -109,8 +109,8 @@ class Joint(_Frozen):
 
     ``revolute``: a pin at point ``at``; friction is a moment ``f·radius·|R|`` against the
     relative rotation.  ``prismatic``: a slide along vector ``along``; its reaction is a
-    normal force and a moment about point ``at`` (default: the end of ``along`` fixed in
-    the second body); friction is a force ``f·max(|N|, 2|M|/length)`` against the relative
+    normal force and a moment about point ``at`` (default: the tail of ``along``, where a
+    slider's vector starts); friction is a force ``f·max(|N|, 2|M|/length)`` against the relative
     sliding (a slider of ``length`` loaded at its two edges).
     """
 
