@@ -176,6 +176,8 @@ def build_mechanism(model: Model, placement: Placement) -> Mechanism:
 
     if model.joints is not None:
         pairs = _given_pairs(model, problems)
+        if not problems:
+            _check_given_pairs(pairs, frames, placement, scale, problems)
     else:
         pairs = _inferred_pairs(model, placement, holds, member, scale, problems)
     drives = _drives(model, holds, member, problems)
@@ -222,6 +224,7 @@ def _frames(model, placement, holds, problems) -> dict[int, BodyFrame]:
         first = body.vectors[0]
         for i, v in enumerate(body.vectors[1:], start=1):
             diff = results.value(f"a{v}")[ok] - results.value(f"a{first}")[ok]
+            diff = np.angle(np.exp(1j * (diff - diff[:1]))) if diff.size else diff
             if diff.size and np.ptp(diff) > 1e-9:
                 problems.append(Problem(
                     (*path, "vectors", i),
@@ -284,6 +287,59 @@ def _fixed_in(point: Motion, body: int, frames, placement, scale) -> bool:
     v, end = frame.held[0]
     ref = placement.tail(v) if end == "tail" else placement.head(v)
     return _rigid(point, ref, placement.results.value(f"a{frame.angle_vector}"), ok, scale)
+
+
+def _check_given_pairs(pairs: list[Pair], frames, placement: Placement, scale: float,
+                       problems: list[Problem]) -> None:
+    """A named pin must be a point of both its bodies; a named slide must let its bodies
+    only translate relative to each other along its vector."""
+    res = placement.results
+    ok = ~res.broken
+    for pair in pairs:
+        path = ("joints", pair.name)
+        point = placement.point(pair.at)
+        if pair.kind == "revolute":
+            for b in pair.bodies:
+                if not _fixed_in(point, b, frames, placement, scale):
+                    problems.append(Problem(
+                        (*path, "at"), f"the pin of joint {pair.name} is not a point of "
+                        f"body {b}: it moves relative to the body",
+                        "place the pin at a vector end that both bodies hold (the tail or "
+                        "head of one of their vectors)"))
+            continue
+        direction = res.value(f"a{pair.along}")[ok]
+        for b in pair.bodies:
+            body_angle = 0.0 if b == 0 else res.value(f"a{frames[b].angle_vector}")[ok]
+            turn = np.angle(np.exp(1j * (direction - body_angle)))
+            if turn.size and np.ptp(np.unwrap(turn)) > 1e-9:
+                problems.append(Problem(
+                    (*path, "along"), f"vector {pair.along} turns relative to body {b}, so "
+                    f"joint {pair.name} cannot slide along it",
+                    "slide along a vector whose direction is fixed in both bodies (the guide)"))
+                break
+        else:
+            first, second = pair.bodies
+            gap = (_velocity_at(point, second, frames, placement)
+                   - _velocity_at(point, first, frames, placement))[ok]
+            e = np.exp(1j * direction)
+            across = (np.conj(e) * gap).imag
+            speed = max(float(np.abs(gap).max(initial=0.0)), 1e-300)
+            if np.abs(across).max(initial=0.0) > 1e-6 * speed:
+                problems.append(Problem(
+                    (*path, "along"), f"the bodies of joint {pair.name} do not slide along "
+                    f"vector {pair.along}: their relative motion has a component across it",
+                    "slide along the vector that runs along the guide"))
+
+
+def _velocity_at(point: Motion, body: int, frames, placement: Placement):
+    """Velocity of the point of ``body`` that is at ``point`` (zero for the ground)."""
+    if body == 0:
+        return np.zeros_like(point.z)
+    frame = frames[body]
+    v, end = frame.held[0]
+    ref = placement.tail(v) if end == "tail" else placement.head(v)
+    omega = placement.results.rate(f"a{frame.angle_vector}")
+    return ref.v + 1j * omega * (point.z - ref.z)
 
 
 def _friction(model: Model, joint: Joint | None, kind: str, path, problems
