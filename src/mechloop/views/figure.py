@@ -1,0 +1,48 @@
+"""Figures: creation without pyplot's global state, and atomic saving by file type."""
+
+from __future__ import annotations
+
+import io
+import os
+from pathlib import Path
+
+from matplotlib.figure import Figure
+
+from mechloop.errors import MechloopError
+
+#: File types a figure can be saved as.
+FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
+
+
+class ViewError(ValueError, MechloopError):
+    """A view cannot be drawn as asked (an unknown parameter, an unsupported file type)."""
+
+    def __init__(self, message: str, hint: str = ""):
+        self.message, self.hint = message, hint
+        super().__init__(message, hint)
+
+    def __str__(self) -> str:
+        return self.message + (f"\n    fix: {self.hint}" if self.hint else "")
+
+    def __reduce__(self):
+        return (type(self), (self.message, self.hint))
+
+
+def new_figure(width: float = 8.0, height: float = 6.0) -> Figure:
+    """A figure that belongs to no pyplot window (safe headless and in threads)."""
+    return Figure(figsize=(width, height), layout="constrained")
+
+
+def save_figure(figure: Figure, path: str | os.PathLike[str], *, dpi: int = 150) -> Path:
+    """Write ``figure`` as PNG, SVG or PDF (by the suffix of ``path``), atomically."""
+    from mechloop.model.load import atomic_write_bytes
+
+    target = Path(path)
+    suffix = target.suffix.lower()
+    if suffix not in FIGURE_SUFFIXES:
+        raise ViewError(f"{target}: cannot save a figure as '{suffix or 'no suffix'}'",
+                        "use a file name ending in .png, .svg or .pdf")
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format=suffix[1:], dpi=dpi)
+    atomic_write_bytes(target, buffer.getvalue())
+    return target
