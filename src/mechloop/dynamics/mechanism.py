@@ -23,7 +23,7 @@ asks for ``joints``.  Inferred joints are named ``J<first>_<second>`` (``J0_1``)
 from __future__ import annotations
 
 from collections import defaultdict
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -99,7 +99,6 @@ class Mechanism:
     pairs: tuple[Pair, ...]
     drives: tuple[Drive, ...]
     total_mass: float
-    notes: tuple[str, ...] = field(default_factory=tuple)
 
 
 def _si(value, kind, unit, path, problems) -> float:
