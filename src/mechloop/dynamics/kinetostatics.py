@@ -212,11 +212,7 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
     safe = ok.copy()
     matrix[~safe] = np.eye(size)
     rhs[~safe] = 0.0
-    with np.errstate(invalid="ignore", over="ignore"):
-        cond = np.linalg.cond(matrix)
-    singular = safe & ~(cond < SINGULAR_COND)
-    matrix[singular] = np.eye(size)
-    inverse = np.linalg.inv(matrix)
+    inverse, singular = _invert(matrix, safe)
 
     def solve(b: Array) -> Array:
         return np.einsum("pij,pj->pi", inverse, b)
@@ -289,6 +285,28 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
         c += 2
     balancing = {k: x[:, c] for k, c in drive_cols.items()}
     return ForceAnalysis(reactions, balancing, singular, iterations)
+
+
+def _invert(matrix: Array, safe: NDArray[np.bool_]) -> tuple[Array, NDArray[np.bool_]]:
+    """Inverses of a stack of matrices ``(P, K, K)`` and the mask of the singular ones
+    (condition number in the ∞-norm above :data:`SINGULAR_COND`), replaced by identities
+    before inverting.  The exact SVD condition number is used only when some matrix is
+    exactly singular."""
+    try:
+        with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+            inverse = np.linalg.inv(matrix)
+            cond = (np.abs(matrix).sum(axis=2).max(axis=1)
+                    * np.abs(inverse).sum(axis=2).max(axis=1))
+    except np.linalg.LinAlgError:
+        with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+            cond = np.linalg.cond(matrix)
+        inverse = None
+    singular = safe & ~(cond < SINGULAR_COND)
+    if singular.any() or inverse is None:
+        matrix = matrix.copy()
+        matrix[singular] = np.eye(matrix.shape[-1])
+        inverse = np.linalg.inv(matrix)
+    return inverse, singular
 
 
 def _nan(values: Array, bad: NDArray[np.bool_]) -> Array:
