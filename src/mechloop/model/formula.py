@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from mechloop.model.check import argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model
-from mechloop.model.structure import MODULE_SOLUTIONS, is_function, param_role
+from mechloop.model.structure import MODULE_SOLUTIONS, ContourInfo, is_function, param_role
 
 
 def symbol(name: str) -> str:
@@ -51,6 +51,15 @@ def role_text(model: Model, name: str) -> str:
     return _fmt(role, unit)
 
 
+def parametric_formula(model: Model, info: ContourInfo) -> str:
+    """``'α1 (arg 1) → r3, α2 · Pl3, V=1'`` — the parametric formula of one contour."""
+    inputs = [f"{symbol(p)} ({role_text(model, p)})" for p in info.arguments]
+    inputs += [symbol(p) for p in info.links]
+    lhs = ", ".join(inputs) if inputs else "constants only"
+    variant = info.variant if MODULE_SOLUTIONS[info.module] > 1 else 1
+    return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {info.module}, V={variant}"
+
+
 def describe_structure(model: Model) -> str:
     """Multi-line description of the model's structure, contour by contour."""
     structure = require_valid(model)
@@ -85,13 +94,8 @@ def describe_structure(model: Model) -> str:
         if link_terms:
             structure_formula += "; links: " + ", ".join(link_terms)
         lines.append(f"  structure formula:  {structure_formula}")
-        inputs = [f"{symbol(p)} ({role_text(model, p)})" for p in info.arguments]
-        inputs += [symbol(p) for p in info.links]
-        lhs = ", ".join(inputs) if inputs else "constants only"
-        variant = info.variant if MODULE_SOLUTIONS[info.module] > 1 else 1
-        lines.append(f"  parametric formula: {lhs} → "
-                     f"{', '.join(symbol(f) for f in info.functions)} · {info.module}, "
-                     f"V={variant} ({MODULE_SOLUTIONS[info.module]} solution(s))")
+        lines.append(f"  parametric formula: {parametric_formula(model, info)} "
+                     f"({MODULE_SOLUTIONS[info.module]} solution(s))")
         known = [f"{symbol(f'{letter}{n}')}={role_text(model, f'{letter}{n}')}"
                  for n in info.vectors for letter in "ra"
                  if f"{letter}{n}" not in info.functions

@@ -4,4 +4,15 @@ Everything here reads solved results (:class:`~mechloop.solve.results.Results`,
 :class:`~mechloop.dynamics.analysis.DynamicResults`) and draws with matplotlib; it never
 solves or changes a model.  Functions return a ``matplotlib.figure.Figure`` (or write a
 file); :func:`mechloop.views.figure.save_figure` writes PNG, SVG or PDF atomically.
+
+* ``figure`` — figures without pyplot state, atomic saving;
+* ``display`` — display units and precision (KDAM's "units" and "tolerances" panels);
+* ``plan``, ``animation`` — position plans, overlays, trajectories, animations;
+* ``curves`` — parameters, combinations, angle differences, increments;
+* ``dynamics`` — reduced characteristics, balancing loads, reactions, hodographs,
+  the summary table, machine motion;
+* ``formula`` — the structure and parametric formulas drawn;
+* ``report`` — the course-project report (PDF, English and Russian).
+
+May import the model, the solver and the dynamics; nothing imports the views but the CLI.
 """
