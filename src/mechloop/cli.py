@@ -208,6 +208,190 @@ def energy(model: ModelPath) -> None:
                       f"{cycle.with_flywheel.omega_max:.6g} {speed}")
 
 
+PLOTS = ("plan", "overlay", "trajectories", "parameters", "combination", "angle",
+         "increment", "reduced", "balancing", "reactions", "hodograph", "summary", "motion",
+         "structure")
+
+
+def _split(text: str | None) -> list[str]:
+    return [part.strip() for part in (text or "").split(",") if part.strip()]
+
+
+def _point(text: str) -> Any:
+    """'head:6' -> {'head': 6}; 'vector:2:0.3' -> {'vector': 2, 'share': 0.3}; 'S2' as is."""
+    parts = text.split(":")
+    if parts[0] in ("tail", "head") and len(parts) == 2:
+        return {parts[0]: int(parts[1])}
+    if parts[0] == "vector" and len(parts) == 3:
+        return {"vector": int(parts[1]), "share": float(parts[2])}
+    return text
+
+
+@app.command()
+@user_errors
+def plot(
+    model: ModelPath,
+    kind: Annotated[str, typer.Argument(help=f"what to draw: {', '.join(PLOTS)}",
+                                        show_default=False)],
+    output: Annotated[Path, typer.Option("-o", "--output", help="image file: .png, .svg "
+                                         "or .pdf")],
+    position: Annotated[int | None, typer.Option("-p", "--position", help="position for "
+                        "plan, trajectories (default: 0) and increment (reference, default "
+                        "0)")] = None,
+    names: Annotated[str | None, typer.Option("-n", "--names", help="comma-separated: "
+                     "parameters (r3,dr3,M_bal) for parameters/increment; two for "
+                     "combination; two vectors (2,3) for angle")] = None,
+    against: Annotated[str, typer.Option(help="x axis: position, time, arg1, ...")
+                       ] = "position",
+    op: Annotated[str, typer.Option(help="combination: sum, difference, product, ratio, "
+                                    "power")] = "ratio",
+    points: Annotated[str | None, typer.Option(help="trajectories: head:6, tail:2, "
+                      "vector:2:0.3 (a share of vector 2), S2 (centre of mass of body 2)")
+                      ] = None,
+    joint: Annotated[str | None, typer.Option(help="hodograph: the joint name")] = None,
+    polar: Annotated[bool, typer.Option(help="hodograph in polar form")] = False,
+    units: Annotated[str | None, typer.Option(help="display units, e.g. "
+                     "length=mm,angle=deg,force=kN,power=kW (default SI and deg)")] = None,
+) -> None:
+    """Draw one view of a model to an image file.
+
+    Examples:
+      mechloop plot examples/four_bar.yaml plan -p 12 -o plan.png
+      mechloop plot examples/crank_slider.yaml parameters -n r3,dr3 --against arg1 -o s.png
+      mechloop plot examples/crank_slider_dynamics.yaml hodograph --joint A -o hod.svg
+    """
+    from mechloop.views import curves, dynamics, formula
+    from mechloop.views import plan as plans
+    from mechloop.views.display import Display
+    from mechloop.views.figure import ViewError, save_figure
+
+    if kind not in PLOTS:
+        raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
+    m = load_model(model)
+    display = Display(**dict(item.split("=", 1) for item in _split(units)))
+    if kind == "structure":
+        save_figure(formula.plot_structure(m), output)
+        out.print(f"wrote {output}")
+        return
+    results = _dynamics(m, model) if m.bodies else solve_model(m)
+    dynamic_kinds = ("reduced", "balancing", "reactions", "hodograph", "summary", "motion")
+    if kind in dynamic_kinds and not m.bodies:
+        raise ViewError(f"'{kind}' needs a model with bodies",
+                        "add bodies (see examples/crank_slider_dynamics.yaml)")
+    listed = _split(names)
+    if kind == "plan":
+        figure = plans.plot_plan(results, position or 0)
+    elif kind == "overlay":
+        figure = plans.plot_overlay(results)
+    elif kind == "trajectories":
+        figure = plans.plot_trajectories(results, [_point(p) for p in _split(points)],
+                                         position=position or 0)
+    elif kind == "parameters":
+        figure = curves.plot_parameters(results, listed, against=against, display=display)
+    elif kind == "combination":
+        if len(listed) != 2:
+            raise ViewError("a combination needs two names", "give -n r3,r1")
+        b: str | float = listed[1]
+        try:
+            b = float(listed[1])
+        except ValueError:
+            pass
+        figure = curves.plot_combination(results, listed[0], b, op, against=against,
+                                         display=display)
+    elif kind == "angle":
+        if len(listed) != 2:
+            raise ViewError("the angle between two vectors needs two vector numbers",
+                            "give -n 2,3")
+        figure = curves.plot_angle_between(results, *listed, against=against,
+                                           display=display)
+    elif kind == "increment":
+        if len(listed) != 1:
+            raise ViewError("the increment needs one parameter", "give -n r3")
+        figure = curves.plot_increment(results, listed[0], position or 0, against=against,
+                                       display=display)
+    elif kind == "reduced":
+        figure = dynamics.plot_reduced(results, against=against, display=display)
+    elif kind == "balancing":
+        figure = dynamics.plot_balancing(results, against=against, display=display)
+    elif kind == "reactions":
+        figure = dynamics.plot_reactions(results, listed or None, against=against,
+                                         display=display)
+    elif kind == "hodograph":
+        if joint is None:
+            raise ViewError("a hodograph needs a joint",
+                            f"give --joint, one of {', '.join(results.forces.reactions)}")
+        figure = dynamics.plot_hodograph(results, joint, polar=polar, display=display)
+    elif kind == "summary":
+        figure = dynamics.plot_summary(results, display=display)
+    else:
+        figure = dynamics.plot_machine_motion(results, display=display)
+    save_figure(figure, output)
+    out.print(f"wrote {output}")
+
+
+def _progress(description: str):
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+    return Progress("[progress.description]{task.description}", BarColumn(),
+                    MofNCompleteColumn(), TimeRemainingColumn(), console=err,
+                    transient=True)
+
+
+@app.command()
+@user_errors
+def animate(
+    model: ModelPath,
+    output: Annotated[Path, typer.Option("-o", "--output", help="animation file: .gif, "
+                                         ".mp4 or .html")],
+    fps: Annotated[float | None, typer.Option(help="frames per second (default: from the "
+                                              "model time, at least 20 ms a frame)")] = None,
+) -> None:
+    """Animate a cycle ("cinema"): one frame per position.
+
+    Example: mechloop animate examples/four_bar.yaml -o cycle.gif
+    """
+    from mechloop.views.animation import animate as make_animation
+
+    m = load_model(model)
+    results = _dynamics(m, model) if m.bodies else solve_model(m)
+    with _progress("frames") as bar:
+        task = bar.add_task("frames", total=m.positions + 1)
+        make_animation(results, output, fps=fps,
+                       progress=lambda done, total: bar.update(task, completed=done,
+                                                               total=total))
+    out.print(f"wrote {output} ({m.positions + 1} frames)")
+
+
+@app.command()
+@user_errors
+def report(
+    model: ModelPath,
+    output: Annotated[Path, typer.Option("-o", "--output", help="the report, .pdf")],
+    lang: Annotated[str, typer.Option(help="language: en or ru")] = "en",
+    parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
+                         "the first contour's length function, else its last angle)")
+                         ] = None,
+) -> None:
+    """Write the course-project report (PDF): model, formula, kinematics of the output
+    link, angle differences, dynamics, reactions, centres of mass, conclusion, and the
+    values at every position.
+
+    Example: mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
+    """
+    from mechloop.views.report import write_report
+
+    m = load_model(model)
+    try:
+        with _progress("pages") as bar:
+            task = bar.add_task("pages", total=None)
+            path = write_report(m, output, lang=lang, output=parameter,
+                                progress=lambda done, total: bar.update(
+                                    task, completed=done, total=total))
+    except ModelError as exc:
+        raise locate(exc, model) from None
+    out.print(f"wrote {path}")
+
+
 @app.command()
 def schema(
     output: Annotated[Path | None, typer.Option("-o", "--output",
