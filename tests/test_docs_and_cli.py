@@ -44,7 +44,8 @@ def test_readme_starts_with_the_two_commands():
 
 
 @pytest.mark.parametrize("script", sorted((ROOT / "examples").glob("*.py")), ids=lambda p: p.name)
-def test_example_scripts_run(script, capsys):
+def test_example_scripts_run(script, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # scripts write their files to the working folder
     runpy.run_path(str(script), run_name="__main__")
     assert capsys.readouterr().out
 
