@@ -37,7 +37,9 @@ class DynamicResults:
     balancing load of each drive by virtual power (friction power included for a
     one-input machine); ``reduced``: reduced characteristics to the input (one-input
     machines only, else None); ``centers``: every centre of mass, and ``center`` the
-    common one; ``summary``: power and work over the cycle; ``cycle``: the machine
+    common one; ``inertia``: for every body its inertia force ``−Σ m·a_S`` (N, complex)
+    and inertia moment about its centre of mass ``−Σ (J·ε + (S_i − S)×m_i·a_Si)`` (N·m);
+    ``summary``: power and work over the cycle; ``cycle``: the machine
     motion and flywheel when the model asks for them (``machine:``).  Without model time
     the analysis is static (no inertia loads).
     """
@@ -55,6 +57,7 @@ class DynamicResults:
     powers: dict[str, Array]
     summary: Summary
     static: bool
+    inertia: dict[int, tuple[Array, Array]]
     cycle: Cycle | None = None
 
     def balancing_name(self, argument: int) -> tuple[str, str]:
@@ -88,6 +91,10 @@ class DynamicResults:
             cols[f"yS{body} [m]"] = motion.z.imag
         cols["xS [m]"] = self.center.z.real
         cols["yS [m]"] = self.center.z.imag
+        for body, (force, moment) in sorted(self.inertia.items()):
+            cols[f"Fi{body}_x [N]"] = force.real
+            cols[f"Fi{body}_y [N]"] = force.imag
+            cols[f"Mi{body} [N*m]"] = moment
         for name, reaction in self.forces.reactions.items():
             cols[f"R{name}_x [N]"] = reaction.force.real
             cols[f"R{name}_y [N]"] = reaction.force.imag
@@ -189,6 +196,23 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                                                                               strict=True))
                                  / mass for f in ("z", "v", "a")))
     n = kin.broken.size
+    motions = body_motions(mechanism, placement)
+    inertia: dict[int, tuple[Array, Array]] = {}
+    if not static:
+        for body in sorted(mechanism.bodies):
+            parts = [m for m in mechanism.masses if m.body == body]
+            if not parts or (body not in centers and all(m.inertia == 0 for m in parts)):
+                continue
+            force = np.zeros(n, dtype=complex)
+            moment = np.zeros(n)
+            middle = centers[body].z if body in centers else None
+            for m in parts:
+                s = placement.point(m.center)
+                force -= m.mass * s.a
+                moment -= m.inertia * motions[body].epsilon
+                if middle is not None:
+                    moment -= m.mass * ((np.conj(s.z - middle) * s.a).imag)
+            inertia[body] = (force, moment)
     zero = np.zeros(n, dtype=complex)
     if total > 0:
         center = Motion(*(sum(sum(m.mass for m in mechanism.masses if m.body == b)
@@ -197,7 +221,6 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     else:
         center = Motion(zero, zero, zero)
 
-    motions = body_motions(mechanism, placement)
     kinetic = np.zeros(n)
     if not static:
         for m in mechanism.masses:
@@ -228,7 +251,7 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
         cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
                              _argument_rate(kin, k), model.machine)
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
-                          centers, center, kinetic, powers, summary, static, cycle)
+                          centers, center, kinetic, powers, summary, static, inertia, cycle)
 
 
 def _argument_rate(results: Results, k: int) -> Array:
