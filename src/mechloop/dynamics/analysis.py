@@ -127,9 +127,11 @@ def _vectors_at(results: DynamicResults, pair) -> list[int]:
     out = []
     for b in pair.bodies:
         frame = results.mechanism.bodies.get(b)
+        constant = results.kinematics.constant
         vectors = frame.vectors if frame is not None else [
-            v for v in model.vectors if v not in {u for f in results.mechanism.bodies.values()
-                                                  for u in f.vectors}]
+            v for v in model.vectors
+            if v not in {u for f in results.mechanism.bodies.values() for u in f.vectors}
+            and f"r{v}" in constant and f"a{v}" in constant]
         for v in vectors:
             if v in out:
                 continue

@@ -109,12 +109,14 @@ def _si(value, kind, unit, path, problems) -> float:
         return 0.0
 
 
-def build_mechanism(model: Model, placement: Placement) -> Mechanism:
+def build_mechanism(model: Model, placement: Placement, *, determinate: bool = True
+                    ) -> Mechanism:
     """Compile the dynamic part of ``model`` (bodies, masses, joints, drives) in SI.
 
     Raises :class:`~mechloop.errors.ModelError` listing every problem: a body vector that
     does not exist, a body whose vectors do not move together, a mass without a centre,
-    joints that cannot be inferred, a force analysis that is not determinate.
+    joints that cannot be inferred, a force analysis that is not determinate (unless
+    ``determinate=False``: structural analysis reports that itself).
     """
     problems: list[Problem] = []
     results = placement.results
@@ -182,7 +184,7 @@ def build_mechanism(model: Model, placement: Placement) -> Mechanism:
     drives = _drives(model, holds, member, problems)
     masses = _masses(model, placement.results, problems)
     moving = [b for b in model.bodies if b != 0]
-    if not problems:
+    if determinate and not problems:
         unknowns = 2 * len(pairs) + len(drives)
         if unknowns != 3 * len(moving):
             listed = "; ".join(f"{p.name} ({p.kind}, bodies {p.bodies[0]}-{p.bodies[1]})"
