@@ -392,6 +392,41 @@ def report(
     out.print(f"wrote {path}")
 
 
+ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI"}
+
+
+@app.command()
+@user_errors
+def structure(model: ModelPath) -> None:
+    """Structural analysis: links, pairs, mobility by Chebyshev, the input groups and Assur
+    groups with their pairs and assembly variants, the structure formula, the class of the
+    mechanism, and the identification table.
+
+    Example: mechloop structure examples/crank_slider_dynamics.yaml
+    """
+    from mechloop.structure import analyze, identification_table
+
+    m = load_model(model)
+    try:
+        mob, dec = analyze(m)
+    except ModelError as exc:
+        raise locate(exc, model) from None
+    out.print(str(mob))
+    out.print(f"structure formula: {dec.formula}")
+    cls = dec.mechanism_class
+    out.print("class of the mechanism: "
+              + ("not determined (links left over)" if cls is None
+                 else ROMAN.get(cls, str(cls))))
+    for group in dec.groups:
+        ext = ", ".join(f"{p.name} {p.kind} {p.link}→{p.to}" for p in group.external)
+        inner = ", ".join(f"{p.name} {p.kind} {p.link}–{p.to}" for p in group.internal)
+        variant = "" if group.variant is None else f"; variant {group.variant}"
+        out.print(f"  {group.label}: external {ext or '—'}; internal {inner or '—'}{variant}")
+    for note in dec.notes:
+        out.print(f"[yellow]note:[/] {note}")
+    out.print(identification_table(dec).to_string())
+
+
 @app.command()
 def schema(
     output: Annotated[Path | None, typer.Option("-o", "--output",
