@@ -155,3 +155,13 @@ def test_view_commands_show_an_example_in_their_help(command):
     result = CliRunner().invoke(app, [command, "--help"])
     assert result.exit_code == 0
     assert f"mechloop {command} examples/" in result.output
+
+
+def test_russian_report_figures_speak_russian(dynamic_report):
+    lang, path = dynamic_report
+    text = "\n".join(pdf_text(path))
+    if lang == "ru":
+        assert "приращение r3 от положения 0" in text
+        assert "increment of" not in text and "reactions in the joints" not in text
+    else:
+        assert "increment of r3 from position 0" in text
