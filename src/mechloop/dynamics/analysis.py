@@ -122,25 +122,20 @@ class DynamicResults:
 
 
 def _vectors_at(results: DynamicResults, pair) -> list[int]:
-    """The body vectors that have an end at the pair's point (for reaction angles)."""
-    model = results.kinematics.model
-    out = []
+    """The body vectors (for the ground: the constant vectors of no body) that have an end
+    at the pair's point (for reaction angles)."""
+    kin, placement = results.kinematics, results.placement
+    in_bodies = {u for f in results.mechanism.bodies.values() for u in f.vectors}
+    ground = [v for v in kin.model.vectors if v not in in_bodies
+              and f"r{v}" in kin.constant and f"a{v}" in kin.constant]
+    z = results.forces.reactions[pair.name].point.z
+    scale = max(float(np.nanmax(np.abs(z), initial=0.0)), 1.0)
+    out: list[int] = []
     for b in pair.bodies:
         frame = results.mechanism.bodies.get(b)
-        constant = results.kinematics.constant
-        vectors = frame.vectors if frame is not None else [
-            v for v in model.vectors
-            if v not in {u for f in results.mechanism.bodies.values() for u in f.vectors}
-            and f"r{v}" in constant and f"a{v}" in constant]
-        for v in vectors:
-            if v in out:
-                continue
-            z = results.forces.reactions[pair.name].point.z
-            placement_tail = results.placement.tail(v).z
-            head = placement_tail + results.kinematics.value(f"r{v}") * np.exp(
-                1j * results.kinematics.value(f"a{v}"))
-            scale = max(float(np.nanmax(np.abs(z), initial=0.0)), 1.0)
-            if _same_point(placement_tail, z, scale) or _same_point(head, z, scale):
+        for v in frame.vectors if frame is not None else ground:
+            if v not in out and (_same_point(placement.tail(v).z, z, scale)
+                                 or _same_point(placement.head(v).z, z, scale)):
                 out.append(v)
     return out
 

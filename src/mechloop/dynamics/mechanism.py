@@ -157,8 +157,8 @@ def build_mechanism(model: Model, placement: Placement, *, determinate: bool = T
         if v not in member and fixed_length(v) and f"a{v}" in constant:
             holds[(v, "tail")].add(0)
             holds[(v, "head")].add(0)
-    frames = _frames(model, placement, holds, problems)
     scale = _size(model, placement)
+    frames = _frames(model, placement, holds, scale, problems)
 
     def end_motion(v: int, end: str) -> Motion:
         return placement.tail(v) if end == "tail" else placement.head(v)
@@ -211,7 +211,7 @@ def _size(model: Model, placement: Placement) -> float:
     return max(max(sizes, default=1.0), 1e-300)
 
 
-def _frames(model, placement, holds, problems) -> dict[int, BodyFrame]:
+def _frames(model, placement, holds, scale, problems) -> dict[int, BodyFrame]:
     results = placement.results
     ok = ~results.broken
     frames: dict[int, BodyFrame] = {}
@@ -238,7 +238,6 @@ def _frames(model, placement, holds, problems) -> dict[int, BodyFrame]:
                                    first, held)
     if problems:
         return frames
-    scale = _size(model, placement)
     for number, frame in frames.items():
         ref = None
         for v, end in frame.held:
