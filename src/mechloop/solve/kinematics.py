@@ -15,6 +15,7 @@ other terms are known.  No Python loop runs over positions.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,7 +24,7 @@ from numpy.typing import NDArray
 from mechloop.errors import SolveError
 from mechloop.model.check import KIND_OF, argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
-from mechloop.model.structure import ContourInfo, is_function
+from mechloop.model.structure import ContourInfo, Structure, is_function
 from mechloop.model.units import to_si
 from mechloop.modules.planar import (
     EXISTENCE_RTOL,
@@ -110,6 +111,124 @@ def _constant_si(model: Model, name: str, value: float | str) -> float:
 #: in the CPU cache, large enough that NumPy's per-call overhead is negligible.
 BLOCK = 8192
 
+Value = Array | float
+
+
+@dataclass
+class _Setup:
+    """What every block of a solve shares: the compiled roles of all parameters.
+
+    Constant values and link deltas are floats, or arrays shaped ``(D, 1)`` when they
+    differ between candidate designs.
+    """
+
+    structure: Structure
+    ordered: list[ContourInfo]
+    constants: dict[str, Value]
+    driven: dict[str, tuple[Signal, Value]]
+    deltas: dict[str, Value]
+    constant: set[str]
+    varying: list[str]
+
+
+def _setup(model: Model, structure: Structure, args: dict[int, Signal],
+           overrides: Mapping[str, Array] | None = None) -> _Setup:
+    """Compile the roles; ``overrides`` replace constants, link deltas and argument offsets
+    (SI, shape ``(D,)``) by one value per design."""
+    over = {name: np.asarray(v, dtype=float)[:, None] for name, v in (overrides or {}).items()}
+
+    def own(name: str, value: float | str) -> Value:
+        return over[name] if name in over else _constant_si(model, name, value)
+
+    constants: dict[str, Value] = {}
+    driven: dict[str, tuple[Signal, Value]] = {}
+    roles = {}
+    for number, vector in model.vectors.items():
+        for letter in "ra":
+            name = f"{letter}{number}"
+            role = vector.r if letter == "r" else vector.a
+            roles[name] = role
+            if isinstance(role, ArgumentRole):
+                driven[name] = (args[role.argument], own(name, role.offset))
+            elif not isinstance(role, LinkRole) and not is_function(role):
+                constants[name] = own(name, role)
+    unknown = sorted(set(over) - set(constants) - set(driven) - set(structure.links))
+    if unknown:
+        raise SolveError(f"cannot vary {', '.join(unknown)}: only constants, link deltas "
+                         "and argument offsets can differ between designs",
+                         "vary a parameter whose role is a number, a link or an argument")
+    deltas: dict[str, Value] = {}
+    for name in structure.links:
+        total: Value = 0.0
+        current = name
+        while isinstance(roles[current], LinkRole):
+            total = total + own(current, roles[current].delta)
+            current = roles[current].link
+        deltas[name] = total
+    constant = set(constants) | {n for n, c in structure.links.items()
+                                 if c.root in constants}
+    varying = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"
+               if f"{letter}{n}" not in constant]
+    return _Setup(structure, structure.ordered(), constants, driven, deltas, constant,
+                  varying)
+
+
+@dataclass
+class _Block:
+    """One block solved: every parameter, and per contour the positions with no solution,
+    the dead points, everything broken (own or inherited), the variant at the last
+    position and the sign of the Jacobian (which assembly branch the contour is on)."""
+
+    params: dict[str, _Param]
+    no_solution: dict[int, NDArray[np.bool_]]
+    dead: dict[int, NDArray[np.bool_]]
+    broken: dict[int, NDArray[np.bool_]]
+    last_variant: dict[int, int]
+    branch: dict[int, NDArray[np.int8]]
+
+
+def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
+                 starts: Mapping[int, int]) -> _Block:
+    """Solve positions ``lo:hi`` of every contour; arrays come out shaped ``shape``."""
+    structure, deltas = setup.structure, setup.deltas
+    params = {name: _Param(value, 0.0, 0.0) for name, value in setup.constants.items()}
+    for name, (sig, offset) in setup.driven.items():
+        params[name] = _Param(sig.value[lo:hi] + offset, sig.rate[lo:hi],
+                              sig.accel[lo:hi])
+
+    def resolve(name: str) -> _Param | None:
+        """The parameter, following links once their root is known."""
+        if name in params:
+            return params[name]
+        chain = structure.links.get(name)
+        if chain is None or chain.root not in params:
+            return None
+        root = params[chain.root]
+        delta = deltas[name]
+        param = _Param(root.value + delta, root.rate, root.accel)
+        if name[0] == "a":
+            rc, rs = root.trig()
+            cd, sd = np.cos(delta), np.sin(delta)
+            param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+        params[name] = param
+        return param
+
+    block = _Block(params, {}, {}, {}, {}, {})
+    for info in setup.ordered:
+        inherited = np.zeros(shape, dtype=bool)
+        for need in info.needs:
+            inherited |= block.broken[need]
+        none, dead, variant, branch = _solve_contour(info, params, resolve, shape,
+                                                     start=starts.get(info.number, 1))
+        block.last_variant[info.number] = variant
+        block.no_solution[info.number] = none & ~inherited
+        block.dead[info.number] = dead & ~inherited
+        block.broken[info.number] = none | dead | inherited
+        block.branch[info.number] = branch
+    for name in structure.links:
+        resolve(name)
+    return block
+
 
 def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) -> Results:
     """Solve a model for positions, velocities and accelerations at every position.
@@ -138,93 +257,38 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     else:
         args = model_arguments(model, time)
 
-    constants: dict[str, float] = {}
-    driven: dict[str, tuple[Signal, float]] = {}
-    for number, vector in model.vectors.items():
-        for letter in "ra":
-            name = f"{letter}{number}"
-            role = vector.r if letter == "r" else vector.a
-            if isinstance(role, ArgumentRole):
-                driven[name] = (args[role.argument],
-                                _constant_si(model, name, role.offset))
-            elif not isinstance(role, LinkRole) and not is_function(role):
-                constants[name] = _constant_si(model, name, role)
-    deltas = {name: sum(_constant_si(model, name, d) for d in chain.deltas)
-              for name, chain in structure.links.items()}
-    constant = set(constants) | {n for n, c in structure.links.items()
-                                 if c.root in constants}
-    varying = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"
-               if f"{letter}{n}" not in constant]
-    out = {name: (np.empty(n_pos), np.empty(n_pos), np.empty(n_pos)) for name in varying}
-    ordered = structure.ordered()
-    no_solution = {c.number: np.zeros(n_pos, dtype=bool) for c in ordered}
-    singular = {c.number: np.zeros(n_pos, dtype=bool) for c in ordered}
-    broken_by = {c.number: np.zeros(n_pos, dtype=bool) for c in ordered}
+    setup = _setup(model, structure, args)
+    deltas = setup.deltas
+    out = {name: (np.empty(n_pos), np.empty(n_pos), np.empty(n_pos))
+           for name in setup.varying}
+    no_solution = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}
+    singular = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}
     last_variant: dict[int, int] = {}
 
     for first in range(0, n_pos, max(int(block), 2)):
         lo = max(first - 1, 0)  # one position of overlap carries variant tracking across
         hi = min(first + max(int(block), 2), n_pos)
         size, skip = hi - lo, first - lo
-        params = {name: _Param(value, 0.0, 0.0) for name, value in constants.items()}
-        for name, (sig, offset) in driven.items():
-            params[name] = _Param(sig.value[lo:hi] + offset, sig.rate[lo:hi],
-                                  sig.accel[lo:hi])
-
-        def resolve(name: str, params: dict[str, _Param] = params) -> _Param | None:
-            """The parameter, following links once their root is known."""
-            if name in params:
-                return params[name]
-            chain = structure.links.get(name)
-            if chain is None or chain.root not in params:
-                return None
-            root = params[chain.root]
-            delta = deltas[name]
-            param = _Param(root.value + delta, root.rate, root.accel)
-            if name[0] == "a":
-                rc, rs = root.trig()
-                cd, sd = np.cos(delta), np.sin(delta)
-                param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
-            params[name] = param
-            return param
-
-        for info in ordered:
-            inherited = np.zeros(size, dtype=bool)
-            for need in info.needs:
-                inherited |= broken_by[need][lo:hi]
-            none, dead, variant = _solve_contour(info, params, resolve, size,
-                                                 start=last_variant.get(info.number, 1))
-            last_variant[info.number] = variant
-            none &= ~inherited
-            dead &= ~inherited
-            no_solution[info.number][first:hi] = none[skip:]
-            singular[info.number][first:hi] = dead[skip:]
-            broken_by[info.number][lo:hi] = (none | dead | inherited)
-        for name in structure.links:
-            resolve(name)
+        solved = _solve_block(setup, lo, hi, (size,), last_variant)
+        last_variant = solved.last_variant
+        for info in setup.ordered:
+            no_solution[info.number][first:hi] = solved.no_solution[info.number][skip:]
+            singular[info.number][first:hi] = solved.dead[info.number][skip:]
         for name, arrays in out.items():
-            p = params[name]
+            p = solved.params[name]
             for target, field in zip(arrays, (p.value, p.rate, p.accel), strict=True):
                 target[first:hi] = np.broadcast_to(field, (size,))[skip:]
 
     broken = np.zeros(n_pos, dtype=bool)
-    for mask in broken_by.values():
-        broken |= mask
-    for info in ordered:
-        for name in info.functions:
-            if name[0] == "a":
-                value = out[name][0]
-                value[:] = unwrap_angles(value, np.isfinite(value))
-    for name, chain in structure.links.items():
-        if name in out and chain.root in out:
-            out[name][0][:] = out[chain.root][0] + deltas[name]
-    if broken.any():
-        for arrays in out.values():
-            for arr in arrays:
-                arr[broken] = np.nan
+    for info in setup.ordered:
+        broken |= no_solution[info.number] | singular[info.number]
+    _finish_angles(setup, {name: arrays[0] for name, arrays in out.items()})
+    for arrays in out.values():
+        for arr in arrays:
+            arr[broken] = np.nan
 
     breaks = []
-    for info in ordered:
+    for info in setup.ordered:
         for reason, mask in ((BREAK_REASONS[info.module], no_solution[info.number]),
                              (DEAD_POINT, singular[info.number])):
             if mask.any():
@@ -234,9 +298,9 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     for name, (value, rate, accel) in out.items():
         values[name], rates[name], accels[name] = value, rate, accel
     zero = np.broadcast_to(0.0, (n_pos,))
-    for name in constant:
+    for name in setup.constant:
         root = structure.links[name].root if name in structure.links else name
-        value = constants[root] + deltas.get(name, 0.0)
+        value = setup.constants[root] + deltas.get(name, 0.0)
         values[name], rates[name], accels[name] = np.broadcast_to(value, (n_pos,)), zero, zero
     arg_kinds = {k: argument_kind(model, k) for k in model.arguments}
     return Results(
@@ -248,21 +312,35 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         values=values,
         rates=rates,
         accels=accels,
-        constant=frozenset(constant),
+        constant=frozenset(setup.constant),
         broken=broken,
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)),
         analogs_of=analogs_of,
     )
 
 
-def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos: int, *,
-                   start: int = 1) -> tuple[NDArray[np.bool_], NDArray[np.bool_], int]:
-    """Solve one contour, adding its functions to ``params``.
+def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
+    """Unwrap the solved angles along positions, then re-derive the linked ones."""
+    for info in setup.ordered:
+        for name in info.functions:
+            if name[0] == "a":
+                value = values[name]
+                value[...] = unwrap_angles(value, np.isfinite(value))
+    for name, chain in setup.structure.links.items():
+        if name in values and chain.root in values:
+            values[name][...] = values[chain.root] + setup.deltas[name]
+
+
+def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
+                   shape: tuple[int, ...], *, start: int = 1
+                   ) -> tuple[NDArray[np.bool_], NDArray[np.bool_], int, NDArray[np.int8]]:
+    """Solve one contour, adding its functions to ``params``; arrays shaped ``shape``.
 
     ``start`` is the variant at the first position when the variant is tracked (``auto``).
     Returns two masks over positions — no real solution, and dead point (singular
-    Jacobian; positions where an input is already NaN come out in the first mask) — and
-    the variant in use at the last position.
+    Jacobian; positions where an input is already NaN come out in the first mask) —, the
+    variant in use at the last position, and the sign of the Jacobian determinant (+1,
+    −1, 0 where there is no regular solution): the assembly branch the contour is on.
     """
     u1, u2 = info.functions
     for number in info.vectors:
@@ -283,8 +361,8 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos:
         y = y + r * s
     module = info.module
     v1, v2 = int(u1[1:]), int(u2[1:])
-    x = np.broadcast_to(np.asarray(x, dtype=float), (n_pos,))
-    y = np.broadcast_to(np.asarray(y, dtype=float), (n_pos,))
+    x = np.broadcast_to(np.asarray(x, dtype=float), shape)
+    y = np.broadcast_to(np.asarray(y, dtype=float), shape)
 
     def run(variant):
         """Unknowns as (value or None, cos, sin) per function, and ok."""
@@ -309,7 +387,7 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos:
                                 _points(module, second, params, v1, v2), ok1 & ok2,
                                 start=start)
         unknowns, ok = run(variant)
-        last = int(variant[-1])
+        last = int(variant.reshape(-1, variant.shape[-1])[0, -1])
     else:
         last = info.variant if info.variant != "auto" else 1
         unknowns, ok = run(last)
@@ -382,7 +460,8 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve, n_pos:
             bx = bx - tangential * s
             by = by + tangential * c
     params[u1].accel, params[u2].accel = solve2(bx, by)
-    return ~ok, singular, last
+    branch = np.where(good, np.sign(det), 0).astype(np.int8)
+    return ~ok, singular, last, branch
 
 
 def _points(module: str, unknowns, params: dict[str, _Param], v1: int, v2: int
