@@ -11,6 +11,7 @@ from difflib import get_close_matches
 from mechloop.errors import ModelError, Problem
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument
 from mechloop.model.structure import Structure, analyze
+from mechloop.model.synthesis import check_synthesis
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
 KIND_OF = {"r": "length", "a": "angle"}
@@ -39,6 +40,7 @@ def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     problems = _check_units(model) + problems
     problems += _check_arguments(model)
     problems += _check_time(model)
+    problems += check_synthesis(model)
     return structure, problems
 
 

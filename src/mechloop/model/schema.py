@@ -43,6 +43,7 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
     Time,
     _Frozen,
 )
+from mechloop.model.synthesis import SynthesisTask
 
 FUNCTION = "function"
 
@@ -175,6 +176,9 @@ class Model(_Frozen):
     friction: Friction = Field(Friction(), description="friction defaults for every joint")
     machine: Machine | None = Field(None, description="machine motion and flywheel sizing "
                                     "(one-input machines)")
+    synthesis: SynthesisTask | None = Field(
+        None, description="a synthesis task: dimensions to vary, the target, conditions, "
+        "search (mechloop synthesize)")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:

@@ -1,0 +1,270 @@
+"""The synthesis task of a model file (``synthesis:``): what to vary, what to reach, what
+to respect, and how to search (seed 002, part 2; KDAM's "parametric synthesis" panel).
+
+Numbers are in the model's units (``units``) unless written with their own unit.  Checks
+that need the model (does ``r9`` exist, is it a constant) live in :func:`check_synthesis`
+and run with the rest of the model's checks, so a bad task is reported with its place in
+the file before any search starts.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING, Annotated, Literal
+
+from pydantic import Field, model_validator
+
+from mechloop.errors import Problem
+from mechloop.model.dynamic import HeadPoint, TailPoint
+from mechloop.model.signals import Scalar, _Frozen
+
+if TYPE_CHECKING:
+    from mechloop.model.schema import Model
+
+VARIABLE = re.compile(r"^(?:[ra][1-9][0-9]*|start[1-9][0-9]*\.[xy])$")
+ParamName = Annotated[str, Field(pattern=r"^[ra][1-9][0-9]*$")]
+VariableName = Annotated[str, Field(
+    pattern=VARIABLE.pattern,
+    description="a constant of the model to vary: 'r3' / 'a5' (a constant, a link's delta, "
+    "an argument's offset) or 'start2.x' / 'start2.y' (the fixed start of contour 2)")]
+Point = TailPoint | HeadPoint
+
+
+class Curve(_Frozen):
+    """Target points given by parametric equations ``x(t)``, ``y(t)`` (length units)."""
+
+    x: str = Field(description="expression in t, e.g. '20'")
+    y: str = Field(description="expression in t, e.g. '20 + 25*t'")
+    t: tuple[float, float] = Field((0.0, 1.0), description="range of the parameter t")
+    count: int = Field(10, ge=2, description="number of target points")
+
+
+class PathTask(_Frozen):
+    """Path generation: a point of the mechanism passes through target points.
+
+    Without ``timing`` (class 3) the deviation of a target is its distance to the nearest
+    point of the traced curve; with ``timing`` (class 4) the target ``k`` is reached at the
+    position given for it, and the deviation is the distance to the point there, times
+    its weight E_k.
+    """
+
+    point: Point = Field(description="the tracing point: {head: K} or {tail: K}")
+    targets: list[tuple[Scalar, Scalar]] | dict[int, tuple[Scalar, Scalar]] | Curve = Field(
+        description="target points [[x, y], ...]; with timing a mapping position -> [x, y] "
+        "(or a list, one per position); or a parametric curve")
+    timing: bool = Field(False, description="targets are reached at given positions")
+    weights: list[float] | None = Field(None, description="E_k: a weight per target")
+
+
+class FunctionTask(_Frozen):
+    """Function generation: an output parameter follows a function of the input.
+
+    A rotating output (class 1) is an angle ``aK``, a sliding output (class 2) a length
+    ``rK``.  The target is given per position (``table``) or as an expression of ``t``
+    (0 at position 0, 1 at position N), of ``x`` (argument 1 in model units) and ``pos``,
+    in the output's model units.  With ``relative`` (the default) increments from
+    position 0 are compared, so the output's starting value is free.
+    """
+
+    output: ParamName = Field(description="the output parameter, e.g. 'a3' or 'r4'")
+    target: str | dict[int, Scalar] = Field(
+        description="expression, e.g. '60*log10(1 + 9*t)', or a table position -> value")
+    relative: bool = Field(True, description="compare increments from position 0")
+
+
+class MotionTask(_Frozen):
+    """Motion generation: a body passes through poses (x, y of a point, angle of a vector).
+
+    Poses are a mapping position -> [x, y, angle] (with timing) or a list (each pose
+    compared with the nearest position).  The angle error is weighted by ``length``
+    (length units per radian; default: the size of the targets) to add to the distance.
+    """
+
+    point: Point
+    angle: ParamName = Field(description="a vector fixed in the guided body, e.g. 'a2'")
+    poses: list[tuple[Scalar, Scalar, Scalar]] | dict[int, tuple[Scalar, Scalar, Scalar]]
+    length: Scalar | None = None
+
+
+class PressureAngle(_Frozen):
+    """Pressure angle in the L1/L2 groups (Pl4 and Pl3 contours) at most ``max``."""
+
+    max: Scalar = Field(description="allowed pressure angle (angle units), e.g. 40")
+    contours: list[int] | None = Field(None, description="contours to check (all Pl3/Pl4)")
+    weight: float = 1000.0
+
+
+class Rotation(_Frozen):
+    """Relative rotation of two bodies (rubber-bushed joint): range of ``aI − aJ`` over the
+    cycle at most ``max``."""
+
+    between: tuple[ParamName, ParamName]
+    max: Scalar
+    weight: float = 1000.0
+
+
+class Workspace(_Frozen):
+    """Points stay inside a box ``[[x0, y0], [x1, y1]]`` or a polygon at every position."""
+
+    points: list[Point]
+    box: tuple[tuple[Scalar, Scalar], tuple[Scalar, Scalar]] | None = None
+    polygon: list[tuple[Scalar, Scalar]] | None = None
+    weight: float = 1000.0
+
+    @model_validator(mode="after")
+    def _one_shape(self) -> Workspace:
+        if (self.box is None) == (self.polygon is None):
+            raise ValueError("give either box or polygon")
+        return self
+
+
+Reduction = Literal["max", "min", "absmax", "mean", "rms", "range"]
+
+
+class Criterion(_Frozen):
+    """A user criterion on any computed column, kinematic or dynamic (e.g. M_bal).
+
+    ``reduce`` turns the column into one number per design; with ``max`` / ``min`` it is a
+    limit (penalized beyond it), with ``minimize`` a term added to Q with that weight.
+    Values are in the column's SI unit unless written with a unit ('200 N*m').
+    """
+
+    column: str
+    reduce: Reduction = "absmax"
+    max: Scalar | None = None
+    min: Scalar | None = None
+    minimize: float | None = Field(None, description="weight of the reduced value in Q")
+    weight: float = 1000.0
+
+
+class Search(_Frozen):
+    """Search strategy and stopping rules."""
+
+    method: Literal["de", "cmaes", "multistart"] = "de"
+    seed: int | None = 1
+    population: int = Field(40, ge=4, description="designs per generation")
+    iterations: int = Field(300, ge=1, description="generations at most")
+    good_enough: Scalar | None = Field(None, description="stop when Q is at most this")
+    patience: int | None = Field(60, ge=1, description="stop after this many generations "
+                                 "without improvement")
+    time: float | None = Field(None, gt=0, description="time budget, s")
+    polish: bool = Field(True, description="polish the best design by a local search")
+    starts: int = Field(8, ge=1, description="multistart: local searches")
+
+
+class SynthesisTask(_Frozen):
+    """What a synthesis varies, reaches and respects, and how it searches."""
+
+    vary: dict[VariableName, tuple[Scalar, Scalar]] = Field(
+        description="design variables with their bounds [low, high]")
+    path: PathTask | None = None
+    function: FunctionTask | None = None
+    motion: MotionTask | None = None
+    objective: Literal["max", "rms", "ssq"] = Field(
+        "max", description="Q: max |deviation|, RMS, or the sum of squares")
+    pressure_angle: PressureAngle | None = None
+    rotation: list[Rotation] = Field(default_factory=list)
+    workspace: Workspace | None = None
+    criteria: list[Criterion] = Field(default_factory=list)
+    search: Search = Search()
+
+    @model_validator(mode="after")
+    def _one_task(self) -> SynthesisTask:
+        tasks = [t for t in (self.path, self.function, self.motion) if t is not None]
+        if len(tasks) > 1:
+            raise ValueError("give one task: path, function or motion")
+        if not tasks and not any(c.minimize for c in self.criteria):
+            raise ValueError("give a task (path, function or motion) or a criterion to "
+                             "minimize")
+        return self
+
+
+def check_synthesis(model: Model) -> list[Problem]:
+    """Problems of the model's synthesis task that need the model to be seen."""
+    from mechloop.model.structure import is_function
+
+    task = model.synthesis
+    if task is None:
+        return []
+    problems: list[Problem] = []
+    base = ("synthesis",)
+    starts = {i + 1: c.start for i, c in enumerate(model.contours)}
+
+    def vector_of(name: str) -> int | None:
+        number = int(name[1:])
+        return number if number in model.vectors else None
+
+    for name, (low, high) in task.vary.items():
+        path = (*base, "vary", name)
+        if name.startswith("start"):
+            number = int(name[5:].split(".")[0])
+            if number not in starts:
+                problems.append(Problem(path, f"there is no contour {number}",
+                                        f"contours are 1..{len(starts)}"))
+            elif not isinstance(starts[number], tuple):
+                problems.append(Problem(path, f"contour {number} does not start at fixed "
+                                        "coordinates", "give it start: [x, y] to vary them"))
+        else:
+            number = vector_of(name)
+            if number is None:
+                problems.append(Problem(path, f"there is no vector {name[1:]}",
+                                        f"vectors are {sorted(model.vectors)}"))
+                continue
+            role = model.vectors[number].r if name[0] == "r" else model.vectors[number].a
+            if is_function(role):
+                problems.append(Problem(path, f"{name} is a function of its contour, "
+                                        "not a dimension", "vary a constant, a link's delta "
+                                        "or an argument's offset"))
+        if isinstance(low, int | float) and isinstance(high, int | float) and low >= high:
+            problems.append(Problem(path, f"the bounds [{low}, {high}] are empty",
+                                    "write [low, high] with low < high"))
+
+    def check_point(point: Point, path: tuple) -> None:
+        number = point.head if isinstance(point, HeadPoint) else point.tail
+        if number not in model.vectors:
+            problems.append(Problem(path, f"there is no vector {number}",
+                                    f"vectors are {sorted(model.vectors)}"))
+
+    def check_param(name: str, path: tuple) -> None:
+        if vector_of(name) is None:
+            problems.append(Problem(path, f"there is no vector {name[1:]}",
+                                    f"vectors are {sorted(model.vectors)}"))
+
+    n = model.positions
+    if task.path is not None:
+        check_point(task.path.point, (*base, "path", "point"))
+        targets = task.path.targets
+        if isinstance(targets, dict):
+            bad = [k for k in targets if not 0 <= k <= n]
+            if bad:
+                problems.append(Problem((*base, "path", "targets"), f"positions {bad} are "
+                                        f"outside 0..{n}", "give positions of the model"))
+        if task.path.timing and isinstance(targets, list) and len(targets) != n + 1:
+            problems.append(Problem((*base, "path", "targets"), f"with timing, a list of "
+                                    f"targets has one point per position ({n + 1})",
+                                    "or map positions to points: {0: [x, y], 5: [x, y]}"))
+        count = (targets.count if isinstance(targets, Curve) else len(targets))
+        if task.path.weights is not None and len(task.path.weights) != count:
+            problems.append(Problem((*base, "path", "weights"), f"{len(task.path.weights)} "
+                                    f"weights for {count} targets", "give one per target"))
+    if task.function is not None:
+        check_param(task.function.output, (*base, "function", "output"))
+        if isinstance(task.function.target, dict):
+            bad = [k for k in task.function.target if not 0 <= k <= n]
+            if bad:
+                problems.append(Problem((*base, "function", "target"), f"positions {bad} "
+                                        f"are outside 0..{n}", "give positions of the model"))
+    if task.motion is not None:
+        check_point(task.motion.point, (*base, "motion", "point"))
+        check_param(task.motion.angle, (*base, "motion", "angle"))
+    for i, rot in enumerate(task.rotation):
+        for name in rot.between:
+            check_param(name, (*base, "rotation", i, "between"))
+    if task.workspace is not None:
+        for i, point in enumerate(task.workspace.points):
+            check_point(point, (*base, "workspace", "points", i))
+    for i, crit in enumerate(task.criteria):
+        if crit.max is None and crit.min is None and crit.minimize is None:
+            problems.append(Problem((*base, "criteria", i), f"criterion on {crit.column} "
+                                    "has no max, min or minimize", "give one of them"))
+    return problems

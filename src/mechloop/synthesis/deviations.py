@@ -1,0 +1,107 @@
+"""Deviations of traced curves and functions from their targets, for a whole population.
+
+Every function takes arrays with designs on the leading axis and positions on the last,
+``(D, P)``, and returns one deviation per design and target, ``(D, K)``, in the units of
+its inputs.  No loop over designs or positions.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+Array = NDArray[np.float64]
+
+
+def distance_to_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]) -> Array:
+    """Distance from each target to the nearest point of the traced polyline.
+
+    ``z`` : complex, shape ``(D, P)`` — the traced point at every position (x + iy);
+    ``targets`` : complex, shape ``(K,)``.  The curve is the polyline through the
+    positions in order (segments between neighbours), so the result does not depend on
+    where between two positions the nearest point falls.  Returns ``(D, K)``.
+    """
+    a = z[:, None, :-1]                     # (D, 1, S)
+    seg = z[:, None, 1:] - a                # (D, 1, S)
+    rel = targets[None, :, None] - a        # (D, K, S)
+    length2 = (seg.real ** 2 + seg.imag ** 2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = (rel.real * seg.real + rel.imag * seg.imag) / np.where(length2 > 0, length2, 1)
+    t = np.clip(t, 0.0, 1.0)
+    return np.abs(rel - t * seg).min(axis=-1)
+
+
+def distance_at_positions(z: NDArray[np.complex128], targets: NDArray[np.complex128],
+                          positions: NDArray[np.int64]) -> Array:
+    """Distance from target ``k`` to the traced point at position ``positions[k]``
+    (path generation with timing).  Returns ``(D, K)``."""
+    return np.abs(z[:, positions] - targets[None, :])
+
+
+def pose_error(z: NDArray[np.complex128], angle: Array, targets: NDArray[np.complex128],
+               target_angles: Array, length: float,
+               positions: NDArray[np.int64] | None) -> Array:
+    """Motion generation: ``sqrt(distance² + (length · angle error)²)`` per pose.
+
+    ``angle`` (rad) is the guided body's direction, ``(D, P)``; angle errors are wrapped to
+    ``(−π, π]``.  With ``positions`` each pose is compared with its position, otherwise
+    with the position where the combined error is least.  Returns ``(D, K)``.
+    """
+    if positions is not None:
+        dz = z[:, positions] - targets[None, :]
+        da = angle[:, positions] - target_angles[None, :]
+        da = np.angle(np.exp(1j * da))
+        return np.sqrt(np.abs(dz) ** 2 + (length * da) ** 2)
+    dz = z[:, None, :] - targets[None, :, None]
+    da = np.angle(np.exp(1j * (angle[:, None, :] - target_angles[None, :, None])))
+    return np.sqrt(np.abs(dz) ** 2 + (length * da) ** 2).min(axis=-1)
+
+
+def function_error(output: Array, target: Array, *, relative: bool) -> Array:
+    """Function generation: output minus target at every position, ``(D, P)``; with
+    ``relative`` the increments from position 0 are compared."""
+    if relative:
+        return (output - output[:, :1]) - (target - target[0])[None, :]
+    return output - target[None, :]
+
+
+def reduce_deviation(dev: Array, kind: str, weights: Array | None = None) -> Array:
+    """The main criterion Q per design from deviations ``(D, K)``: ``'max'`` the largest
+    weighted |deviation|, ``'rms'`` the root mean square, ``'ssq'`` the sum of squares."""
+    if weights is not None:
+        dev = dev * weights[None, :]
+    if kind == "max":
+        return np.abs(dev).max(axis=-1)
+    if kind == "rms":
+        return np.sqrt(np.mean(dev * dev, axis=-1))
+    return np.sum(dev * dev, axis=-1)
+
+
+def polygon_outside(z: NDArray[np.complex128], polygon: NDArray[np.complex128]) -> Array:
+    """How far each point lies outside a closed polygon (0 inside), same shape as ``z``.
+
+    Inside is decided by the even–odd crossing rule, the distance is to the nearest edge.
+    """
+    a = polygon
+    b = np.roll(polygon, -1)
+    pts = z[..., None]
+    # crossing rule: edges that straddle the point's y and cross to its right
+    ay, by_ = a.imag, b.imag
+    straddle = (ay > pts.imag) != (by_ > pts.imag)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x_cross = a.real + (pts.imag - ay) * (b.real - a.real) / (by_ - ay)
+    inside = (np.count_nonzero(straddle & (pts.real < x_cross), axis=-1) % 2) == 1
+    seg = b - a
+    rel = pts - a
+    length2 = seg.real ** 2 + seg.imag ** 2
+    t = np.clip((rel.real * seg.real + rel.imag * seg.imag) / np.where(length2 > 0,
+                                                                        length2, 1), 0, 1)
+    dist = np.abs(rel - t * seg).min(axis=-1)
+    return np.where(inside, 0.0, dist)
+
+
+def box_outside(z: NDArray[np.complex128], low: complex, high: complex) -> Array:
+    """How far each point lies outside the box ``[low, high]`` (0 inside)."""
+    dx = np.maximum(np.maximum(low.real - z.real, z.real - high.real), 0.0)
+    dy = np.maximum(np.maximum(low.imag - z.imag, z.imag - high.imag), 0.0)
+    return np.hypot(dx, dy)

@@ -1,0 +1,521 @@
+"""A synthesis task compiled to one function: a design matrix in, every term out.
+
+:class:`SynthesisProblem` evaluates a population ``(D, V)`` in one call of
+:func:`~mechloop.solve.designs.solve_designs` (designs × positions): the main criterion Q
+(seed 002: the largest |deviation| by default), the mandatory conditions (the chain never
+breaks, the assembly variant is kept) and the desirable ones as penalties (pressure angle,
+relative rotation, workspace, user criteria).  Bounds are the search's own box.
+
+What the search minimizes is ``Q + Σ penalties`` for a design that meets the mandatory
+conditions, and ``INFEASIBLE · (1 + share of broken positions)`` otherwise, so every
+feasible design ranks before every infeasible one and an infeasible one is never reported
+as a result.  Dynamic criteria (any column of the dynamic table) solve the dynamics of
+each feasible design on its own: that is the one loop over designs, taken only when a
+criterion needs it.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from mechloop.errors import ModelError, Problem, SolveError
+from mechloop.model.dynamic import HeadPoint
+from mechloop.model.schema import Model
+from mechloop.model.synthesis import Criterion, Curve, Point, SynthesisTask
+from mechloop.model.units import registry, to_si, unit_factor
+from mechloop.solve.designs import DesignResults, solve_designs
+from mechloop.synthesis import deviations as dv
+from mechloop.synthesis.variables import Variables, apply_design, compile_variables
+
+Array = NDArray[np.float64]
+
+#: What an infeasible design scores (plus its share of broken positions).
+INFEASIBLE = 1e12
+
+_SAFE = {name: getattr(np, name) for name in (
+    "sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", "sqrt", "exp", "log",
+    "log10", "log2", "abs", "sinh", "cosh", "tanh", "radians", "degrees", "hypot",
+    "minimum", "maximum", "where")}
+_SAFE.update(pi=np.pi, e=np.e, asin=np.arcsin, acos=np.arccos, atan=np.arctan,
+             atan2=np.arctan2, ln=np.log)
+
+
+def evaluate_expression(text: str, where: tuple, **names: Array | float) -> Array:
+    """Evaluate a target expression (NumPy functions, ``pi``, and ``names``).
+
+    Only arithmetic, names and calls of the listed functions are accepted: the text is
+    checked node by node before it runs, so a model file cannot run other code.
+    """
+    allowed = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.operator, ast.unaryop,
+               ast.Constant, ast.Name, ast.Load, ast.Call, ast.Compare, ast.cmpop,
+               ast.IfExp)
+    try:
+        tree = ast.parse(text, mode="eval")
+        bad = next((type(node).__name__ for node in ast.walk(tree)
+                    if not isinstance(node, allowed)
+                    or (isinstance(node, ast.Call) and not isinstance(node.func, ast.Name))),
+                   None)
+        if bad is not None:
+            raise ValueError(f"{bad} is not allowed in a target expression")
+        value = eval(compile(tree, "<target>", "eval"), {"__builtins__": {}},
+                     {**_SAFE, **names})
+    except Exception as exc:  # a user's expression can fail in any way
+        raise ModelError([Problem(where, f"cannot evaluate {text!r}: {exc}",
+                                  f"use {', '.join(sorted(names))} and functions like "
+                                  "sin, log10, sqrt")]) from None
+    return np.asarray(value, dtype=float)
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """Everything about a population of ``D`` designs.
+
+    ``total`` is what the search minimizes, ``q`` the main criterion (model units of the
+    target; NaN where a design is infeasible), ``feasible`` whether the mandatory
+    conditions hold, ``broken_share`` the share of positions where the chain breaks,
+    ``terms`` the penalty of each desirable condition and criterion and ``measures`` the
+    quantity each penalizes (pressure angle in the model's angle unit, ...), all ``(D,)``.
+    """
+
+    total: Array
+    q: Array
+    feasible: NDArray[np.bool_]
+    broken_share: Array
+    keeps_variant: NDArray[np.bool_]
+    terms: dict[str, Array] = field(default_factory=dict)
+    measures: dict[str, Array] = field(default_factory=dict)
+
+
+class SynthesisProblem:
+    """The synthesis task of ``model`` compiled for fast evaluation.
+
+    ``evaluate(designs)`` takes SI values shaped ``(D, V)`` in the order of
+    ``variables.names`` and returns an :class:`Evaluation`.
+    """
+
+    def __init__(self, model: Model, task: SynthesisTask | None = None):
+        task = task or model.synthesis
+        if task is None:
+            raise ModelError([Problem(("synthesis",), "the model has no synthesis task",
+                                      "add a synthesis: section (see "
+                                      "examples/four_bar_path_synthesis.yaml)")])
+        if task is not model.synthesis:
+            model = model.model_copy(update={"synthesis": task})
+        self.model = model
+        self.task = task
+        self.variables: Variables = compile_variables(model)
+        self.length_unit = unit_factor(model.units.length, "length")
+        self.angle_unit = unit_factor(model.units.angle, "angle")
+        self._compile_target()
+        self._compile_conditions()
+
+    # ---- compiling -------------------------------------------------------------------
+    def _length(self, value) -> float:
+        return to_si(value, "length", self.model.units.length)
+
+    def _angle(self, value) -> float:
+        return to_si(value, "angle", self.model.units.angle)
+
+    def _points(self, items) -> NDArray[np.complex128]:
+        return np.array([complex(self._length(x), self._length(y)) for x, y in items])
+
+    def _compile_target(self) -> None:
+        task, n = self.task, self.model.positions
+        self.target_kind: str | None = None
+        self.q_unit = self.model.units.length
+        self.weights: Array | None = None
+        if task.path is not None:
+            path = task.path
+            self.target_kind = "path"
+            targets = path.targets
+            if isinstance(targets, Curve):
+                t = np.linspace(*targets.t, targets.count)
+                where = ("synthesis", "path", "targets")
+                x = np.broadcast_to(evaluate_expression(targets.x, (*where, "x"), t=t), t.shape)
+                y = np.broadcast_to(evaluate_expression(targets.y, (*where, "y"), t=t), t.shape)
+                self.targets = (x + 1j * y) * self.length_unit
+                self.target_positions = None
+            elif isinstance(targets, dict):
+                self.targets = self._points(targets.values())
+                self.target_positions = np.array(list(targets), dtype=np.int64)
+            else:
+                self.targets = self._points(targets)
+                self.target_positions = (np.arange(n + 1, dtype=np.int64) if path.timing
+                                         else None)
+            if not path.timing:
+                self.target_positions = None
+            if path.weights is not None:
+                self.weights = np.asarray(path.weights, dtype=float)
+            self.point = path.point
+        elif task.function is not None:
+            fun = task.function
+            self.target_kind = "function"
+            self.output = fun.output
+            kind = "angle" if fun.output[0] == "a" else "length"
+            self.q_unit = getattr(self.model.units, kind)
+            self.output_factor = unit_factor(self.q_unit, kind)
+            positions = np.arange(n + 1)
+            if isinstance(fun.target, dict):
+                table = {k: to_si(v, kind, self.q_unit) / self.output_factor
+                         for k, v in sorted(fun.target.items())}
+                self.function_positions = np.array(list(table), dtype=np.int64)
+                self.function_target = np.array(list(table.values()))
+            else:
+                from mechloop.solve.inputs import model_arguments, model_time
+
+                args = model_arguments(self.model, model_time(self.model), strict=False)
+                names: dict[str, Array | float] = {"t": positions / n, "pos": positions}
+                if 1 in args:
+                    from mechloop.model.check import argument_kind
+
+                    akind = argument_kind(self.model, 1)
+                    names["x"] = args[1].value / unit_factor(
+                        getattr(self.model.units, akind), akind)
+                value = evaluate_expression(fun.target, ("synthesis", "function", "target"),
+                                            **names)
+                self.function_target = np.broadcast_to(value, positions.shape).astype(float)
+                self.function_positions = positions
+            if fun.relative and self.function_positions[0] != 0:
+                raise ModelError([Problem(("synthesis", "function", "target"),
+                                          "a relative target needs a value at position 0",
+                                          "add position 0 to the table, or set "
+                                          "relative: false")])
+        elif task.motion is not None:
+            mot = task.motion
+            self.target_kind = "motion"
+            self.point = mot.point
+            poses = mot.poses
+            items = list(poses.values()) if isinstance(poses, dict) else list(poses)
+            self.targets = self._points([(x, y) for x, y, _ in items])
+            self.target_angles = np.array([self._angle(a) for _, _, a in items])
+            self.target_positions = (np.array(list(poses), dtype=np.int64)
+                                     if isinstance(poses, dict) else None)
+            if mot.length is not None:
+                self.pose_length = self._length(mot.length)
+            else:
+                span = np.ptp(self.targets.real) + np.ptp(self.targets.imag)
+                self.pose_length = float(span) or 1.0
+        if self.target_kind in ("path", "motion"):
+            self.q_factor = self.length_unit
+        elif self.target_kind == "function":
+            self.q_factor = 1.0  # the function's deviations are in the output's model units
+
+    def _compile_conditions(self) -> None:
+        task, model = self.task, self.model
+        self.pressure_contours: list[tuple[int, str, str, str]] = []
+        if task.pressure_angle is not None:
+            from mechloop.model.check import require_valid
+
+            structure = require_valid(model)
+            chosen = task.pressure_angle.contours
+            for info in structure.ordered():
+                if chosen is not None and info.number not in chosen:
+                    continue
+                if info.module == "Pl4":
+                    self.pressure_contours.append((info.number, "Pl4", *info.functions))
+                elif info.module == "Pl3":
+                    u1, u2 = info.functions
+                    self.pressure_contours.append((info.number, "Pl3", f"a{u1[1:]}", u2))
+            self.pressure_max = self._angle(task.pressure_angle.max)
+        self.rotation_max = [self._angle(r.max) for r in task.rotation]
+        if task.workspace is not None:
+            ws = task.workspace
+            if ws.box is not None:
+                (x0, y0), (x1, y1) = ws.box
+                self.box = (complex(self._length(min(x0, x1)), self._length(min(y0, y1))),
+                            complex(self._length(max(x0, x1)), self._length(max(y0, y1))))
+                size = abs(self.box[1] - self.box[0])
+            else:
+                self.polygon = self._points(ws.polygon)
+                size = float(np.ptp(self.polygon.real) + np.ptp(self.polygon.imag))
+            self.workspace_size = size or 1.0
+        self._kinematic_criteria: dict[int, tuple[str, float]] = {}
+        self._dynamic_criteria: list[int] = []
+        for i, crit in enumerate(task.criteria):
+            name = crit.column
+            if _is_parameter(name, model):
+                self._kinematic_criteria[i] = _parameter_column(name)
+            else:
+                self._dynamic_criteria.append(i)
+        if self._dynamic_criteria:
+            self._check_dynamic_columns()
+
+    def _check_dynamic_columns(self) -> None:
+        from mechloop.dynamics.analysis import solve_dynamics
+
+        try:
+            frame = solve_dynamics(self.model).to_frame()
+        except SolveError:
+            return  # the model's own design may break; columns are checked per design
+        columns = {c.split(" [")[0] for c in frame.columns}
+        for i in self._dynamic_criteria:
+            name = self.task.criteria[i].column
+            if name not in columns:
+                import difflib
+
+                close = difflib.get_close_matches(name, sorted(columns), n=4)
+                raise ModelError([Problem(("synthesis", "criteria", i, "column"),
+                                          f"no column {name!r} in the tables of this model",
+                                          f"did you mean {', '.join(close)}?" if close else
+                                          "see the columns of mechloop solve and energy")])
+
+    # ---- evaluating ------------------------------------------------------------------
+    def solve(self, designs: Array) -> DesignResults:
+        """The kinematics of every design, arrays ``(D, P)``."""
+        return solve_designs(self.model, self.variables.overrides(designs))
+
+    def place(self, results: DesignResults, designs: Array, point: Point
+              ) -> NDArray[np.complex128]:
+        """Global position (m, as x + iy) of a point at every position, ``(D, P)``."""
+        return _place(self.model, results, self.variables.starts(designs), point)
+
+    def evaluate(self, designs: Array) -> Evaluation:
+        """Every term for the population ``designs`` (SI, shape ``(D, V)``)."""
+        designs = np.atleast_2d(np.asarray(designs, dtype=float))
+        res = self.solve(designs)
+        n_designs = designs.shape[0]
+        broken_share = res.broken.mean(axis=-1)
+        keeps = res.keeps_variant
+        feasible = res.assembles & keeps
+        q = self._main(res, designs) if self.target_kind else np.zeros(n_designs)
+        terms: dict[str, Array] = {}
+        measures: dict[str, Array] = {}
+        self._desirable(res, designs, terms, measures)
+        self._criteria(res, designs, feasible, terms, measures)
+        penalty = sum(terms.values()) if terms else np.zeros(n_designs)
+        with np.errstate(invalid="ignore"):
+            total = q + penalty
+        bad = ~feasible | ~np.isfinite(total)
+        total = np.where(bad, INFEASIBLE * (1.0 + broken_share + (~keeps)), total)
+        feasible = feasible & ~bad
+        return Evaluation(total=total, q=np.where(feasible, q, np.nan), feasible=feasible,
+                          broken_share=broken_share, keeps_variant=keeps, terms=terms,
+                          measures=measures)
+
+    def residuals(self, designs: Array) -> Array:
+        """Deviations (weighted) and the square roots of the penalties, ``(D, K + T)``,
+        for a least-squares polish; an infeasible design gets a large constant row."""
+        designs = np.atleast_2d(np.asarray(designs, dtype=float))
+        res = self.solve(designs)
+        parts = []
+        if self.target_kind:
+            dev = self.deviations(res, designs)
+            if self.weights is not None:
+                dev = dev * self.weights[None, :]
+            parts.append(dev)
+        terms: dict[str, Array] = {}
+        self._desirable(res, designs, terms, {})
+        feasible = res.assembles & res.keeps_variant
+        self._criteria(res, designs, feasible, terms, {})
+        parts += [np.sqrt(np.maximum(t, 0))[:, None] for t in terms.values()]
+        out = np.concatenate(parts, axis=1) if parts else np.zeros((designs.shape[0], 1))
+        bad = ~feasible | ~np.isfinite(out).all(axis=1)
+        out[bad] = 1e6
+        return out
+
+    def deviations(self, results: DesignResults, designs: Array) -> Array:
+        """Deviations from the targets, ``(D, K)``, in the model's units."""
+        kind = self.target_kind
+        if kind == "path":
+            z = self.place(results, designs, self.point)
+            if self.target_positions is None:
+                dev = dv.distance_to_curve(z, self.targets)
+            else:
+                dev = dv.distance_at_positions(z, self.targets, self.target_positions)
+            return dev / self.length_unit
+        if kind == "motion":
+            z = self.place(results, designs, self.point)
+            angle = results.values[self.task.motion.angle]
+            dev = dv.pose_error(z, angle, self.targets, self.target_angles, self.pose_length,
+                                self.target_positions)
+            return dev / self.length_unit
+        output = results.values[self.output][:, self.function_positions] / self.output_factor
+        return dv.function_error(output, self.function_target,
+                                 relative=self.task.function.relative)
+
+    def _main(self, res: DesignResults, designs: Array) -> Array:
+        dev = self.deviations(res, designs)
+        return dv.reduce_deviation(dev, self.task.objective, self.weights)
+
+    def _desirable(self, res: DesignResults, designs: Array, terms: dict[str, Array],
+                   measures: dict[str, Array]) -> None:
+        task = self.task
+        if task.pressure_angle is not None and self.pressure_contours:
+            worst = np.zeros(designs.shape[0])
+            for _, module, first, second in self.pressure_contours:
+                theta = np.mod(res.values[first] - res.values[second], np.pi)
+                between = np.minimum(theta, np.pi - theta)  # angle between the two lines
+                angle = between if module == "Pl3" else np.pi / 2 - between
+                worst = np.maximum(worst, np.nanmax(np.where(np.isnan(angle), 0, angle),
+                                                    axis=-1))
+            measures["pressure_angle"] = worst / self.angle_unit
+            excess = np.maximum(worst - self.pressure_max, 0) / self.pressure_max
+            terms["pressure_angle"] = task.pressure_angle.weight * excess
+        for i, rot in enumerate(task.rotation):
+            rel = res.values[rot.between[0]] - res.values[rot.between[1]]
+            swing = np.nanmax(rel, axis=-1) - np.nanmin(rel, axis=-1)
+            key = f"rotation {rot.between[0]}-{rot.between[1]}"
+            measures[key] = swing / self.angle_unit
+            terms[key] = rot.weight * np.maximum(swing - self.rotation_max[i], 0) / \
+                self.rotation_max[i]
+        if task.workspace is not None:
+            ws = task.workspace
+            worst = np.zeros(designs.shape[0])
+            for point in ws.points:
+                z = self.place(res, designs, point)
+                out = (dv.box_outside(z, *self.box) if ws.box is not None
+                       else dv.polygon_outside(z, self.polygon))
+                worst = np.maximum(worst, np.nanmax(np.nan_to_num(out), axis=-1))
+            measures["workspace"] = worst / self.length_unit
+            terms["workspace"] = ws.weight * worst / self.workspace_size
+
+    def _criteria(self, res: DesignResults, designs: Array, feasible: NDArray[np.bool_],
+                  terms: dict[str, Array], measures: dict[str, Array]) -> None:
+        n_designs = designs.shape[0]
+        for i, crit in enumerate(self.task.criteria):
+            if i in self._kinematic_criteria:
+                name, factor = self._kinematic_criteria[i]
+                table = _parameter_table(res, name) * factor
+                value = _reduce(table, crit.reduce)
+            else:
+                value = np.full(n_designs, np.nan)
+                for d in np.flatnonzero(feasible):  # the one loop: dynamics per design
+                    value[d] = self._dynamic_value(designs[d], crit)
+            key = f"{crit.reduce} {crit.column}"
+            measures[key] = value
+            term = np.zeros(n_designs)
+            scale = _criterion_scale(crit)
+            if crit.max is not None:
+                limit = _in_column_units(crit.max)
+                term = term + crit.weight * np.maximum(value - limit, 0) / scale
+            if crit.min is not None:
+                limit = _in_column_units(crit.min)
+                term = term + crit.weight * np.maximum(limit - value, 0) / scale
+            if crit.minimize is not None:
+                term = term + crit.minimize * value
+            terms[key] = term
+
+    def _dynamic_value(self, design: Array, crit: Criterion) -> float:
+        from mechloop.dynamics.analysis import solve_dynamics
+
+        model = self.design_model(design)
+        try:
+            frame = solve_dynamics(model).to_frame()
+        except SolveError:
+            return math.nan
+        columns = {c.split(" [")[0]: c for c in frame.columns}
+        if crit.column not in columns:
+            return math.nan
+        column = frame[columns[crit.column]].to_numpy(dtype=float)
+        return float(_reduce(column[None, :], crit.reduce)[0])
+
+    def design_model(self, design: Array) -> Model:
+        """The model with one design's values (SI, shape ``(V,)``) written in."""
+        return apply_design(self.model, self.variables.to_model_units(np.asarray(design)))
+
+
+def _is_parameter(column: str, model: Model) -> bool:
+    name = column[2:] if column.startswith("dd") else column[1:] if column.startswith(
+        "d") else column
+    return (len(name) > 1 and name[0] in "ra" and name[1:].isdigit()
+            and int(name[1:]) in model.vectors)
+
+
+def _parameter_column(column: str) -> tuple[str, float]:
+    """(column, factor to the table's unit): angles are shown in degrees."""
+    bare = column.lstrip("d")
+    return column, (180 / np.pi if column == bare and bare[0] == "a" else 1.0)
+
+
+def _parameter_table(res: DesignResults, column: str) -> Array:
+    if column.startswith("dd"):
+        return res.accels[column[2:]]
+    if column.startswith("d"):
+        return res.rates[column[1:]]
+    return res.values[column]
+
+
+def _reduce(table: Array, how: str) -> Array:
+    with np.errstate(invalid="ignore"):
+        if how == "max":
+            return np.nanmax(table, axis=-1)
+        if how == "min":
+            return np.nanmin(table, axis=-1)
+        if how == "absmax":
+            return np.nanmax(np.abs(table), axis=-1)
+        if how == "mean":
+            return np.nanmean(table, axis=-1)
+        if how == "rms":
+            return np.sqrt(np.nanmean(table * table, axis=-1))
+        return np.nanmax(table, axis=-1) - np.nanmin(table, axis=-1)
+
+
+def _in_column_units(value) -> float:
+    """A limit in the column's table unit; a quantity string is converted to SI base units
+    (the tables' units, except angles, which the tables show in degrees)."""
+    if isinstance(value, str):
+        qty = registry().Quantity(value)
+        if qty.dimensionless and not qty.unitless:
+            return float(qty.to("deg").magnitude)
+        return float(qty.to_base_units().magnitude)
+    return float(value)
+
+
+def _criterion_scale(crit: Criterion) -> float:
+    limits = [abs(_in_column_units(v)) for v in (crit.max, crit.min) if v is not None]
+    return max(limits) if limits and max(limits) > 0 else 1.0
+
+
+def _place(model: Model, res: DesignResults, starts: dict[int, tuple], point: Point
+           ) -> NDArray[np.complex128]:
+    """Tail or head of a vector in the plane for every design, as in
+    :class:`mechloop.dynamics.points.Placement` (contours laid from their starts)."""
+    contour_of = {v: i for i, c in enumerate(model.contours) for v in c.vectors}
+    shape = res.broken.shape
+    units = unit_factor(model.units.length, "length")
+    tails: dict[int, NDArray[np.complex128]] = {}
+
+    def vector(n: int) -> NDArray[np.complex128]:
+        return res.values[f"r{n}"] * np.exp(1j * res.values[f"a{n}"])
+
+    def place(index: int, visiting: tuple[int, ...]) -> None:
+        contour = model.contours[index]
+        if contour.vectors[0] in tails:
+            return
+        if index in visiting:
+            raise ModelError([Problem(("contours", index, "start"),
+                                      "the starts of contours refer to each other in a cycle",
+                                      "start one of them at the origin or at [x, y]")])
+        start = contour.start
+        if isinstance(start, str):
+            tail = np.zeros(shape, dtype=complex)
+        elif isinstance(start, tuple | list):
+            x = np.full(shape[0], float(start[0]) * units if not isinstance(start[0], str)
+                        else to_si(start[0], "length", model.units.length))
+            y = np.full(shape[0], float(start[1]) * units if not isinstance(start[1], str)
+                        else to_si(start[1], "length", model.units.length))
+            vx, vy = starts.get(index + 1, (None, None))
+            x = x if vx is None else vx
+            y = y if vy is None else vy
+            tail = np.broadcast_to((x + 1j * y)[:, None], shape)
+        else:
+            number = start.tail if not isinstance(start, HeadPoint) else start.head
+            place(contour_of[number], (*visiting, index))
+            tail = tails[number] + (vector(number) if isinstance(start, HeadPoint) else 0)
+        for number in contour.vectors:
+            tails[number] = tail
+            tail = tail + vector(number)
+
+    for index in range(len(model.contours)):
+        place(index, ())
+    if isinstance(point, HeadPoint):
+        return tails[point.head] + vector(point.head)
+    return tails[point.tail]
+
+
+__all__ = ["INFEASIBLE", "Evaluation", "SynthesisProblem", "evaluate_expression"]

@@ -1,0 +1,394 @@
+"""Search strategies for synthesis: differential evolution (SciPy), CMA-ES (``cma``) and
+multi-start local search, with the stopping rules of seed 002 (good enough, no progress
+over K generations, a time budget), a progress callback and Ctrl-C returning the best
+design found so far.
+
+Every strategy hands whole generations to :meth:`SynthesisProblem.evaluate` (one
+vectorized call per generation, designs × positions).  The local searches — the polish
+of the best design and the runs of the multi-start — evaluate one design at a time and are
+the only per-design loop; the multi-start runs can be spread over Dask workers.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from numpy.typing import NDArray
+from scipy.optimize import differential_evolution, least_squares, minimize
+from scipy.stats import qmc
+
+from mechloop.model.schema import Model
+from mechloop.model.synthesis import Search
+from mechloop.model.units import to_si
+from mechloop.synthesis.problem import Evaluation, SynthesisProblem
+from mechloop.synthesis.variables import current_values
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Progress:
+    """What a progress callback receives after every generation."""
+
+    iteration: int
+    evaluations: int
+    best_total: float
+    best_q: float
+    elapsed: float
+    feasible: bool
+
+
+class _Stop(Exception):
+    """Raised inside the search to end it; carries the reason."""
+
+
+class _Tracker:
+    """Counts evaluations, keeps the best designs, applies the stopping rules."""
+
+    def __init__(self, problem: SynthesisProblem, search: Search, keep: int,
+                 progress: Callable[[Progress], None] | None, budget: float | None):
+        self.problem = problem
+        self.search = search
+        self.keep = keep
+        self.progress = progress
+        self.started = time.perf_counter()
+        self.budget = budget
+        self.evaluations = 0
+        self.iteration = 0
+        self.best_x: Array | None = None
+        self.best_total = math.inf
+        self.best_q = math.nan
+        self.since_better = 0
+        self.history: list[dict[str, float]] = []
+        self.archive_x = np.empty((0, len(problem.variables)))
+        self.archive_f = np.empty(0)
+        self.good_enough = None
+        if search.good_enough is not None:
+            self.good_enough = _in_q_units(problem, search.good_enough)
+
+    def evaluate(self, designs: Array) -> Evaluation:
+        """Evaluate a generation (SI designs ``(D, V)``) and remember the best."""
+        designs = np.clip(np.atleast_2d(designs), self.problem.variables.low,
+                          self.problem.variables.high)
+        ev = self.problem.evaluate(designs)
+        self.evaluations += designs.shape[0]
+        order = np.argsort(ev.total)
+        best = order[0]
+        if ev.total[best] < self.best_total:
+            self.best_total = float(ev.total[best])
+            self.best_x = designs[best].copy()
+            self.best_q = float(ev.q[best])
+        ok = ev.feasible[order[: self.keep]]
+        chosen = order[: self.keep][ok]
+        if chosen.size:
+            self.archive_x = np.vstack([self.archive_x, designs[chosen]])
+            self.archive_f = np.concatenate([self.archive_f, ev.total[chosen]])
+            if self.archive_f.size > 4 * self.keep:
+                top = np.argsort(self.archive_f)[: 2 * self.keep]
+                self.archive_x, self.archive_f = self.archive_x[top], self.archive_f[top]
+        return ev
+
+    def generation_done(self, improved_before: float) -> None:
+        """Record a generation, report it, and stop the search if a rule says so."""
+        self.iteration += 1
+        elapsed = time.perf_counter() - self.started
+        if self.best_total < improved_before * (1 - 1e-12) - 1e-300:
+            self.since_better = 0
+        else:
+            self.since_better += 1
+        self.history.append({"iteration": self.iteration, "evaluations": self.evaluations,
+                             "best": self.best_total, "q": self.best_q, "time": elapsed})
+        if self.progress is not None:
+            self.progress(Progress(self.iteration, self.evaluations, self.best_total,
+                                   self.best_q, elapsed, math.isfinite(self.best_q)))
+        if self.good_enough is not None and self.best_q <= self.good_enough:
+            raise _Stop("good enough")
+        if self.search.patience is not None and self.since_better >= self.search.patience:
+            raise _Stop(f"no progress over {self.search.patience} generations")
+        if self.budget is not None and elapsed >= self.budget:
+            raise _Stop("time budget spent")
+        if self.iteration >= self.search.iterations:
+            raise _Stop("iteration limit")
+
+
+def _in_q_units(problem: SynthesisProblem, value) -> float:
+    if isinstance(value, str):
+        kind = "angle" if problem.q_unit == problem.model.units.angle and \
+            problem.target_kind == "function" and problem.output[0] == "a" else "length"
+        from mechloop.model.units import unit_factor
+
+        return to_si(value, kind, problem.q_unit) / unit_factor(problem.q_unit, kind)
+    return float(value)
+
+
+@dataclass(frozen=True)
+class SynthesisResult:
+    """The outcome of a synthesis run.
+
+    ``best`` is the best design (SI, ``(V,)``), ``evaluation`` its terms (arrays of one),
+    ``model`` the model with the best design written in, ``history`` one row per
+    generation (evaluations, best total, best Q, time), ``designs`` the best distinct
+    feasible designs found (model units), ``stopped`` why the search ended.
+    """
+
+    problem: SynthesisProblem
+    best: Array
+    evaluation: Evaluation
+    model: Model
+    history: pd.DataFrame
+    designs: pd.DataFrame
+    stopped: str
+    evaluations: int
+    elapsed: float
+    method: str
+
+    @property
+    def feasible(self) -> bool:
+        return bool(self.evaluation.feasible[0])
+
+    @property
+    def q(self) -> float:
+        """The main criterion of the best design (model units of the target)."""
+        return float(self.evaluation.q[0])
+
+    def values(self) -> dict[str, float]:
+        """The best design in the model's units."""
+        return self.problem.variables.to_model_units(self.best)
+
+    def terms(self) -> dict[str, float]:
+        """Every term of the objective for the best design: Q, each penalty and each
+        measured quantity, and the mandatory conditions."""
+        ev = self.evaluation
+        out: dict[str, float] = {"Q": self.q, "total": float(ev.total[0]),
+                                 "broken share": float(ev.broken_share[0]),
+                                 "variant kept": float(ev.keeps_variant[0])}
+        for key, value in ev.measures.items():
+            out[key] = float(value[0])
+        for key, value in ev.terms.items():
+            out[f"penalty {key}"] = float(value[0])
+        return out
+
+    @property
+    def evaluations_per_second(self) -> float:
+        return self.evaluations / self.elapsed if self.elapsed > 0 else math.inf
+
+
+def synthesize(model: Model, *, method: str | None = None, seed: int | None = None,
+               iterations: int | None = None, population: int | None = None,
+               time_budget: float | None = None, polish: bool | None = None,
+               progress: Callable[[Progress], None] | None = None,
+               scheduler: str | None = None, keep: int = 10) -> SynthesisResult:
+    """Run the synthesis task of ``model`` (its ``synthesis:`` section).
+
+    Keyword arguments override the task's ``search`` settings.  ``scheduler`` spreads the
+    multi-start's local searches (see :mod:`mechloop.synthesis.parallel`).  Ctrl-C ends the
+    search and returns the best design found so far (``stopped == 'interrupted'``).
+    """
+    problem = SynthesisProblem(model)
+    search = problem.task.search
+    update = {k: v for k, v in {"method": method, "seed": seed, "iterations": iterations,
+                                "population": population, "time": time_budget,
+                                "polish": polish}.items() if v is not None}
+    if update:
+        search = search.model_copy(update=update)
+    tracker = _Tracker(problem, search, keep, progress, search.time)
+    rng = np.random.default_rng(search.seed)
+    start = current_values(model, problem.variables)
+    stopped = "iteration limit"
+    try:
+        if search.method == "de":
+            _run_de(problem, search, tracker, start, rng)
+        elif search.method == "cmaes":
+            _run_cmaes(problem, search, tracker, start, rng)
+        else:
+            _run_multistart(problem, search, tracker, start, rng, scheduler)
+    except _Stop as stop:
+        stopped = str(stop)
+    except KeyboardInterrupt:
+        stopped = "interrupted"
+    if search.polish and stopped not in ("interrupted",) and tracker.best_x is not None \
+            and search.method != "multistart":
+        try:
+            _polish(problem, tracker, tracker.best_x, search)
+        except KeyboardInterrupt:
+            stopped = "interrupted"
+    return _result(problem, tracker, stopped, search.method)
+
+
+def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: str
+            ) -> SynthesisResult:
+    best = tracker.best_x
+    if best is None:
+        best = problem.variables.scale(np.full(len(problem.variables), 0.5))
+    evaluation = problem.evaluate(best[None, :])
+    elapsed = time.perf_counter() - tracker.started
+    order = np.argsort(tracker.archive_f)
+    rows, seen = [], []
+    span = problem.variables.high - problem.variables.low
+    for i in order:
+        x = tracker.archive_x[i]
+        if any(np.max(np.abs(x - s) / span) < 1e-6 for s in seen):
+            continue
+        seen.append(x)
+        row = {"total": float(tracker.archive_f[i])}
+        row.update(problem.variables.to_model_units(x))
+        rows.append(row)
+        if len(rows) >= tracker.keep:
+            break
+    designs = pd.DataFrame(rows)
+    if len(designs):
+        designs.insert(0, "rank", np.arange(1, len(designs) + 1))
+    return SynthesisResult(problem=problem, best=best, evaluation=evaluation,
+                           model=problem.design_model(best),
+                           history=pd.DataFrame(tracker.history), designs=designs,
+                           stopped=stopped, evaluations=tracker.evaluations,
+                           elapsed=elapsed, method=method)
+
+
+def _run_de(problem: SynthesisProblem, search: Search, tracker: _Tracker, start: Array,
+            rng: np.random.Generator) -> None:
+    variables = problem.variables
+    n_vars = len(variables)
+    popsize = max(1, math.ceil(search.population / n_vars))
+    before = [math.inf]
+
+    def func(unit: Array) -> Array:  # scipy passes (V, S) when vectorized
+        return tracker.evaluate(variables.scale(unit.T)).total
+
+    def callback(intermediate_result) -> None:
+        tracker.generation_done(before[0])
+        before[0] = tracker.best_total
+
+    tracker.evaluate(start[None, :])
+    before[0] = tracker.best_total
+    differential_evolution(func, [(0.0, 1.0)] * n_vars, maxiter=search.iterations,
+                           popsize=popsize, tol=0.0, atol=0.0, rng=rng, polish=False,
+                           callback=callback, vectorized=True, updating="deferred",
+                           x0=variables.unscale(start), init="sobol" if _pow2(popsize *
+                                                                             n_vars)
+                           else "latinhypercube")
+
+
+def _pow2(n: int) -> bool:
+    return n > 0 and n & (n - 1) == 0
+
+
+def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, start: Array,
+               rng: np.random.Generator) -> None:
+    import cma
+
+    variables = problem.variables
+    seed = int(rng.integers(1, 2**31 - 1))
+    options = {"bounds": [0.0, 1.0], "popsize": search.population, "seed": seed,
+               "verbose": -9, "maxiter": search.iterations + 1, "tolfun": 0, "tolx": 1e-14,
+               "tolfunhist": 0, "tolstagnation": 10**9, "CMA_stds": None}
+    x0 = np.clip(variables.unscale(start), 0.05, 0.95)
+    tracker.evaluate(start[None, :])
+    restarts = 0
+    while True:
+        es = cma.CMAEvolutionStrategy(x0, 0.3, options)
+        while not es.stop():
+            before = tracker.best_total
+            unit = np.clip(np.array(es.ask()), 0.0, 1.0)
+            ev = tracker.evaluate(variables.scale(unit))
+            es.tell(list(unit), list(ev.total))
+            tracker.generation_done(before)
+        restarts += 1  # converged early: restart from a random point, as IPOP would
+        x0 = rng.uniform(0.05, 0.95, len(variables))
+        options["popsize"] = int(options["popsize"] * 2) if restarts < 4 else \
+            options["popsize"]
+
+
+def _local(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
+           evaluate: Callable[[Array], float]) -> tuple[Array, float]:
+    variables = problem.variables
+
+    def func(unit: Array) -> float:
+        return evaluate(variables.scale(np.clip(unit, 0.0, 1.0)))
+
+    found = minimize(func, x0_unit, method="Nelder-Mead",
+                     bounds=[(0.0, 1.0)] * len(variables),
+                     options={"maxfev": max_evals, "xatol": 1e-10, "fatol": 1e-14,
+                              "adaptive": len(variables) > 4})
+    return variables.scale(np.clip(found.x, 0.0, 1.0)), float(found.fun)
+
+
+def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: Search
+            ) -> None:
+    """Least squares on the deviations from the best design (the Jacobian by forward
+    differences, all V + 1 designs in one vectorized call), then Nelder–Mead on the
+    objective itself; every result goes through the tracker, so the best design only
+    ever improves."""
+    variables = problem.variables
+    n_vars = len(variables)
+    step = 1e-7
+
+    def fun(unit: Array) -> Array:
+        return problem.residuals(variables.scale(unit)[None, :])[0]
+
+    def jac(unit: Array) -> Array:
+        probes = np.repeat(unit[None, :], n_vars + 1, axis=0)
+        steps = np.where(unit + step <= 1.0, step, -step)
+        probes[np.arange(1, n_vars + 1), np.arange(n_vars)] += steps
+        res = problem.residuals(variables.scale(probes))
+        return ((res[1:] - res[0]) / steps[:, None]).T
+
+    x0 = variables.unscale(best)
+    if np.all(np.abs(fun(x0)) < 1e6):
+        found = least_squares(fun, x0, jac=jac, bounds=(0.0, 1.0), x_scale="jac",
+                              xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=50 * n_vars)
+        tracker.evaluations += found.nfev * (n_vars + 2)
+        tracker.evaluate(variables.scale(found.x)[None, :])
+
+    def evaluate(x: Array) -> float:
+        return float(tracker.evaluate(x[None, :]).total[0])
+
+    _local(problem, variables.unscale(tracker.best_x), 100 * n_vars, evaluate)
+
+
+def _local_run(problem: SynthesisProblem, x0_unit: Array, max_evals: int
+               ) -> tuple[Array, float, int]:
+    """One local search of the multi-start (runs on a worker)."""
+    count = [0]
+
+    def evaluate(x: Array) -> float:
+        count[0] += 1
+        return float(problem.evaluate(x[None, :]).total[0])
+
+    x, f = _local(problem, x0_unit, max_evals, evaluate)
+    return x, f, count[0]
+
+
+def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker,
+                    start: Array, rng: np.random.Generator, scheduler: str | None) -> None:
+    """Sample a Sobol population (one vectorized call per generation), then run local
+    searches from the best distinct samples, on Dask workers when asked."""
+    from mechloop.synthesis.parallel import map_tasks
+
+    variables = problem.variables
+    sampler = qmc.Sobol(len(variables), seed=rng)
+    samples = sampler.random(max(search.population * 4, 16))
+    before = tracker.best_total
+    tracker.evaluate(start[None, :])
+    ev = tracker.evaluate(variables.scale(samples))
+    tracker.generation_done(before)
+    order = np.argsort(ev.total)
+    starts = [samples[i] for i in order[: search.starts]]
+    budget = max(200, search.iterations * 10) * len(variables)
+    jobs = [(problem, s, budget) for s in starts]
+    runs = map_tasks(_run_job, jobs, scheduler=scheduler)
+    for x, _, count in runs:
+        before = tracker.best_total
+        tracker.evaluate(x[None, :])
+        tracker.evaluations += count - 1
+        tracker.generation_done(before)
+
+
+def _run_job(job: tuple[SynthesisProblem, Array, int]) -> tuple[Array, float, int]:
+    problem, x0, budget = job
+    return _local_run(problem, x0, budget)
