@@ -1,0 +1,46 @@
+"""Writing a synthesis result: the best design as a model file, the table of the best
+designs with every term of the best one, and the plots — each file written atomically."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pandas as pd
+
+from mechloop.model.load import atomic_write_bytes, save_model
+from mechloop.synthesis.search import SynthesisResult
+
+
+def terms_frame(result: SynthesisResult) -> pd.DataFrame:
+    """One row per term of the best design: Q, the mandatory conditions, each measured
+    quantity and each penalty."""
+    return pd.DataFrame({"term": list(result.terms()), "value": list(result.terms().values())})
+
+
+def write_table(result: SynthesisResult, path: str | os.PathLike[str]) -> Path:
+    """The best designs (CSV, JSON or XLSX by the suffix); an XLSX file also gets a sheet
+    with the terms of the best design and one with the convergence history."""
+    target = Path(path)
+    suffix = target.suffix.lower()
+    if suffix == ".xlsx":
+        import io
+
+        buffer = io.BytesIO()
+        with pd.ExcelWriter(buffer, engine="openpyxl") as writer:
+            result.designs.to_excel(writer, sheet_name="designs", index=False)
+            terms_frame(result).to_excel(writer, sheet_name="terms", index=False)
+            result.history.to_excel(writer, sheet_name="history", index=False)
+        atomic_write_bytes(target, buffer.getvalue())
+    elif suffix == ".json":
+        atomic_write_bytes(target, result.designs.to_json(orient="records",
+                                                          indent=2).encode())
+    else:
+        atomic_write_bytes(target, result.designs.to_csv(index=False).encode())
+    return target
+
+
+def write_model(result: SynthesisResult, path: str | os.PathLike[str]) -> Path:
+    """The model with the best design written in (YAML, or JSON by the suffix)."""
+    save_model(result.model, path)
+    return Path(path)
