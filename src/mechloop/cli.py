@@ -17,6 +17,7 @@ import numpy as np
 import typer
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.errors import MechloopError, ModelError, Problem
@@ -442,6 +443,93 @@ def schema(
         sys.stdout.write(text)
     else:
         atomic_write_text(output, text)
+
+
+@app.command(name="sweep")
+@user_errors
+def sweep_command(
+    model: ModelPath,
+    vary: Annotated[list[str], typer.Option("--vary", help="PATH=VALUES, once or twice (two: "
+                    "the full grid): a path in the model data (vectors.2.r, time.rpm, "
+                    "bodies.2.mass, forces.0.value, machine.delta) and a range "
+                    "start:stop:count or a list v1,v2,... in the model's units (or with "
+                    "a unit: '30 mm:60 mm:4')", show_default=False)],
+    collect: Annotated[list[str], typer.Option("--collect", help="COLUMN:REDUCTION, "
+                       "repeatable: a column of the results table (r3, da2, M_bal, RA, "
+                       "J_red, ...) and max, min, mean, rms, range, absmax or at=K "
+                       "(position K)", show_default=False)],
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="write the table "
+                      "here: .csv, .json or .xlsx (default: print it only)")] = None,
+    plot_file: Annotated[Path | None, typer.Option("--plot", help="draw the quantities "
+                         "against the parameter(s): .png, .svg or .pdf (default: none)")
+                         ] = None,
+    scheduler: Annotated[str | None, typer.Option(help="serial, processes (a local Dask "
+                         "cluster) or the address of a running dask.distributed scheduler, "
+                         "tcp://host:8786 (default: serial unless the sweep would take "
+                         "over 10 s)")] = None,
+    contour: Annotated[bool | None, typer.Option("--contour/--lines", help="two "
+                       "parameters: a contour map or one line per value of the second "
+                       "(default: a map above 6 values)", show_default=False)] = None,
+    units: Annotated[str | None, typer.Option(help="display units of the plot, e.g. "
+                     "force=kN,moment=kN*m (default SI and deg)")] = None,
+) -> None:
+    """Parametric analysis: solve the model for every value of one or two parameters and
+    tabulate reductions of result columns (KDAM's "parametric analysis" panel).
+
+    Example (peak and rms balancing moment of the engine against its speed):
+
+    mechloop sweep examples/single_cylinder_engine.yaml
+    --vary time.rpm=1000:4000:7 --collect M_bal:max --collect M_bal:rms
+
+    Add -o speed.csv to write the table and --plot speed.png to draw it;
+    a second --vary (e.g. --vary vectors.2.r=120:160:5) gives the grid.
+    """
+    from mechloop.synthesis.parallel import check_scheduler
+    from mechloop.synthesis.sweep import parse_vary
+    from mechloop.synthesis.sweep import sweep as run_sweep
+    from mechloop.views.display import Display
+    from mechloop.views.figure import FIGURE_SUFFIXES, ViewError, save_figure
+    from mechloop.views.sweep import plot_sweep
+
+    if output is not None and output.suffix.lower() not in SUFFIXES:
+        raise ViewError(f"{output}: unknown output format '{output.suffix}'",
+                        "use a file name ending in .csv, .json or .xlsx")
+    if plot_file is not None and plot_file.suffix.lower() not in FIGURE_SUFFIXES:
+        raise ViewError(f"{plot_file}: cannot save a figure as '{plot_file.suffix}'",
+                        "use a file name ending in .png, .svg or .pdf")
+    display = Display(**dict(item.split("=", 1) for item in _split(units)))
+    check_scheduler(scheduler)
+    pairs = [parse_vary(text) for text in vary]
+    m = load_model(model)
+    try:
+        with _progress("designs") as bar:
+            task = bar.add_task("designs", total=None)
+            frame = run_sweep(m, pairs, collect, scheduler=scheduler,
+                              progress=lambda done, total: bar.update(
+                                  task, completed=done, total=total))
+    except ModelError as exc:
+        raise (locate(exc, model) if exc.file is None else exc) from None
+    failed = frame[(frame["broken"] > 0) | (frame["note"] != "")]
+    shown = frame.drop(columns=["note"] + ([] if len(failed) else ["broken"]))
+    table = Table(title=f"Parametric analysis — {m.name or model}")
+    for head in shown.columns:
+        table.add_column(Text(str(head)), justify="right")
+    for row in shown.itertuples(index=False):
+        table.add_row(*(Text("—" if isinstance(v, float) and np.isnan(v) else
+                             f"{v:.6g}" if isinstance(v, float) else str(v)) for v in row))
+    Console(highlight=False, width=max(out.width, 30 + 18 * len(shown.columns))
+            ).print(table)
+    params = frame.attrs["parameters"]
+    for _, row in failed.iterrows():
+        label = ", ".join(f"{p} = {row[p]:.6g}" if isinstance(row[p], float)
+                          else f"{p} = {row[p]}" for p in params)
+        err.print(Text.assemble(("no values", "yellow"), f" for {label}: {row['note']}"))
+    if output is not None:
+        _write_frame(frame, output)
+        out.print(f"wrote {output} ({len(frame)} designs)")
+    if plot_file is not None:
+        save_figure(plot_sweep(frame, contour=contour, display=display), plot_file)
+        out.print(f"wrote {plot_file}")
 
 
 def _table(title: str, headers: list[str]) -> Table:
