@@ -214,3 +214,31 @@ def test_workspace_and_rotation_measures_match_the_solver():
     rel = np.degrees(one.values["a2"] - one.values["a3"])
     assert ev.measures["rotation a2-a3"][0] == pytest.approx(np.ptp(rel), rel=1e-9)
     assert HeadPoint(head=6) == model.synthesis.workspace.points[0]
+
+
+def test_cli_writes_the_best_model_table_and_plots(tmp_path):
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+
+    runner = CliRunner()
+    best = tmp_path / "best.yaml"
+    result = runner.invoke(app, ["synthesize", "examples/log10_function_generator.yaml",
+                                 "-o", str(best), "--table", str(tmp_path / "best.csv"),
+                                 "--plot", str(tmp_path / "c.png"),
+                                 "--fit", str(tmp_path / "f.svg"), "--iterations", "30"])
+    assert result.exit_code == 0, result.output
+    assert "Q = " in result.output and "wrote" in result.output
+    written = mechloop.load_model(best)
+    problem = SynthesisProblem(written)
+    from mechloop.synthesis.variables import current_values
+
+    q = problem.evaluate(current_values(written, problem.variables)[None, :]).q[0]
+    assert f"Q = {q:.6g}" in result.output
+    import pandas as pd
+
+    table = pd.read_csv(tmp_path / "best.csv")
+    assert list(table.columns[:2]) == ["rank", "total"] and (table["total"] >= q - 1e-9).all()
+    assert (tmp_path / "c.png").stat().st_size > 0 and (tmp_path / "f.svg").exists()
+    bad = runner.invoke(app, ["synthesize", "examples/four_bar.yaml"])
+    assert bad.exit_code == 2 and "no synthesis task" in bad.output

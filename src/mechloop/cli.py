@@ -541,3 +541,96 @@ def _table(title: str, headers: list[str]) -> Table:
 
 if __name__ == "__main__":  # pragma: no cover
     app()
+
+
+@app.command()
+@user_errors
+def synthesize(
+    model: ModelPath,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="write the best "
+                      "design as a model file (.yaml or .json); default: none")] = None,
+    table: Annotated[Path | None, typer.Option(help="the best designs: .csv, .json or "
+                     ".xlsx (with the terms and the history); default: none")] = None,
+    plot: Annotated[Path | None, typer.Option(help="convergence plot (.png, .svg, .pdf); "
+                    "default: none")] = None,
+    fit: Annotated[Path | None, typer.Option(help="the result against its targets "
+                   "(.png, .svg, .pdf); default: none")] = None,
+    method: Annotated[str | None, typer.Option(help="de, cmaes or multistart (default: the "
+                      "model's search.method, else de)")] = None,
+    seed: Annotated[int | None, typer.Option(help="random seed (default: the model's "
+                    "search.seed)")] = None,
+    iterations: Annotated[int | None, typer.Option(help="generations at most (default: "
+                          "the model's search.iterations)")] = None,
+    time_budget: Annotated[float | None, typer.Option("--time", help="time budget, s "
+                           "(default: the model's search.time, else none)")] = None,
+    scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
+                         "or a dask scheduler address tcp://host:8786 (default: chosen by "
+                         "the work's size)")] = None,
+) -> None:
+    """Synthesis by optimization: vary the dimensions listed in the model's synthesis:
+    section to reach its target (a path, a function, poses) under its conditions.
+    Ctrl-C stops the search and keeps the best design found so far.
+
+    Example: mechloop synthesize examples/four_bar_path_synthesis.yaml -o best.yaml
+    --table best.csv --plot convergence.png
+    """
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from mechloop.synthesis.output import write_model, write_table
+    from mechloop.synthesis.search import synthesize as run
+    from mechloop.views.figure import save_figure
+    from mechloop.views.synthesis import plot_convergence, plot_fit
+
+    m = load_model(model)
+    if m.synthesis is None:
+        raise ModelError([Problem(("synthesis",), "the model has no synthesis task",
+                                  "add a synthesis: section, see "
+                                  "examples/four_bar_path_synthesis.yaml")], str(model))
+    for path in (plot, fit):
+        if path is not None and path.suffix.lower() not in (".png", ".svg", ".pdf"):
+            raise ModelError([Problem((), f"cannot write a figure to {path}",
+                                      "use .png, .svg or .pdf")])
+    search = m.synthesis.search
+    total = iterations or search.iterations
+    columns = (TextColumn("[progress.description]{task.description}"), BarColumn(),
+               TextColumn("{task.completed}/{task.total} generations"),
+               TextColumn("best Q {task.fields[best]}"), TimeElapsedColumn())
+    with Progress(*columns, console=err, transient=True) as bar:
+        task = bar.add_task("synthesis", total=total, best="—")
+
+        def report(p) -> None:
+            best = f"{p.best_q:.6g}" if p.feasible else "no feasible design yet"
+            bar.update(task, completed=min(p.iteration, total), best=best)
+
+        try:
+            result = run(m, method=method, seed=seed, iterations=iterations,
+                         time_budget=time_budget, progress=report, scheduler=scheduler)
+        except ModelError as exc:
+            raise locate(exc, model) from None
+    unit = result.problem.q_unit
+    rows = _table("Best design", ["variable", "value", "unit"])
+    for name, value in result.values().items():
+        rows.add_row(name, f"{value:.6g}", result.problem.variables.units[
+            result.problem.variables.names.index(name)])
+    out.print(rows)
+    terms = _table("Terms of the objective", ["term", "value"])
+    for name, value in result.terms().items():
+        terms.add_row(name, f"{value:.6g}")
+    out.print(terms)
+    verdict = (f"Q = {result.q:.6g} {unit} ({m.synthesis.objective})" if result.feasible
+               else "no feasible design found: every design tried breaks the chain or "
+               "changes its assembly variant; widen the bounds")
+    out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
+              f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
+              f"{result.method})")
+    if output is not None:
+        if not result.feasible:
+            raise ModelError([Problem((), "no feasible design to write",
+                                      "widen the bounds or change the task")], str(model))
+        out.print(f"wrote {write_model(result, output)}")
+    if table is not None:
+        out.print(f"wrote {write_table(result, table)}")
+    if plot is not None:
+        out.print(f"wrote {save_figure(plot_convergence(result), plot)}")
+    if fit is not None:
+        out.print(f"wrote {save_figure(plot_fit(result), fit)}")

@@ -381,7 +381,10 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
     starts = [samples[i] for i in order[: search.starts]]
     budget = max(200, search.iterations * 10) * len(variables)
     jobs = [(problem, s, budget) for s in starts]
-    runs = map_tasks(_run_job, jobs, scheduler=scheduler)
+    clock = time.perf_counter()
+    problem.evaluate(variables.scale(starts[0])[None, :])
+    per_run = (time.perf_counter() - clock) * budget
+    runs = map_tasks(_run_job, jobs, scheduler=scheduler, seconds_per_item=per_run)
     for x, _, count in runs:
         before = tracker.best_total
         tracker.evaluate(x[None, :])
