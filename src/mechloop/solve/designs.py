@@ -68,6 +68,18 @@ class DesignResults:
             keeps &= ~changes
         return keeps
 
+    def subset(self, rows: NDArray[np.int64]) -> DesignResults:
+        """The designs ``rows`` only (arrays ``(len(rows), P)``)."""
+        return DesignResults(
+            model=self.model, arguments=self.arguments, time=self.time,
+            values={k: v[rows] for k, v in self.values.items()},
+            rates={k: v[rows] for k, v in self.rates.items()},
+            accels={k: v[rows] for k, v in self.accels.items()},
+            broken=self.broken[rows],
+            no_solution={k: v[rows] for k, v in self.no_solution.items()},
+            dead={k: v[rows] for k, v in self.dead.items()},
+            branch_changes={k: v[rows] for k, v in self.branch_changes.items()})
+
     def point(self, vectors: list[int] | tuple[int, ...]) -> tuple[Array, Array]:
         """x, y (m), shape ``(D, P)``, of the end of ``vectors`` laid end to end from the
         origin."""

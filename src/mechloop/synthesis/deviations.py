@@ -13,6 +13,11 @@ from numpy.typing import NDArray
 Array = NDArray[np.float64]
 
 
+#: Designs per block of the distance computation: its (rows, K, P) temporaries stay in
+#: the CPU cache.
+_ROWS = 16
+
+
 def distance_to_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]) -> Array:
     """Distance from each target to the nearest point of the traced polyline.
 
@@ -21,14 +26,24 @@ def distance_to_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]
     positions in order (segments between neighbours), so the result does not depend on
     where between two positions the nearest point falls.  Returns ``(D, K)``.
     """
-    a = z[:, None, :-1]                     # (D, 1, S)
-    seg = z[:, None, 1:] - a                # (D, 1, S)
-    rel = targets[None, :, None] - a        # (D, K, S)
-    length2 = (seg.real ** 2 + seg.imag ** 2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        t = (rel.real * seg.real + rel.imag * seg.imag) / np.where(length2 > 0, length2, 1)
-    t = np.clip(t, 0.0, 1.0)
-    return np.abs(rel - t * seg).min(axis=-1)
+    if z.shape[0] > _ROWS:
+        return np.concatenate([distance_to_curve(z[i:i + _ROWS], targets)
+                               for i in range(0, z.shape[0], _ROWS)])
+    x, y = z.real, z.imag
+    ax, ay = x[:, None, :-1], y[:, None, :-1]                  # (D, 1, S)
+    sx, sy = np.diff(x, axis=-1)[:, None, :], np.diff(y, axis=-1)[:, None, :]
+    length2 = sx * sx + sy * sy
+    inv = np.divide(1.0, length2, out=np.zeros_like(length2), where=length2 > 0)
+    rx = targets.real[None, :, None] - ax                     # (D, K, S)
+    ry = targets.imag[None, :, None] - ay
+    t = (rx * sx + ry * sy) * inv
+    np.clip(t, 0.0, 1.0, out=t)
+    rx -= t * sx
+    ry -= t * sy
+    rx *= rx
+    ry *= ry
+    rx += ry
+    return np.sqrt(rx.min(axis=-1))
 
 
 def distance_at_positions(z: NDArray[np.complex128], targets: NDArray[np.complex128],

@@ -282,7 +282,12 @@ class SynthesisProblem:
         broken_share = res.broken.mean(axis=-1)
         keeps = res.keeps_variant
         feasible = res.assembles & keeps
-        q = self._main(res, designs) if self.target_kind else np.zeros(n_designs)
+        q = np.full(n_designs, np.nan)
+        rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
+        if not self.target_kind:
+            q[:] = 0.0
+        elif rows.size:
+            q[rows] = self._main(res.subset(rows), designs[rows])
         terms: dict[str, Array] = {}
         measures: dict[str, Array] = {}
         self._desirable(res, designs, terms, measures)
@@ -481,7 +486,11 @@ def _place(model: Model, res: DesignResults, starts: dict[int, tuple], point: Po
     tails: dict[int, NDArray[np.complex128]] = {}
 
     def vector(n: int) -> NDArray[np.complex128]:
-        return res.values[f"r{n}"] * np.exp(1j * res.values[f"a{n}"])
+        r, a = res.values[f"r{n}"], res.values[f"a{n}"]
+        out = np.empty(r.shape, dtype=complex)
+        out.real = r * np.cos(a)
+        out.imag = r * np.sin(a)
+        return out
 
     def place(index: int, visiting: tuple[int, ...]) -> None:
         contour = model.contours[index]
