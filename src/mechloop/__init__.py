@@ -9,6 +9,7 @@ vector-loop method.
 
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.errors import MechloopError, ModelError, ModelFileError, Problem, SolveError
+from mechloop.model.groups import GroupMechanism, build_model
 from mechloop.model.load import load_model, save_model
 from mechloop.model.schema import (
     ArgumentRole,
@@ -32,6 +33,7 @@ __all__ = [
     "ChainBreak",
     "Contour",
     "DynamicResults",
+    "GroupMechanism",
     "LawArgument",
     "LinkRole",
     "MechloopError",
@@ -46,6 +48,7 @@ __all__ = [
     "TableTime",
     "Units",
     "Vector",
+    "build_model",
     "load_model",
     "save_model",
     "solve",

@@ -188,6 +188,10 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     if not isinstance(data, dict):
         raise ModelFileError([Problem((), "a model is a mapping of keys",
                                       "see examples/crank_slider.yaml")], file)
+    if "groups" in data:  # a mechanism built from Assur groups: generate its vector model
+        from mechloop.model.groups import model_from_group_data
+
+        return model_from_group_data(data, file=file, lines=lines)
     base = Path(file).resolve().parent if file else Path.cwd()
     data, csv_problems = _import_csv_tables(data, base)
     if csv_problems:
@@ -251,7 +255,9 @@ def _dedupe(problems: list[Problem]) -> list[Problem]:
 
 
 def load_model(path: str | os.PathLike[str]) -> Model:
-    """Read, validate and check a model file (``.yaml``, ``.yml`` or ``.json``).
+    """Read, validate and check a model file (``.yaml``, ``.yml`` or ``.json``); a file
+    with ``groups:`` describes the mechanism by Assur groups and gives the vector model
+    generated from them (:mod:`mechloop.model.groups`).
 
     Raises :class:`~mechloop.errors.ModelError` naming the file, line, item and fix of
     every problem.
