@@ -81,8 +81,9 @@ class ModelFileError(ModelError):
     """The model file cannot be read or parsed (missing, not YAML, not a mapping)."""
 
 
-class SolveError(ValueError, MechloopError):
-    """A model is valid but its data make a requested quantity undefined."""
+class HintedError(ValueError, MechloopError):
+    """An error told as one message and the fix; the base of the errors that are not
+    about a place in a model file."""
 
     def __init__(self, message: str, hint: str = ""):
         self.message = message
@@ -94,3 +95,7 @@ class SolveError(ValueError, MechloopError):
 
     def __reduce__(self):
         return (type(self), (self.message, self.hint))
+
+
+class SolveError(HintedError):
+    """A model is valid but its data make a requested quantity undefined."""

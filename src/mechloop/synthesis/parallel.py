@@ -29,7 +29,7 @@ import os
 from collections.abc import Callable, Iterable, Sequence
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from mechloop.errors import MechloopError
+from mechloop.errors import HintedError
 
 if TYPE_CHECKING:
     from distributed import Client
@@ -56,19 +56,9 @@ AUTO_MIN_SECONDS = 10.0
 CONNECT_TIMEOUT = 30.0
 
 
-class SchedulerError(ValueError, MechloopError):
+class SchedulerError(HintedError):
     """The scheduler asked for cannot be used: an unknown name, an address that does not
     answer, a cluster without workers."""
-
-    def __init__(self, message: str, hint: str = ""):
-        self.message, self.hint = message, hint
-        super().__init__(message, hint)
-
-    def __str__(self) -> str:
-        return self.message + (f"\n    fix: {self.hint}" if self.hint else "")
-
-    def __reduce__(self):
-        return (type(self), (self.message, self.hint))
 
 
 def choose_scheduler(n_items: int, *, seconds_per_item: float | None = None,

@@ -274,24 +274,43 @@ class SynthesisProblem:
         """Global position (m, as x + iy) of a point at every position, ``(D, P)``."""
         return _place(self.model, results, self.variables.starts(designs), point)
 
-    def evaluate(self, designs: Array) -> Evaluation:
-        """Every term for the population ``designs`` (SI, shape ``(D, V)``)."""
-        designs = np.atleast_2d(np.asarray(designs, dtype=float))
+    def _assess(self, designs: Array) -> tuple[DesignResults, NDArray[np.bool_],
+                                                Array | None, dict[str, Array],
+                                                dict[str, Array]]:
+        """Solve a population and compute what both :meth:`evaluate` and
+        :meth:`residuals` need: the results, the mandatory conditions, the weighted
+        deviations ``(D, K)`` (NaN rows where a design does not assemble; None without a
+        target), and the penalty terms and measures."""
         res = self.solve(designs)
-        n_designs = designs.shape[0]
-        broken_share = res.broken.mean(axis=-1)
-        keeps = res.keeps_variant
-        feasible = res.assembles & keeps
-        q = np.full(n_designs, np.nan)
-        rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
-        if not self.target_kind:
-            q[:] = 0.0
-        elif rows.size:
-            q[rows] = self._main(res.subset(rows), designs[rows])
+        feasible = res.assembles & res.keeps_variant
+        dev = None
+        if self.target_kind:
+            rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
+            dev = np.full((designs.shape[0], self._target_count()), np.nan)
+            if rows.size:
+                dev[rows] = self.deviations(res.subset(rows), designs[rows])
+            if self.weights is not None:
+                dev = dev * self.weights[None, :]
         terms: dict[str, Array] = {}
         measures: dict[str, Array] = {}
         self._desirable(res, designs, terms, measures)
         self._criteria(res, designs, feasible, terms, measures)
+        return res, feasible, dev, terms, measures
+
+    def _target_count(self) -> int:
+        if self.target_kind == "function":
+            return self.function_positions.size
+        return self.targets.size
+
+    def evaluate(self, designs: Array) -> Evaluation:
+        """Every term for the population ``designs`` (SI, shape ``(D, V)``)."""
+        designs = np.atleast_2d(np.asarray(designs, dtype=float))
+        res, feasible, dev, terms, measures = self._assess(designs)
+        n_designs = designs.shape[0]
+        broken_share = res.broken.mean(axis=-1)
+        keeps = res.keeps_variant
+        q = np.zeros(n_designs) if dev is None else dv.reduce_deviation(
+            dev, self.task.objective)
         penalty = sum(terms.values()) if terms else np.zeros(n_designs)
         with np.errstate(invalid="ignore"):
             total = q + penalty
@@ -306,17 +325,8 @@ class SynthesisProblem:
         """Deviations (weighted) and the square roots of the penalties, ``(D, K + T)``,
         for a least-squares polish; an infeasible design gets a large constant row."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
-        res = self.solve(designs)
-        parts = []
-        if self.target_kind:
-            dev = self.deviations(res, designs)
-            if self.weights is not None:
-                dev = dev * self.weights[None, :]
-            parts.append(dev)
-        terms: dict[str, Array] = {}
-        self._desirable(res, designs, terms, {})
-        feasible = res.assembles & res.keeps_variant
-        self._criteria(res, designs, feasible, terms, {})
+        _, feasible, dev, terms, _ = self._assess(designs)
+        parts = [] if dev is None else [dev]
         parts += [np.sqrt(np.maximum(t, 0))[:, None] for t in terms.values()]
         out = np.concatenate(parts, axis=1) if parts else np.zeros((designs.shape[0], 1))
         bad = ~feasible | ~np.isfinite(out).all(axis=1)
@@ -342,10 +352,6 @@ class SynthesisProblem:
         output = results.values[self.output][:, self.function_positions] / self.output_factor
         return dv.function_error(output, self.function_target,
                                  relative=self.task.function.relative)
-
-    def _main(self, res: DesignResults, designs: Array) -> Array:
-        dev = self.deviations(res, designs)
-        return dv.reduce_deviation(dev, self.task.objective, self.weights)
 
     def _desirable(self, res: DesignResults, designs: Array, terms: dict[str, Array],
                    measures: dict[str, Array]) -> None:

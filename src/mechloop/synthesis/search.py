@@ -24,7 +24,7 @@ from scipy.stats import qmc
 
 from mechloop.model.schema import Model
 from mechloop.model.synthesis import Search
-from mechloop.model.units import to_si
+from mechloop.model.units import to_si, unit_factor
 from mechloop.synthesis.problem import Evaluation, SynthesisProblem
 from mechloop.synthesis.variables import current_values
 
@@ -117,13 +117,12 @@ class _Tracker:
 
 
 def _in_q_units(problem: SynthesisProblem, value) -> float:
-    if isinstance(value, str):
-        kind = "angle" if problem.q_unit == problem.model.units.angle and \
-            problem.target_kind == "function" and problem.output[0] == "a" else "length"
-        from mechloop.model.units import unit_factor
-
-        return to_si(value, kind, problem.q_unit) / unit_factor(problem.q_unit, kind)
-    return float(value)
+    """A value of Q (a number in Q's unit, or a quantity string) in Q's unit."""
+    if not isinstance(value, str):
+        return float(value)
+    angle = problem.target_kind == "function" and problem.output[0] == "a"
+    kind = "angle" if angle else "length"
+    return to_si(value, kind, problem.q_unit) / unit_factor(problem.q_unit, kind)
 
 
 @dataclass(frozen=True)
@@ -286,7 +285,7 @@ def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, sta
     seed = int(rng.integers(1, 2**31 - 1))
     options = {"bounds": [0.0, 1.0], "popsize": search.population, "seed": seed,
                "verbose": -9, "maxiter": search.iterations + 1, "tolfun": 0, "tolx": 1e-14,
-               "tolfunhist": 0, "tolstagnation": 10**9, "CMA_stds": None}
+               "tolfunhist": 0, "tolstagnation": 10**9}
     x0 = np.clip(variables.unscale(start), 0.05, 0.95)
     tracker.evaluate(start[None, :])
     restarts = 0

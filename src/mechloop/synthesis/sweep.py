@@ -44,7 +44,7 @@ import pint
 from numpy.typing import ArrayLike, NDArray
 
 from mechloop.dynamics.analysis import solve_dynamics
-from mechloop.errors import MechloopError, ModelError, SolveError
+from mechloop.errors import HintedError, ModelError, SolveError
 from mechloop.model.schema import Model
 from mechloop.model.units import registry
 from mechloop.solve.kinematics import solve
@@ -70,19 +70,9 @@ _AT = re.compile(r"^at\s*=\s*(-?\d+)$")
 Values = str | float | ArrayLike | Sequence[float | str]
 
 
-class SweepError(ValueError, MechloopError):
+class SweepError(HintedError):
     """A sweep asked for something the model does not have: a path, a column, a
     reduction, a value that cannot be read."""
-
-    def __init__(self, message: str, hint: str = ""):
-        self.message, self.hint = message, hint
-        super().__init__(message, hint)
-
-    def __str__(self) -> str:
-        return self.message + (f"\n    fix: {self.hint}" if self.hint else "")
-
-    def __reduce__(self):
-        return (type(self), (self.message, self.hint))
 
 
 # ------------------------------------------------------------------------------ values

@@ -8,24 +8,14 @@ from pathlib import Path
 
 from matplotlib.figure import Figure
 
-from mechloop.errors import MechloopError
+from mechloop.errors import HintedError
 
 #: File types a figure can be saved as.
 FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 
 
-class ViewError(ValueError, MechloopError):
+class ViewError(HintedError):
     """A view cannot be drawn as asked (an unknown parameter, an unsupported file type)."""
-
-    def __init__(self, message: str, hint: str = ""):
-        self.message, self.hint = message, hint
-        super().__init__(message, hint)
-
-    def __str__(self) -> str:
-        return self.message + (f"\n    fix: {self.hint}" if self.hint else "")
-
-    def __reduce__(self):
-        return (type(self), (self.message, self.hint))
 
 
 def new_figure(width: float = 8.0, height: float = 6.0) -> Figure:
