@@ -10,7 +10,7 @@ computation for one design.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -28,6 +28,32 @@ Array = NDArray[np.float64]
 CHUNK_ELEMENTS = 1 << 16
 
 
+class NotSolved(Mapping[str, Array]):
+    """The rates or the accelerations of a position-only solve
+    (``solve_designs(..., derivatives=False)``): any look-up raises :class:`SolveError`
+    instead of giving numbers that were never computed."""
+
+    def __init__(self, what: str):
+        self.what = what
+
+    def _refuse(self) -> SolveError:
+        return SolveError(f"the {self.what} were not solved: these results come from "
+                          "solve_designs(..., derivatives=False), which solves positions "
+                          "only", "call solve_designs(..., derivatives=True)")
+
+    def __getitem__(self, name: str) -> Array:
+        raise self._refuse()
+
+    def __iter__(self) -> Iterator[str]:
+        raise self._refuse()
+
+    def __len__(self) -> int:
+        raise self._refuse()
+
+    def __repr__(self) -> str:
+        return f"NotSolved({self.what!r})"
+
+
 @dataclass(frozen=True)
 class DesignResults:
     """Every parameter of every design at every position.
@@ -37,15 +63,21 @@ class DesignResults:
     Broken positions are NaN and marked in ``broken``; ``no_solution`` and ``dead`` say
     per contour where it has no real solution or a singular Jacobian; ``branch_changes``
     per contour and design whether the assembly branch (the sign of the loop's Jacobian)
-    changes between positions where it is regular.
+    changes between positions where it is regular.  Parameters that stay constant
+    (constants and links of constants) are read-only broadcast views: their values, and
+    their rates and accelerations (zeros).
+
+    After a position-only solve (``derivatives=False``) ``rates`` and ``accels`` are
+    :class:`NotSolved`: looking anything up in them raises :class:`SolveError`; see
+    :attr:`derivatives`.
     """
 
     model: Model
     arguments: dict[int, Array]
     time: Array | None
     values: dict[str, Array]
-    rates: dict[str, Array]
-    accels: dict[str, Array]
+    rates: Mapping[str, Array]
+    accels: Mapping[str, Array]
     broken: NDArray[np.bool_]
     no_solution: dict[int, NDArray[np.bool_]]
     dead: dict[int, NDArray[np.bool_]]
@@ -54,6 +86,12 @@ class DesignResults:
     @property
     def designs(self) -> int:
         return self.broken.shape[0]
+
+    @property
+    def derivatives(self) -> bool:
+        """Whether ``rates`` and ``accels`` were solved (False after a position-only
+        solve)."""
+        return not isinstance(self.rates, NotSolved)
 
     @property
     def assembles(self) -> NDArray[np.bool_]:
@@ -72,9 +110,11 @@ class DesignResults:
         """The designs ``rows`` only (arrays ``(len(rows), P)``)."""
         return DesignResults(
             model=self.model, arguments=self.arguments, time=self.time,
-            values={k: v[rows] for k, v in self.values.items()},
-            rates={k: v[rows] for k, v in self.rates.items()},
-            accels={k: v[rows] for k, v in self.accels.items()},
+            values={k: _rows(v, rows) for k, v in self.values.items()},
+            rates=({k: _rows(v, rows) for k, v in self.rates.items()}
+                   if self.derivatives else self.rates),
+            accels=({k: _rows(v, rows) for k, v in self.accels.items()}
+                    if self.derivatives else self.accels),
             broken=self.broken[rows],
             no_solution={k: v[rows] for k, v in self.no_solution.items()},
             dead={k: v[rows] for k, v in self.dead.items()},
@@ -89,12 +129,20 @@ class DesignResults:
 
 
 def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
+                  derivatives: bool = True,
                   chunk_elements: int = CHUNK_ELEMENTS) -> DesignResults:
     """Solve ``D`` designs of ``model`` at every position in one vectorized pass.
 
     ``overrides`` maps parameter names (``'r3'``, ``'a5'``) to SI values shaped ``(D,)``:
     for a constant parameter its value (m or rad), for a link its own delta, for a
     driven parameter its offset.  Every override has the same length ``D``.
+
+    With ``derivatives=False`` only positions are solved: ``values``, ``broken``,
+    ``no_solution``, ``dead`` and ``branch_changes`` are exactly those of
+    ``derivatives=True`` (the same arithmetic, the velocity and acceleration solves
+    left out), and ``rates`` and ``accels`` are :class:`NotSolved`, which raise
+    :class:`SolveError` on any look-up.  Synthesis solves so when no criterion reads a
+    rate or an acceleration.
 
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
@@ -106,52 +154,78 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
                          f"pass 1-D arrays of one length (got shapes {sorted(sizes)})")
     n_designs = next(iter(sizes))[0] if sizes else 1
     n_pos = model.positions + 1
+    full = (n_designs, n_pos)
     time = model_time(model)
     args = model_arguments(model, time)
     chunk = max(1, int(chunk_elements) // n_pos)
 
     setup = _setup(model, structure, args, over)
     names = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"]
-    values = {name: np.empty((n_designs, n_pos)) for name in names}
-    rates = {name: np.empty((n_designs, n_pos)) for name in names}
-    accels = {name: np.empty((n_designs, n_pos)) for name in names}
+    # Parameters that no design changes over positions are broadcast, not copied: a
+    # constant, or a link of one, is its root's value plus the link's delta.
+    values: dict[str, Array] = {}
+    for name in names:
+        if name in setup.constant:
+            root = structure.links[name].root if name in structure.links else name
+            value = (setup.constants[name] if name == root
+                     else setup.constants[root] + setup.deltas[name])
+            values[name] = np.broadcast_to(value, full)
+    still = np.broadcast_to(0.0, full)
+    rates = {name: still for name in values}
+    accels = dict(rates)
+    for name in setup.varying:
+        values[name] = np.empty(full)
+        if derivatives:
+            rates[name], accels[name] = np.empty(full), np.empty(full)
+    values = {name: values[name] for name in names}
     numbers = [c.number for c in setup.ordered]
-    no_solution = {c: np.zeros((n_designs, n_pos), dtype=bool) for c in numbers}
-    dead = {c: np.zeros((n_designs, n_pos), dtype=bool) for c in numbers}
+    no_solution = {c: np.zeros(full, dtype=bool) for c in numbers}
+    dead = {c: np.zeros(full, dtype=bool) for c in numbers}
     changes = {c: np.zeros(n_designs, dtype=bool) for c in numbers}
 
     for lo in range(0, n_designs, chunk):
         hi = min(lo + chunk, n_designs)
         shape = (hi - lo, n_pos)
         part = _setup(model, structure, args, {k: v[lo:hi] for k, v in over.items()})
-        block = _solve_block(part, 0, n_pos, shape, {})
+        block = _solve_block(part, 0, n_pos, shape, {}, derivatives=derivatives)
         for c in numbers:
             no_solution[c][lo:hi] = block.no_solution[c]
             dead[c][lo:hi] = block.dead[c]
             branch = block.branch[c]
             changes[c][lo:hi] = (branch.max(axis=-1) > 0) & (branch.min(axis=-1) < 0)
-        for name in names:
+        for name in setup.varying:
             p = block.params[name]
-            values[name][lo:hi] = np.broadcast_to(p.value, shape)
-            rates[name][lo:hi] = np.broadcast_to(p.rate, shape)
-            accels[name][lo:hi] = np.broadcast_to(p.accel, shape)
+            values[name][lo:hi] = p.value
+            if derivatives:
+                rates[name][lo:hi] = p.rate
+                accels[name][lo:hi] = p.accel
 
-    broken = np.zeros((n_designs, n_pos), dtype=bool)
+    broken = np.zeros(full, dtype=bool)
     for c in numbers:
-        broken |= no_solution[c] | dead[c]
+        broken |= no_solution[c]
+        broken |= dead[c]
     _finish_angles(setup, {name: values[name] for name in setup.varying})
-    for name in setup.varying:
-        for arr in (values[name], rates[name], accels[name]):
-            arr[broken] = np.nan
+    if broken.any():
+        for name in setup.varying:
+            for table in (values, rates, accels) if derivatives else (values,):
+                np.copyto(table[name], np.nan, where=broken)
     return DesignResults(
         model=model,
         arguments={k: s.value for k, s in args.items()},
         time=None if time is None else time.value,
         values=values,
-        rates=rates,
-        accels=accels,
+        rates=rates if derivatives else NotSolved("rates"),
+        accels=accels if derivatives else NotSolved("accelerations"),
         broken=broken,
         no_solution=no_solution,
         dead=dead,
         branch_changes=changes,
     )
+
+
+def _rows(table: Array, rows: NDArray[np.int64]) -> Array:
+    """Rows ``rows`` of a ``(D, P)`` table; a broadcast table stays a broadcast view."""
+    if table.strides[0] == 0 or table.strides[-1] == 0:
+        return np.broadcast_to(table[rows[:1] if table.strides[0] == 0 else rows, :1],
+                               (len(rows), table.shape[-1]))
+    return table[rows]

@@ -57,12 +57,13 @@ DEAD_POINT = "dead point: the loop's Jacobian is singular, velocities are unboun
 
 @dataclass
 class _Param:
-    """A parameter over positions: value, rate, acceleration (arrays or scalars), and for
-    angles the cached cosine and sine of the value."""
+    """A parameter over positions: value, rate, acceleration (arrays or scalars; rate and
+    acceleration are None in a position-only solve), and for angles the cached cosine and
+    sine of the value."""
 
     value: Array | float
-    rate: Array | float
-    accel: Array | float
+    rate: Array | float | None
+    accel: Array | float | None
     cos: Array | float | None = None
     sin: Array | float | None = None
 
@@ -87,19 +88,40 @@ def unwrap_angles(angle: Array, ok: NDArray[np.bool_]) -> Array:
         base = np.mod(angle[..., :1], two_pi)
         if np.all(np.abs(steps) < np.pi):
             return angle + (base - angle[..., :1])
-        steps = (steps + np.pi) % two_pi - np.pi
-        return np.concatenate([base, base + np.cumsum(steps, axis=-1)], axis=-1)
-    idx = np.where(ok, np.arange(angle.shape[-1]), 0)
-    idx = np.maximum.accumulate(idx, axis=-1)
-    filled = np.take_along_axis(np.where(ok, angle, 0.0), idx, axis=-1)
-    first = np.argmax(ok, axis=-1)[..., None]
-    start = np.take_along_axis(filled, first, axis=-1)
-    filled = np.where(np.arange(angle.shape[-1]) < first, start, filled)
-    steps = np.diff(filled, axis=-1)
-    steps = (steps + np.pi) % two_pi - np.pi
-    base = np.mod(start, two_pi)
-    cont = np.concatenate([base, base + np.cumsum(steps, axis=-1)], axis=-1)
-    return np.where(ok, cont, np.nan)
+        return np.concatenate([base, base + np.cumsum(_wrap(steps), axis=-1)], axis=-1)
+    # Each step goes from the previous position where ``ok`` holds (zero at the others and
+    # before the first): the regular angles, taken in row order, differenced pairwise.
+    rows = ok.reshape(-1, ok.shape[-1])
+    kept = angle.reshape(rows.shape)[rows]
+    jumps = np.zeros(kept.shape)
+    np.subtract(kept[1:], kept[:-1], out=jumps[1:])
+    counts = np.count_nonzero(rows, axis=-1)
+    firsts = (np.cumsum(counts) - counts)[counts > 0]
+    _wrap(jumps)
+    jumps[firsts] = 0.0  # the first regular position of a row starts it
+    steps = np.zeros(rows.shape)
+    steps[rows] = jumps
+    first = np.argmax(rows, axis=-1)[:, None]
+    base = np.mod(np.take_along_axis(angle.reshape(rows.shape), first, axis=-1), two_pi)
+    cont = np.empty(rows.shape)
+    cont[:, :1] = base
+    np.cumsum(steps[:, 1:], axis=-1, out=cont[:, 1:])
+    cont[:, 1:] += base
+    cont[~rows] = np.nan
+    return cont.reshape(angle.shape)
+
+
+def _wrap(steps: Array) -> Array:
+    """``(steps + π) mod 2π − π`` in place (angle steps wrapped to [−π, π)), bit for bit
+    as :func:`numpy.mod` gives it; the modulo (a slow call) runs only where
+    ``steps + π`` lies outside [0, 2π), where it is not the identity."""
+    steps += np.pi
+    with np.errstate(invalid="ignore"):
+        wide = (steps < 0) | (steps >= 2 * np.pi)
+    if wide.any():
+        steps[wide] = np.mod(steps[wide], 2 * np.pi)
+    steps -= np.pi
+    return steps
 
 
 def _constant_si(model: Model, name: str, value: float | str) -> float:
@@ -188,13 +210,18 @@ class _Block:
 
 
 def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
-                 starts: Mapping[int, int]) -> _Block:
-    """Solve positions ``lo:hi`` of every contour; arrays come out shaped ``shape``."""
+                 starts: Mapping[int, int], *, derivatives: bool = True) -> _Block:
+    """Solve positions ``lo:hi`` of every contour; arrays come out shaped ``shape``.
+
+    With ``derivatives=False`` only the values are solved (every rate and acceleration is
+    None); the masks, variants and branches are the same either way.
+    """
     structure, deltas = setup.structure, setup.deltas
-    params = {name: _Param(value, 0.0, 0.0) for name, value in setup.constants.items()}
+    still = 0.0 if derivatives else None
+    params = {name: _Param(value, still, still) for name, value in setup.constants.items()}
     for name, (sig, offset) in setup.driven.items():
-        params[name] = _Param(sig.value[lo:hi] + offset, sig.rate[lo:hi],
-                              sig.accel[lo:hi])
+        params[name] = (_Param(sig.value[lo:hi] + offset, sig.rate[lo:hi], sig.accel[lo:hi])
+                        if derivatives else _Param(sig.value[lo:hi] + offset, None, None))
 
     def resolve(name: str) -> _Param | None:
         """The parameter, following links once their root is known."""
@@ -219,7 +246,8 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
         for need in info.needs:
             inherited |= block.broken[need]
         none, dead, variant, branch = _solve_contour(info, params, resolve, shape,
-                                                     start=starts.get(info.number, 1))
+                                                     start=starts.get(info.number, 1),
+                                                     derivatives=derivatives)
         block.last_variant[info.number] = variant
         block.no_solution[info.number] = none & ~inherited
         block.dead[info.number] = dead & ~inherited
@@ -332,11 +360,13 @@ def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
 
 
 def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
-                   shape: tuple[int, ...], *, start: int = 1
+                   shape: tuple[int, ...], *, start: int = 1, derivatives: bool = True
                    ) -> tuple[NDArray[np.bool_], NDArray[np.bool_], int, NDArray[np.int8]]:
     """Solve one contour, adding its functions to ``params``; arrays shaped ``shape``.
 
     ``start`` is the variant at the first position when the variant is tracked (``auto``).
+    With ``derivatives=False`` the rates and accelerations of the functions are left None
+    (and none are read).
     Returns two masks over positions — no real solution, and dead point (singular
     Jacobian; positions where an input is already NaN come out in the first mask) —, the
     variant in use at the last position, and the sign of the Jacobian determinant (+1,
@@ -394,9 +424,9 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
 
     for name, (val, c, s) in zip((u1, u2), unknowns, strict=True):
         if name[0] == "a":
-            params[name] = _Param(np.arctan2(s, c), 0.0, 0.0, c, s)  # unwrapped at the end
+            params[name] = _Param(np.arctan2(s, c), None, None, c, s)  # unwrapped at the end
         else:
-            params[name] = _Param(val, 0.0, 0.0)
+            params[name] = _Param(val, None, None)
 
     # Jacobian columns of the unknowns: e_j for a length, r_j n_j for an angle.
     def column(name: str) -> tuple[Array, Array]:
@@ -413,7 +443,25 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
     norm = np.sqrt((c1x * c1x + c1y * c1y) * (c2x * c2x + c2y * c2y))
     with np.errstate(invalid="ignore"):
         singular = ok & ~(np.abs(det) > SINGULAR_SIN * norm)
-    good = ok & ~singular
+        good = ok & ~singular
+        # the sign of det where the solution is regular (det is not 0 there), else 0
+        branch = ((good & (det > 0)).astype(np.int8)
+                  - (good & (det < 0)).astype(np.int8))
+    if derivatives:
+        _solve_derivatives(info, params, (c1x, c1y, c2x, c2y), det, good)
+    return ~ok, singular, last, branch
+
+
+def _solve_derivatives(info: ContourInfo, params: dict[str, _Param],
+                       columns: tuple[Array, Array, Array, Array], det: Array,
+                       good: NDArray[np.bool_]) -> None:
+    """Rates and accelerations of the contour's two functions (NaN where not ``good``),
+    from the Jacobian ``columns`` (x, y of the first unknown's, then the second's) and
+    their determinant ``det``: two 2×2 linear solves."""
+    u1, u2 = info.functions
+    for name in (u1, u2):
+        params[name].rate = params[name].accel = 0.0  # unknown until solved below
+    c1x, c1y, c2x, c2y = columns
     all_good = bool(good.all())
     inv_det = 1.0 / (det if all_good else np.where(good, det, 1.0))
 
@@ -460,8 +508,6 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
             bx = bx - tangential * s
             by = by + tangential * c
     params[u1].accel, params[u2].accel = solve2(bx, by)
-    branch = np.where(good, np.sign(det), 0).astype(np.int8)
-    return ~ok, singular, last, branch
 
 
 def _points(module: str, unknowns, params: dict[str, _Param], v1: int, v2: int
