@@ -52,13 +52,24 @@ point (``O``, ``A``; a second pin at the same point ``O2``), slides ``S`` + the 
 sliding link (``SB``).
 
 :func:`build` also says where each named point is (:class:`PointLocation`) and which vector
-parameter carries each dimension (:class:`Carrier`, for synthesis).
+parameter carries each dimension (:class:`Carrier`).
+
+**Synthesis** (``synthesis:``, :class:`GroupSynthesisTask`) varies dimensions by the names
+:func:`dimension_names` lists — paths in the document (``input.length``,
+``groups[0].lengths[1]``, ``points.P.angle``) and ``ground.C.x`` / ``ground.C.y`` — and
+traces named points.  The builder writes the vector model's task with one
+:class:`~mechloop.model.synthesis.Dimension` per varied name: the constants it sets (its
+carriers; for a ground coordinate the components of the frame vectors it ends and the
+starts of the contours that start there, written as coordinates even at the origin).
+:func:`with_dimensions` puts a result's values back into the mechanism,
+:func:`save_mechanism` writes it, :func:`mechanism_of` reads a group file.
 """
 
 from __future__ import annotations
 
 import cmath
 import math
+import re
 from dataclasses import dataclass, field
 from difflib import get_close_matches
 from pathlib import Path
@@ -66,6 +77,7 @@ from typing import Annotated, Any, Literal
 
 import numpy as np
 from pydantic import ConfigDict, Discriminator, Field, Tag, ValidationError
+from pydantic.json_schema import SkipJsonSchema
 
 from mechloop.errors import ModelError, Problem, format_path
 from mechloop.model.dynamic import (
@@ -80,6 +92,14 @@ from mechloop.model.dynamic import (
 )
 from mechloop.model.schema import Model, Units
 from mechloop.model.signals import Argument, Scalar, Time, _Frozen
+from mechloop.model.synthesis import (
+    Dimension,
+    MotionTask,
+    PathTask,
+    SynthesisTask,
+    Tie,
+    Workspace,
+)
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
 GROUND = "ground"
@@ -297,6 +317,47 @@ class LinkMoment(_Frozen):
     name: str | None = None
 
 
+class GroupPathTask(PathTask):
+    """Path generation (as in a vector model) traced by a named point."""
+
+    point: PointRef = Field(  # type: ignore[assignment]
+        description="the tracing point: a named point, e.g. P (or LINK.P)")
+
+
+class GroupMotionTask(MotionTask):
+    """Motion generation (as in a vector model) of a named point; ``angle`` is a vector
+    parameter of the generated model (``mechloop info`` lists them)."""
+
+    point: PointRef = Field(description="the guided point: a named point")  # type: ignore[assignment]
+
+
+class GroupWorkspace(Workspace):
+    """Named points stay inside a box or a polygon at every position."""
+
+    points: list[PointRef] = Field(description="named points")  # type: ignore[assignment]
+
+
+class GroupSynthesisTask(SynthesisTask):
+    """The synthesis task of a mechanism built from Assur groups: ``vary`` names the
+    dimensions as the mechanism's document spells them (``input.length``,
+    ``groups[0].lengths[1]``, ``groups[1].guide.angle``, ``points.P.distance``,
+    ``ground.C.x``), and points are named points.  The builder translates it into the
+    vector model's task (:class:`~mechloop.model.synthesis.SynthesisTask` with
+    ``dimensions``); a parameter that only the generated model has (``function.output``,
+    ``motion.angle``, ``rotation``, ``criteria``) is named as there (``a3``)."""
+
+    vary: dict[str, tuple[Scalar, Scalar]] = Field(
+        description="dimensions to vary with their bounds [low, high] (model units): "
+        "input.length, input.angle, groups[i].lengths[j], groups[i].length, "
+        "groups[i].guide.angle, groups[i].guide.offset, groups[i].slot, "
+        "points.NAME.distance, points.NAME.angle, ground.NAME.x, ground.NAME.y")
+    path: GroupPathTask | None = None  # type: ignore[assignment]
+    motion: GroupMotionTask | None = None  # type: ignore[assignment]
+    workspace: GroupWorkspace | None = None  # type: ignore[assignment]
+    dimensions: SkipJsonSchema[dict[str, Dimension]] = Field(  # type: ignore[assignment]
+        default_factory=dict, description="written by the builder, not in a group file")
+
+
 class GroupMechanism(_Frozen):
     """A planar mechanism as an input group plus class-II Assur groups (see the module
     docstring for points, lines and variants).  ``units``, ``positions``, ``time``,
@@ -323,6 +384,9 @@ class GroupMechanism(_Frozen):
     gravity: Gravity | None = None
     friction: Friction = Friction()
     machine: Machine | None = None
+    synthesis: GroupSynthesisTask | None = Field(
+        None, description="a synthesis task that varies the dimensions by their names "
+        "(mechloop synthesize)")
 
     @property
     def formula(self) -> str:
@@ -466,6 +530,23 @@ def model_from_group_data(data: dict[str, Any], *, file: str | None = None,
     """Validate the plain data of a group-built model file and build its vector model;
     every problem is raised at once, located in the file (see
     :func:`mechloop.model.load.model_from_data`, which calls this for ``groups:``)."""
+    return _from_group_data(data, file, lines, build_it=True)
+
+
+def mechanism_of(path: str | Path) -> GroupMechanism | None:
+    """The :class:`GroupMechanism` a model file describes (with its tables read), or None
+    for a vector model file.  Problems are raised located, as by
+    :func:`mechloop.load_model`."""
+    from mechloop.model.load import read_document
+
+    data, lines = read_document(path)
+    if "groups" not in data:
+        return None
+    return _from_group_data(data, str(path), lines, build_it=False)
+
+
+def _from_group_data(data: dict[str, Any], file: str | None,
+                     lines: dict[tuple[Any, ...], int] | None, *, build_it: bool) -> Any:
     from mechloop.model.load import _data_path, _dedupe, _describe, _import_csv_tables, _locate
 
     lines = lines or {}
@@ -495,9 +576,68 @@ def model_from_group_data(data: dict[str, Any], *, file: str | None = None,
             problems.append(Problem(path, message, hint))
         raise located(problems) from None
     try:
-        return build_model(mech)
+        model = build_model(mech)
     except ModelError as exc:
         raise located(list(exc.problems)) from None
+    return model if build_it else mech
+
+
+def with_dimensions(mech: GroupMechanism, values: dict[str, float]) -> GroupMechanism:
+    """``mech`` with dimensions set to ``values`` (model units), keyed as synthesis names
+    them (``groups[0].lengths[1]``, ``points.P.angle``, ``ground.C.x``; e.g. a synthesis
+    result's ``values()``).  The synthesis task is kept, to refine the result."""
+    names = dimension_names(mech)
+    unknown = [name for name in values if name not in names]
+    if unknown:
+        raise ModelError([Problem(("synthesis", "vary", name), f"no dimension named "
+                                  f"{name!r}", _choose(name, names)) for name in unknown])
+    data = mech.model_dump(mode="json", by_alias=True, exclude_defaults=True)
+    for name, value in values.items():
+        *keys, last = _document_keys(name)
+        node: Any = data
+        for key in keys:
+            node = node[key]
+        node[last] = float(value)
+    return GroupMechanism.model_validate(data)
+
+
+def dimension_names(mech: GroupMechanism) -> list[str]:
+    """The dimensions of ``mech`` a synthesis may vary, as ``vary:`` names them."""
+    builder = _Builder(mech.model_copy(update={"synthesis": None}))
+    builder.run()
+    return builder.dimension_names()
+
+
+def _document_keys(name: str) -> list[str | int]:
+    """The keys of a dimension in the mechanism's document: ``groups[0].lengths[1]`` ->
+    ``['groups', 0, 'lengths', 1]``, ``ground.C.x`` -> ``['ground', 'C', 0]``."""
+    head, _, rest = name.partition(".")
+    if head in (GROUND, "points"):
+        key, _, attr = rest.rpartition(".")
+        return [head, key, "xy".index(attr) if head == GROUND and attr in ("x", "y")
+                else attr]
+    keys: list[str | int] = []
+    for word, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", name):
+        keys.append(int(index) if index else word)
+    return keys
+
+
+def save_mechanism(mech: GroupMechanism, path: str | Path) -> Path:
+    """Write ``mech`` as a group file (YAML, or JSON for ``.json``) atomically."""
+    import json
+
+    import yaml
+
+    from mechloop.model.load import atomic_write_text
+
+    data = mech.model_dump(mode="json", by_alias=True, exclude_defaults=True)
+    target = Path(path)
+    if target.suffix.lower() == ".json":
+        text = json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+    else:
+        text = yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
+    atomic_write_text(target, text)
+    return target
 
 
 #: What each field a group file may miss holds, for the fix of a "missing" error.
@@ -552,6 +692,16 @@ def _group_hint(error: dict[str, Any], message: str, hint: str) -> tuple[str, st
 # role templates: ("const", value, dim) | ("function",) | ("arg", k, offset, dim)
 #                 | ("link", segment, letter, delta, dim)
 Template = tuple
+
+
+_GROUND_XY = re.compile(r"^ground\.([^.]+)\.([xy])$")
+
+
+@dataclass(frozen=True)
+class _At:
+    """A contour start at the coordinates of a ground point."""
+
+    ground: str
 
 
 @dataclass
@@ -621,6 +771,10 @@ class _Builder:
         self.link_names: dict[str, tuple] = {}
         self.declared = self._declared()
         self.pending = dict(mech.points)
+        self.starts: dict[int, str] = {}  # contour number -> the ground point it starts at
+        task = mech.synthesis
+        self.moved = {name.split(".")[1] for name in (task.vary if task else ())
+                      if _GROUND_XY.match(name)}  # ground points synthesis moves
 
     # -- numbers -----------------------------------------------------------------------
 
@@ -847,15 +1001,20 @@ class _Builder:
             start = self.start_at(g1)
         self.contour(elements, start=start, name=name, variant=variant)
 
-    def start_at(self, ground: str) -> Any:
-        z = self.coords[ground]
-        return "origin" if z == 0 else (z.real, z.imag)
+    def start_at(self, ground: str) -> _At:
+        """A contour start at the coordinates of ground point ``ground``."""
+        return _At(ground)
 
     def contour(self, elements: list[tuple[int, int]], *, start: Any, name: str,
                 variant: Variant = 1) -> None:
         numbers: list[int] = []
         for seg_id, direction in elements:
             self.place(seg_id, direction, numbers)
+        if isinstance(start, _At):  # coordinates (kept even at 0, 0 if synthesis moves them)
+            self.starts[len(self.contours) + 1] = start.ground
+            z = self.coords[start.ground]
+            start = "origin" if z == 0 and start.ground not in self.moved else (z.real,
+                                                                                 z.imag)
         entry: dict[str, Any] = {"vectors": numbers, "name": name}
         if variant != 1:
             entry["variant"] = variant
@@ -918,6 +1077,8 @@ class _Builder:
             raise ModelError(self.problems)
         self.close_loose_ends()
         data = self.model_data()
+        if mech.synthesis is not None:
+            data["synthesis"] = self.synthesis(mech.synthesis)
         if self.problems:
             raise ModelError(self.problems)
         from mechloop.model.check import check_model
@@ -1521,6 +1682,101 @@ class _Builder:
             out[name] = PointLocation(name, (z.real, z.imag), tuple(signed), end,
                                       tuple(point.links))
         return out
+
+    def dimension_names(self) -> list[str]:
+        """What synthesis may vary: every carried dimension (a ground point by its x and y
+        rather than its polar form from the root)."""
+        carried = [k for k in self.carriers() if not k.startswith(f"{GROUND}.")]
+        return carried + [f"{GROUND}.{g}.{axis}" for g in self.mech.ground for axis in "xy"]
+
+    def ties(self, name: str, varied: set[str], carried: dict[str, tuple[Carrier, ...]]
+             ) -> tuple[float, list[Tie]]:
+        """The value of dimension ``name`` (model units) and the constants it sets, when
+        the dimensions ``varied`` are varied together.
+
+        A ground point's coordinate sets the starts of the contours that start there and
+        a component of every frame vector it ends (from the root: the point minus the
+        root, negated when the written vector is reversed); the other point's part of that
+        component is the shift unless it is varied too.
+        """
+        match = _GROUND_XY.match(name)
+        if match is None:
+            return self.dims[name], [Tie(set=c.parameter, shift=c.shift)
+                                     for c in carried[name]]
+        ground, axis = match.groups()
+        pick = (lambda z: z.real) if axis == "x" else (lambda z: z.imag)
+        ties = [Tie(set=f"start{k}.{axis}") for k, g in self.starts.items() if g == ground]
+        for other, seg_id in self.frames.items():
+            seg = self.segs[seg_id]
+            sign = -1.0 if seg.reversed else 1.0
+            if ground == other:
+                factor, partner = sign, self.root
+            elif ground == self.root:
+                factor, partner = -sign, other
+            else:
+                continue
+            shift = 0.0 if f"{GROUND}.{partner}.{axis}" in varied else \
+                -factor * pick(self.coords[partner]) + 0.0
+            ties.append(Tie(set=f"v{seg.vector}.{axis}", factor=factor, shift=shift))
+        return pick(self.coords[ground]), ties
+
+    def synthesis(self, task: GroupSynthesisTask) -> dict[str, Any]:
+        """The vector model's synthesis task: each varied dimension with the constants it
+        sets (``dimensions``), named points as vector ends."""
+        base = ("synthesis",)
+        if task.dimensions:
+            self.problems.append(Problem((*base, "dimensions"), "a group file names its "
+                                         "dimensions in vary:; mechloop writes "
+                                         "dimensions: into the vector model",
+                                         "remove dimensions:"))
+        carried = self.carriers()
+        names = self.dimension_names()
+        dims: dict[str, Any] = {}
+        for name in task.vary:
+            if name not in names:
+                self.problems.append(Problem((*base, "vary", name), f"no dimension named "
+                                             f"{name!r}", _choose(name, names, "dimensions "
+                                             "as the file spells them")))
+                continue
+            value, ties = self.ties(name, set(task.vary), carried)
+            if not ties:
+                self.problems.append(Problem((*base, "vary", name), f"{name} moves nothing: "
+                                             "no contour passes that ground point",
+                                             "vary a point that a group uses"))
+                continue
+            dims[name] = {"value": value, "sets": [t.model_dump() for t in ties]}
+        data = task.model_dump(mode="json", by_alias=True, exclude_defaults=True,
+                               exclude={"dimensions"})
+        data["dimensions"] = dims
+        locations = self.locations()
+
+        def end(ref: str, path: tuple) -> Any:
+            link, _, name = ref.strip().rpartition(".")
+            where = locations.get(name.strip())
+            if where is None:
+                self.problems.append(Problem(path, f"no point named {name.strip()!r}",
+                                             _choose(name.strip(), list(locations),
+                                                     "named points")))
+            elif link and link.strip() not in where.links:
+                self.problems.append(Problem(path, f"point {where.name!r} is not on link "
+                                             f"{link.strip()!r}", f"{where.name} is on "
+                                             f"{', '.join(where.links)}"))
+            elif where.end is None:
+                self.problems.append(Problem(path, f"{where.name} is a ground point that no "
+                                             "vector reaches", "trace a point of a link"))
+            else:
+                return where.end.model_dump()
+            return {"head": 1}
+
+        if task.path is not None:
+            data["path"]["point"] = end(task.path.point, (*base, "path", "point"))
+        if task.motion is not None:
+            data["motion"]["point"] = end(task.motion.point, (*base, "motion", "point"))
+        if task.workspace is not None:
+            data["workspace"]["points"] = [
+                end(ref, (*base, "workspace", "points", i))
+                for i, ref in enumerate(task.workspace.points)]
+        return data
 
     def carriers(self) -> dict[str, tuple[Carrier, ...]]:
         found: dict[str, list[Carrier]] = {}

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from mechloop.model.groups import GroupMechanism, save_mechanism, with_dimensions
 from mechloop.model.load import atomic_write_bytes, save_model
 from mechloop.synthesis.search import SynthesisResult
 
@@ -40,7 +41,16 @@ def write_table(result: SynthesisResult, path: str | os.PathLike[str]) -> Path:
     return target
 
 
-def write_model(result: SynthesisResult, path: str | os.PathLike[str]) -> Path:
-    """The model with the best design written in (YAML, or JSON by the suffix)."""
+def write_model(result: SynthesisResult, path: str | os.PathLike[str], *,
+                mechanism: GroupMechanism | None = None) -> Path:
+    """The model with the best design written in (YAML, or JSON by the suffix).
+
+    With ``mechanism`` (the :class:`~mechloop.model.groups.GroupMechanism` the model was
+    built from, default: none) the group file is written instead: the mechanism with the
+    best dimensions (``result.values()``, keyed by their names) and its ``synthesis:``
+    section kept, to refine or solve.
+    """
+    if mechanism is not None:
+        return save_mechanism(with_dimensions(mechanism, result.values()), path)
     save_model(result.model, path)
     return Path(path)

@@ -2,12 +2,22 @@
 way back from a vector of values to a model file.
 
 A variable is a vector parameter (``r3``, ``a5``: a constant, a link's delta or an
-argument's offset) or a coordinate of a contour's fixed start (``start1.x``).  Inside the
-search every value is SI (m, rad); bounds and saved models are in the model's units.
+argument's offset), a coordinate of a contour's fixed start (``start1.x``), or a named
+*dimension* of ``synthesis.dimensions`` that sets several such constants at once, each
+``factor · value + shift`` (:class:`~mechloop.model.synthesis.Tie`) — a model built from
+Assur groups varies its link lengths and point coordinates this way.  A target ``vK.x`` /
+``vK.y`` is a component of the constant vector K: its length and angle follow from both
+components.  Every target is a linear function of the design, so a whole population maps
+to its parameters in a few array operations (:meth:`Variables.targets`) and is solved in
+one call of :func:`~mechloop.solve.designs.solve_designs`.
+
+Inside the search every value is SI (m, rad); bounds and saved models are in the model's
+units.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -21,7 +31,8 @@ Array = NDArray[np.float64]
 
 
 def kind_of(name: str) -> str:
-    """``'length'`` or ``'angle'``: the kind of quantity a variable is."""
+    """``'length'`` or ``'angle'``: the kind of quantity a constant (``r3``, ``a5``,
+    ``start1.x``, ``v4.x``) is."""
     return "angle" if name[0] == "a" else "length"
 
 
@@ -29,37 +40,70 @@ def kind_of(name: str) -> str:
 class Variables:
     """The design variables of a task, in the order of the columns of a design matrix.
 
-    ``low`` and ``high`` are SI bounds, shape ``(V,)``.
+    ``low`` and ``high`` are SI bounds, shape ``(V,)``; ``units`` the model unit of each.
+    ``ties`` say what each column sets: ``(target, column, factor, shift)`` with ``shift``
+    in SI — the target is the sum of ``factor · design[column] + shift`` over its ties.
+    ``components`` hold, for every vector set by its components (``vK.x``), the SI
+    components ``(x, y)`` it has in the model (used where a component is not tied).
     """
 
     names: tuple[str, ...]
     low: Array
     high: Array
     units: tuple[str, ...]
+    ties: tuple[tuple[str, int, float, float], ...] = ()
+    components: Mapping[int, tuple[float, float]] | None = None
+
+    def __post_init__(self) -> None:
+        if not self.ties:  # plain variables: each sets the constant it names
+            object.__setattr__(self, "ties", tuple((name, i, 1.0, 0.0)
+                                                   for i, name in enumerate(self.names)))
 
     def __len__(self) -> int:
         return len(self.names)
 
+    def targets(self, designs: Array) -> dict[str, Array]:
+        """Every constant the designs ``(D, V)`` (SI) set, as given by the ties: name ->
+        SI values ``(D,)`` (``r3``, ``a5``, ``start2.x``, ``v4.x``)."""
+        out: dict[str, Array] = {}
+        for target, column, factor, shift in self.ties:
+            term = factor * designs[:, column] + shift
+            out[target] = out[target] + term if target in out else term
+        return out
+
     def overrides(self, designs: Array) -> dict[str, Array]:
         """Vector-parameter overrides for :func:`~mechloop.solve.designs.solve_designs`
-        from a design matrix ``(D, V)`` (SI)."""
-        return {name: designs[:, i] for i, name in enumerate(self.names)
-                if not name.startswith("start")}
+        from a design matrix ``(D, V)`` (SI): a vector set by components gets its length
+        and angle."""
+        found = self.targets(designs)
+        out = {target: values for target, values in found.items() if target[0] in "ra"}
+        for number, (x0, y0) in (self.components or {}).items():
+            x = found.get(f"v{number}.x", np.full(designs.shape[0], x0))
+            y = found.get(f"v{number}.y", np.full(designs.shape[0], y0))
+            out[f"r{number}"] = np.hypot(x, y)
+            out[f"a{number}"] = np.arctan2(y, x)
+        return out
 
     def starts(self, designs: Array) -> dict[int, tuple[Array | None, Array | None]]:
         """Contour number -> (x, y) of its start per design, shape ``(D,)`` (None where
         that coordinate is not varied)."""
         out: dict[int, list[Array | None]] = {}
-        for i, name in enumerate(self.names):
+        for name, values in self.targets(designs).items():
             if name.startswith("start"):
                 number, axis = name[5:].split(".")
-                out.setdefault(int(number), [None, None])["xy".index(axis)] = designs[:, i]
+                out.setdefault(int(number), [None, None])["xy".index(axis)] = values
         return {k: (v[0], v[1]) for k, v in out.items()}
 
     def to_model_units(self, design: Array) -> dict[str, float]:
         """One design ``(V,)`` in SI -> {name: value in the model's units}."""
-        return {name: float(value) / unit_factor(unit, kind_of(name))
-                for name, value, unit in zip(self.names, design, self.units, strict=True)}
+        return {name: float(value) / unit_factor(unit, self.kind(i))
+                for i, (name, value, unit) in enumerate(zip(self.names, design, self.units,
+                                                            strict=True))}
+
+    def kind(self, column: int) -> str:
+        """``'length'`` or ``'angle'``: the kind of variable ``column``."""
+        target = next(t for t, c, _, _ in self.ties if c == column)
+        return kind_of(target)
 
     def scale(self, unit: Array) -> Array:
         """Map ``[0, 1]^V`` to the bounds."""
@@ -71,42 +115,105 @@ class Variables:
 
 
 def compile_variables(model: Model) -> Variables:
-    """The variables of ``model.synthesis`` with SI bounds."""
+    """The variables of ``model.synthesis`` with SI bounds and what each sets."""
     task = model.synthesis
     if task is None:
         raise ValueError("the model has no synthesis task")
     names = tuple(task.vary)
-    units = tuple(getattr(model.units, kind_of(n)) for n in names)
-    low = np.array([to_si(task.vary[n][0], kind_of(n), u) for n, u in zip(names, units,
-                                                                          strict=True)])
-    high = np.array([to_si(task.vary[n][1], kind_of(n), u) for n, u in zip(names, units,
-                                                                           strict=True)])
-    return Variables(names, low, high, units)
+    kinds, units, ties = [], [], []
+    for column, name in enumerate(names):
+        dim = task.dimensions.get(name)
+        sets = [(name, 1.0, 0.0)] if dim is None else [(t.set, t.factor, t.shift)
+                                                        for t in dim.sets]
+        kind = kind_of(sets[0][0])
+        unit = getattr(model.units, kind)
+        kinds.append(kind)
+        units.append(unit)
+        for target, factor, shift in sets:
+            ties.append((target, column, float(factor),
+                         to_si(shift, kind_of(target), getattr(model.units,
+                                                                 kind_of(target)))))
+    low = np.array([to_si(task.vary[n][0], k, u) for n, k, u in zip(names, kinds, units,
+                                                                     strict=True)])
+    high = np.array([to_si(task.vary[n][1], k, u) for n, k, u in zip(names, kinds, units,
+                                                                      strict=True)])
+    components: dict[int, tuple[float, float]] = {}
+    for target, *_ in ties:
+        if target[0] == "v":
+            number = int(target[1:].split(".")[0])
+            r, a = _vector_si(model, number)
+            components[number] = (r * math.cos(a), r * math.sin(a))
+    return Variables(names, low, high, tuple(units), tuple(ties), components)
+
+
+def _vector_si(model: Model, number: int) -> tuple[float, float]:
+    """Length (m) and angle (rad) of the constant vector ``number``."""
+    vector = model.vectors[number]
+    return (to_si(vector.r, "length", model.units.length),
+            to_si(vector.a, "angle", model.units.angle))
+
+
+def _constant(model: Model, name: str) -> float:
+    """The model's own value of a constant (``r3``, ``a5``, ``start2.x``, ``v4.x``), in
+    model units."""
+    if name.startswith("start"):
+        number, axis = name[5:].split(".")
+        raw = model.contours[int(number) - 1].start["xy".index(axis)]
+        return to_si(raw, "length", model.units.length) / unit_factor(model.units.length,
+                                                                         "length")
+    if name[0] == "v":
+        number, axis = name[1:].split(".")
+        r, a = _vector_si(model, int(number))
+        value = r * (math.cos(a) if axis == "x" else math.sin(a))
+        return value / unit_factor(model.units.length, "length")
+    vector = model.vectors[int(name[1:])]
+    role = vector.r if name[0] == "r" else vector.a
+    raw = (role.offset if isinstance(role, ArgumentRole)
+           else role.delta if isinstance(role, LinkRole) else role)
+    unit = getattr(model.units, kind_of(name))
+    return to_si(raw, kind_of(name), unit) / unit_factor(unit, kind_of(name))
 
 
 def current_values(model: Model, variables: Variables) -> Array:
     """The model's own values of the variables, SI, shape ``(V,)`` (clipped to the
     bounds): the design the model file describes."""
+    task = model.synthesis
+    dims = task.dimensions if task is not None else {}
     values = []
-    for name in variables.names:
-        if name.startswith("start"):
-            number, axis = name[5:].split(".")
-            raw = model.contours[int(number) - 1].start["xy".index(axis)]
-        else:
-            vector = model.vectors[int(name[1:])]
-            role = vector.r if name[0] == "r" else vector.a
-            raw = (role.offset if isinstance(role, ArgumentRole)
-                   else role.delta if isinstance(role, LinkRole) else role)
-        values.append(to_si(raw, kind_of(name), getattr(model.units, kind_of(name))))
+    for i, name in enumerate(variables.names):
+        raw = dims[name].value if name in dims else _constant(model, name)
+        unit = variables.units[i]
+        values.append(raw * unit_factor(unit, variables.kind(i)))
     return np.clip(np.array(values), variables.low, variables.high)
 
 
 def apply_design(model: Model, values: Mapping[str, float]) -> Model:
-    """A copy of ``model`` with the variables set to ``values`` (model units); the
-    synthesis task is kept, so the result can be refined by another run."""
+    """A copy of ``model`` with the variables set to ``values`` (model units): a named
+    dimension sets every constant it ties and takes the new value itself.  The synthesis
+    task is kept, so the result can be refined by another run."""
+    task = model.synthesis
+    dims = dict(task.dimensions) if task is not None else {}
     data = model.model_dump(mode="json", exclude_defaults=True)
+    settings: dict[str, float] = {}
     for name, value in values.items():
-        value = float(value)
+        if name not in dims:
+            settings[name] = float(value)
+    # constants tied to dimensions: the sum of the terms of every dimension that sets them
+    sums: dict[str, float] = {}
+    for name, dim in dims.items():
+        value = float(values.get(name, dim.value))
+        for tie in dim.sets:
+            sums[tie.set] = sums.get(tie.set, 0.0) + tie.factor * value + tie.shift
+        if name in values:
+            data["synthesis"]["dimensions"][name]["value"] = value
+    settings.update({k: v for k, v in sums.items() if k[0] != "v"})
+    angle = unit_factor(model.units.angle, "angle")
+    for number in sorted({int(k[1:].split(".")[0]) for k in sums if k[0] == "v"}):
+        x = sums.get(f"v{number}.x", _constant(model, f"v{number}.x"))
+        y = sums.get(f"v{number}.y", _constant(model, f"v{number}.y"))
+        settings[f"r{number}"] = math.hypot(x, y)
+        settings[f"a{number}"] = math.atan2(y, x) / angle
+    for name, value in settings.items():
         if name.startswith("start"):
             number, axis = name[5:].split(".")
             start = list(data["contours"][int(number) - 1]["start"])
