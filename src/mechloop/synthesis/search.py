@@ -13,22 +13,27 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import differential_evolution, least_squares, minimize
 from scipy.stats import qmc
 
+from mechloop.errors import ModelError, Problem
 from mechloop.model.schema import Model
-from mechloop.model.synthesis import Search
+from mechloop.model.synthesis import Search, check_synthesis
 from mechloop.model.units import to_si, unit_factor
 from mechloop.synthesis.problem import Evaluation, SynthesisProblem
 from mechloop.synthesis.variables import current_values
 
 Array = NDArray[np.float64]
+
+#: Starting designs as :func:`synthesize` takes them: one mapping name -> value, a list of
+#: them, or an array ``(S, V)`` / ``(V,)`` (columns in the order of ``vary``), model units.
+StartDesigns = Mapping[str, float | str] | Sequence[Mapping[str, float | str]] | ArrayLike
 
 
 @dataclass(frozen=True)
@@ -181,12 +186,26 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
                iterations: int | None = None, population: int | None = None,
                time_budget: float | None = None, polish: bool | None = None,
                progress: Callable[[Progress], None] | None = None,
-               scheduler: str | None = None, keep: int = 10) -> SynthesisResult:
+               scheduler: str | None = None, keep: int = 10,
+               start: StartDesigns | None = None) -> SynthesisResult:
     """Run the synthesis task of ``model`` (its ``synthesis:`` section).
 
     Keyword arguments override the task's ``search`` settings.  ``scheduler`` spreads the
     multi-start's local searches (see :mod:`mechloop.synthesis.parallel`).  Ctrl-C ends the
     search and returns the best design found so far (``stopped == 'interrupted'``).
+
+    ``start`` (default: the task's ``search.start``, else the model's own design) gives
+    starting designs, e.g. classical closed-form solutions (:mod:`mechloop.synthesis.
+    classical`): a mapping variable name -> value, a list of such mappings, or an array
+    ``(S, V)`` (or ``(V,)``) whose columns follow ``vary``; values in the model's units
+    (a string may carry its own unit), within the bounds.  A variable a mapping leaves out
+    takes the model's own value.  A name that is not varied or a value outside the bounds
+    raises :class:`~mechloop.errors.ModelError`.  Every starting design is evaluated first
+    (one call); DE puts them into its first population (the rest stays a Sobol or Latin
+    hypercube sample drawn from the seed), CMA-ES centres its first run on the best of
+    them with a step of 0.1 of the box instead of 0.3 (restarts stay random), and the
+    multi-start runs its first local searches from them (then from the best samples,
+    ``search.starts`` runs at least).
     """
     problem = SynthesisProblem(model)
     search = problem.task.search
@@ -197,15 +216,17 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
         search = search.model_copy(update=update)
     tracker = _Tracker(problem, search, keep, progress, search.time)
     rng = np.random.default_rng(search.seed)
-    start = current_values(model, problem.variables)
+    given = start_designs(problem, start)
+    starts = current_values(model, problem.variables)[None, :] if given is None else given
     stopped = "iteration limit"
     try:
         if search.method == "de":
-            _run_de(problem, search, tracker, start, rng)
+            _run_de(problem, search, tracker, starts, rng, given is not None)
         elif search.method == "cmaes":
-            _run_cmaes(problem, search, tracker, start, rng)
+            _run_cmaes(problem, search, tracker, starts, rng, given is not None)
         else:
-            _run_multistart(problem, search, tracker, start, rng, scheduler)
+            _run_multistart(problem, search, tracker, starts, rng, scheduler,
+                            given is not None)
     except _Stop as stop:
         stopped = str(stop)
     except KeyboardInterrupt:
@@ -217,6 +238,53 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
         except KeyboardInterrupt:
             stopped = "interrupted"
     return _result(problem, tracker, stopped, search.method)
+
+
+def start_designs(problem: SynthesisProblem, start: StartDesigns | None = None
+                  ) -> Array | None:
+    """The starting designs, SI, shape ``(S, V)``: ``start`` (see :func:`synthesize`) or,
+    without it, the task's ``search.start``; None when neither is given.
+
+    Raises :class:`~mechloop.errors.ModelError` for a name that is not varied or a value
+    outside the bounds (checked as :func:`~mechloop.model.synthesis.check_synthesis` checks
+    ``search.start``) or an array with the wrong number of columns.
+    """
+    variables = problem.variables
+    task = problem.task
+    if start is None:
+        given = task.search.start
+        if given is None:
+            return None
+    else:
+        if not isinstance(start, Mapping) and not (
+                isinstance(start, Sequence) and all(isinstance(d, Mapping) for d in start)):
+            array = np.atleast_2d(np.asarray(start, dtype=float))
+            if array.ndim != 2 or array.shape[1] != len(variables):
+                raise ModelError([Problem(("start",), f"an array of starting designs has "
+                                          f"shape {np.shape(start)}, not (S, V) or (V,) "
+                                          f"with V = {len(variables)}", "give one column "
+                                          f"per variable: {', '.join(variables.names)}")])
+            start = [dict(zip(variables.names, map(float, row), strict=True))
+                     for row in array]
+        search = Search.model_validate({**task.search.model_dump(), "start": start})
+        given = search.start
+        model = problem.model.model_copy(update={
+            "synthesis": task.model_copy(update={"search": search})})
+        where = ("synthesis", "search", "start")
+        problems = [p for p in check_synthesis(model) if p.path[:3] == where]
+        if problems:
+            raise ModelError([Problem(("start", *p.path[3:]), p.message, p.hint)
+                              for p in problems])
+    designs = [given] if isinstance(given, Mapping) else list(given)
+    if not designs:  # an empty list: no starting design
+        return None
+    base = current_values(problem.model, variables)
+    out = np.repeat(base[None, :], len(designs), axis=0)
+    for row, design in zip(out, designs, strict=True):
+        for name, value in design.items():
+            i = variables.names.index(name)
+            row[i] = to_si(value, variables.kind(i), variables.units[i])
+    return out
 
 
 def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: str
@@ -249,12 +317,27 @@ def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: 
                            elapsed=elapsed, method=method)
 
 
-def _run_de(problem: SynthesisProblem, search: Search, tracker: _Tracker, start: Array,
-            rng: np.random.Generator) -> None:
+def _run_de(problem: SynthesisProblem, search: Search, tracker: _Tracker, starts: Array,
+            rng: np.random.Generator, given: bool) -> None:
+    """Differential evolution; ``starts`` (``(S, V)``, SI) are evaluated first.  The
+    model's own design (``given`` false) replaces one member of SciPy's own first
+    population (``x0``); given starting designs replace the first members of a Sobol or
+    Latin hypercube sample of the same size drawn here from ``rng``."""
     variables = problem.variables
     n_vars = len(variables)
     popsize = max(1, math.ceil(search.population / n_vars))
     before = [math.inf]
+    unit_starts = np.clip(variables.unscale(starts), 0.0, 1.0)
+    if given:
+        count = max(popsize * n_vars, 5, len(starts))
+        sampler = (qmc.Sobol(n_vars, seed=rng) if _pow2(count)
+                   else qmc.LatinHypercube(n_vars, seed=rng))
+        init = sampler.random(count)
+        init[: len(starts)] = unit_starts
+        first: dict = {"init": init}
+    else:
+        first = {"x0": unit_starts[0],
+                 "init": "sobol" if _pow2(popsize * n_vars) else "latinhypercube"}
 
     def func(unit: Array) -> Array:  # scipy passes (V, S) when vectorized
         return tracker.evaluate(variables.scale(unit.T)).total
@@ -263,22 +346,24 @@ def _run_de(problem: SynthesisProblem, search: Search, tracker: _Tracker, start:
         tracker.generation_done(before[0])
         before[0] = tracker.best_total
 
-    tracker.evaluate(start[None, :])
+    tracker.evaluate(starts)
     before[0] = tracker.best_total
     differential_evolution(func, [(0.0, 1.0)] * n_vars, maxiter=search.iterations,
                            popsize=popsize, tol=0.0, atol=0.0, rng=rng, polish=False,
                            callback=callback, vectorized=True, updating="deferred",
-                           x0=variables.unscale(start), init="sobol" if _pow2(popsize *
-                                                                             n_vars)
-                           else "latinhypercube")
+                           **first)
 
 
 def _pow2(n: int) -> bool:
     return n > 0 and n & (n - 1) == 0
 
 
-def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, start: Array,
-               rng: np.random.Generator) -> None:
+def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, starts: Array,
+               rng: np.random.Generator, given: bool) -> None:
+    """CMA-ES with restarts.  The first run is centred on the best of ``starts``, with an
+    initial step of 0.3 of the box from the model's own design and 0.1 from ``given``
+    starting designs (a refinement of a known good design, e.g. a classical solution on a
+    thin feasible set); restarts begin at random points with 0.3."""
     import cma
 
     variables = problem.variables
@@ -286,11 +371,13 @@ def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, sta
     options = {"bounds": [0.0, 1.0], "popsize": search.population, "seed": seed,
                "verbose": -9, "maxiter": search.iterations + 1, "tolfun": 0, "tolx": 1e-14,
                "tolfunhist": 0, "tolstagnation": 10**9}
-    x0 = np.clip(variables.unscale(start), 0.05, 0.95)
-    tracker.evaluate(start[None, :])
+    ev = tracker.evaluate(starts)
+    best = np.clip(starts[int(np.argmin(ev.total))], variables.low, variables.high)
+    x0 = np.clip(variables.unscale(best), 0.05, 0.95)
     restarts = 0
+    sigma = 0.1 if given else 0.3
     while True:
-        es = cma.CMAEvolutionStrategy(x0, 0.3, options)
+        es = cma.CMAEvolutionStrategy(x0, sigma, options)
         while not es.stop():
             before = tracker.best_total
             unit = np.clip(np.array(es.ask()), 0.0, 1.0)
@@ -299,6 +386,7 @@ def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, sta
             tracker.generation_done(before)
         restarts += 1  # converged early: restart from a random point, as IPOP would
         x0 = rng.uniform(0.05, 0.95, len(variables))
+        sigma = 0.3
         options["popsize"] = int(options["popsize"] * 2) if restarts < 4 else \
             options["popsize"]
 
@@ -364,24 +452,28 @@ def _local_run(problem: SynthesisProblem, x0_unit: Array, max_evals: int
 
 
 def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker,
-                    start: Array, rng: np.random.Generator, scheduler: str | None) -> None:
+                    starts: Array, rng: np.random.Generator, scheduler: str | None,
+                    given: bool) -> None:
     """Sample a Sobol population (one vectorized call per generation), then run local
-    searches from the best distinct samples, on Dask workers when asked."""
+    searches from the best distinct samples, on Dask workers when asked; ``given``
+    starting designs are the first local starts (then the best samples, ``search.starts``
+    runs at least)."""
     from mechloop.synthesis.parallel import map_tasks
 
     variables = problem.variables
     sampler = qmc.Sobol(len(variables), seed=rng)
-    samples = sampler.random(max(search.population * 4, 16))
+    samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 4, 16))))
     before = tracker.best_total
-    tracker.evaluate(start[None, :])
+    tracker.evaluate(starts)
     ev = tracker.evaluate(variables.scale(samples))
     tracker.generation_done(before)
     order = np.argsort(ev.total)
-    starts = [samples[i] for i in order[: search.starts]]
+    first = list(np.clip(variables.unscale(starts), 0.0, 1.0)) if given else []
+    local = first + [samples[i] for i in order[: max(search.starts - len(first), 0)]]
     budget = max(200, search.iterations * 10) * len(variables)
-    jobs = [(problem, s, budget) for s in starts]
+    jobs = [(problem, s, budget) for s in local]
     clock = time.perf_counter()
-    problem.evaluate(variables.scale(starts[0])[None, :])
+    problem.evaluate(variables.scale(local[0])[None, :])
     per_run = (time.perf_counter() - clock) * budget
     runs = map_tasks(_run_job, jobs, scheduler=scheduler, seconds_per_item=per_run)
     for x, _, count in runs:
