@@ -56,6 +56,20 @@ def test_committed_schema_is_generated_from_the_code():
     assert committed == model_json_schema(), regenerate
 
 
+def test_schema_command_prints_both_schemas(tmp_path):
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+    from mechloop.model.groups import group_json_schema
+
+    runner = CliRunner()
+    result = runner.invoke(app, ["schema", "--groups", "-o", str(tmp_path / "g.json")])
+    assert result.exit_code == 0, result.output
+    assert json.loads((tmp_path / "g.json").read_text()) == group_json_schema()
+    result = runner.invoke(app, ["schema"])
+    assert result.exit_code == 0 and json.loads(result.output) == model_json_schema()
+
+
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
 def test_examples_validate_against_the_schema(path):
     data = yaml.safe_load(path.read_text(encoding="utf-8"))

@@ -433,12 +433,21 @@ def schema(
     output: Annotated[Path | None, typer.Option("-o", "--output",
                                                 help="write the schema to this file "
                                                 "(default: print it)")] = None,
+    groups: Annotated[bool, typer.Option("--groups", help="the schema of files built from "
+                                         "Assur groups (groups:) instead")] = False,
 ) -> None:
-    """Print the JSON Schema of model files (generated from the code).
+    """Print the JSON Schema of model files (generated from the code): vector models, or
+    with --groups models built from an input and Assur groups.
 
     Example: mechloop schema -o model.schema.json
     """
-    text = json.dumps(model_json_schema(), indent=2, ensure_ascii=False) + "\n"
+    if groups:
+        from mechloop.model.groups import group_json_schema
+
+        found = group_json_schema()
+    else:
+        found = model_json_schema()
+    text = json.dumps(found, indent=2, ensure_ascii=False) + "\n"
     if output is None:
         sys.stdout.write(text)
     else:
@@ -548,7 +557,8 @@ if __name__ == "__main__":  # pragma: no cover
 def synthesize(
     model: ModelPath,
     output: Annotated[Path | None, typer.Option("-o", "--output", help="write the best "
-                      "design as a model file (.yaml or .json); default: none")] = None,
+                      "design as a model file (.yaml or .json; a file built from Assur "
+                      "groups is written back as a group file); default: none")] = None,
     table: Annotated[Path | None, typer.Option(help="the best designs: .csv, .json or "
                      ".xlsx (with the terms and the history); default: none")] = None,
     plot: Annotated[Path | None, typer.Option(help="convergence plot (.png, .svg, .pdf); "
@@ -607,7 +617,7 @@ def synthesize(
                          time_budget=time_budget, progress=report, scheduler=scheduler)
         except ModelError as exc:
             raise locate(exc, model) from None
-    unit = result.problem.q_unit
+    unit = result.problem.q_shown_unit
     rows = _table("Best design", ["variable", "value", "unit"])
     for name, value in result.values().items():
         rows.add_row(name, f"{value:.6g}", result.problem.variables.units[
@@ -617,7 +627,8 @@ def synthesize(
     for name, value in result.terms().items():
         terms.add_row(name, f"{value:.6g}")
     out.print(terms)
-    verdict = (f"Q = {result.q:.6g} {unit} ({m.synthesis.objective})" if result.feasible
+    how = m.synthesis.objective if result.problem.target_kind else "criteria"
+    verdict = (f"Q = {result.q:.6g} {unit} ({how})" if result.feasible
                else "no feasible design found: every design tried breaks the chain or "
                "changes its assembly variant; widen the bounds")
     out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
@@ -627,7 +638,12 @@ def synthesize(
         if not result.feasible:
             raise ModelError([Problem((), "no feasible design to write",
                                       "widen the bounds or change the task")], str(model))
-        out.print(f"wrote {write_model(result, output)}")
+        from mechloop.model.groups import mechanism_of
+
+        mech = mechanism_of(model)  # a group file is written back with the best dimensions
+        what = ("the group file with the best dimensions" if mech is not None
+                else "the model with the best design")
+        out.print(f"wrote {write_model(result, output, mechanism=mech)} ({what})")
     if table is not None:
         out.print(f"wrote {write_table(result, table)}")
     if plot is not None:

@@ -17,17 +17,42 @@ from pydantic import Field, model_validator
 from mechloop.errors import Problem
 from mechloop.model.dynamic import HeadPoint, TailPoint
 from mechloop.model.signals import Scalar, _Frozen
+from mechloop.model.units import UnitProblem, to_si
 
 if TYPE_CHECKING:
     from mechloop.model.schema import Model
 
 VARIABLE = re.compile(r"^(?:[ra][1-9][0-9]*|start[1-9][0-9]*\.[xy])$")
 ParamName = Annotated[str, Field(pattern=r"^[ra][1-9][0-9]*$")]
-VariableName = Annotated[str, Field(
-    pattern=VARIABLE.pattern,
-    description="a constant of the model to vary: 'r3' / 'a5' (a constant, a link's delta, "
-    "an argument's offset) or 'start2.x' / 'start2.y' (the fixed start of contour 2)")]
 Point = TailPoint | HeadPoint
+TARGET = re.compile(r"^(?:[ra][1-9][0-9]*|(?:start|v)[1-9][0-9]*\.[xy])$")
+
+
+class Tie(_Frozen):
+    """A constant that a named dimension sets: ``factor · value + shift`` (the target's
+    model units).  A constant that several dimensions set is the sum of their terms."""
+
+    set: str = Field(pattern=TARGET.pattern, description="'r3' / 'a5' (a constant, a "
+                     "link's delta, an argument's offset), 'start2.x' (a contour's fixed "
+                     "start) or 'v4.x' / 'v4.y' (a component of the constant vector 4: "
+                     "its r and a follow)")
+    factor: float = Field(1.0, description="how much the target moves per unit of the "
+                          "dimension")
+    shift: float = Field(0.0, description="added to the target (the target's model units)")
+
+
+class Dimension(_Frozen):
+    """A named design variable that moves several constants of the model together (a model
+    built from Assur groups writes one per varied dimension, e.g. a link length that two
+    vectors carry, or a ground point's x that moves a frame vector and a contour start)."""
+
+    value: float = Field(description="the dimension's value in the model (model units)")
+    sets: list[Tie] = Field(min_length=1, description="the constants it sets")
+
+
+def point_label(point: Point) -> str:
+    """``'head 11'`` or ``'tail 3'``."""
+    return f"head {point.head}" if isinstance(point, HeadPoint) else f"tail {point.tail}"
 
 
 class Curve(_Frozen):
@@ -122,19 +147,39 @@ Reduction = Literal["max", "min", "absmax", "mean", "rms", "range"]
 
 
 class Criterion(_Frozen):
-    """A user criterion on any computed column, kinematic or dynamic (e.g. M_bal).
+    """A user criterion on any computed column, kinematic or dynamic (e.g. M_bal), or on a
+    coordinate of a point of the mechanism (``point`` with ``coordinate``).
 
     ``reduce`` turns the column into one number per design; with ``max`` / ``min`` it is a
     limit (penalized beyond it), with ``minimize`` a term added to Q with that weight.
-    Values are in the column's SI unit unless written with a unit ('200 N*m').
+    Values are in the column's SI unit (a coordinate in m) unless written with a unit
+    ('200 N*m', '5 mm').
     """
 
-    column: str
+    column: str | None = Field(None, description="a column of mechloop solve's table, "
+                               "e.g. 'a3', 'dr4', 'M_bal', 'RJ0_1'")
+    point: Point | None = Field(None, description="or a point: {head: K} or {tail: K}")
+    coordinate: Literal["x", "y"] | None = Field(None, description="x or y of the point")
     reduce: Reduction = "absmax"
     max: Scalar | None = None
     min: Scalar | None = None
     minimize: float | None = Field(None, description="weight of the reduced value in Q")
     weight: float = 1000.0
+
+    @model_validator(mode="after")
+    def _column_or_point(self) -> Criterion:
+        if (self.column is None) == (self.point is None):
+            raise ValueError("give either column or point (with coordinate)")
+        if self.point is not None and self.coordinate is None:
+            raise ValueError("a point criterion needs coordinate: x or y")
+        return self
+
+    @property
+    def label(self) -> str:
+        """The criterion's name in reports: ``'range x(head 11)'``, ``'max F_bal'``."""
+        if self.point is None:
+            return f"{self.reduce} {self.column}"
+        return f"{self.reduce} {self.coordinate}({point_label(self.point)})"
 
 
 class Search(_Frozen):
@@ -150,13 +195,25 @@ class Search(_Frozen):
     time: float | None = Field(None, gt=0, description="time budget, s")
     polish: bool = Field(True, description="polish the best design by a local search")
     starts: int = Field(8, ge=1, description="multistart: local searches")
+    start: dict[str, Scalar] | list[dict[str, Scalar]] | None = Field(
+        None, description="starting design(s), e.g. a classical solution: {r1: 52.3, a1: "
+        "40} or a list of them; names of vary, values in the model's units within the "
+        "bounds; a variable left out takes the model's own value. Each is evaluated "
+        "first; DE puts them into its first population, CMA-ES starts from the best, "
+        "multistart runs its first local searches from them. Default: the model's own "
+        "design")
 
 
 class SynthesisTask(_Frozen):
     """What a synthesis varies, reaches and respects, and how it searches."""
 
-    vary: dict[VariableName, tuple[Scalar, Scalar]] = Field(
-        description="design variables with their bounds [low, high]")
+    vary: dict[str, tuple[Scalar, Scalar]] = Field(
+        description="design variables with their bounds [low, high]: constants of the model "
+        "('r3' / 'a5': a constant, a link's delta, an argument's offset; 'start2.x' / "
+        "'start2.y': the fixed start of contour 2) or names of 'dimensions'")
+    dimensions: dict[str, Dimension] = Field(
+        default_factory=dict, description="named dimensions that set several constants "
+        "together (written by the builder of a model made of Assur groups)")
     path: PathTask | None = None
     function: FunctionTask | None = None
     motion: MotionTask | None = None
@@ -194,8 +251,8 @@ def check_synthesis(model: Model) -> list[Problem]:
         number = int(name[1:])
         return number if number in model.vectors else None
 
-    for name, (low, high) in task.vary.items():
-        path = (*base, "vary", name)
+    def check_constant(name: str, path: tuple) -> None:
+        """``name`` ('r3', 'a5', 'start2.x', 'v4.x') is a constant a design can set."""
         if name.startswith("start"):
             number = int(name[5:].split(".")[0])
             if number not in starts:
@@ -204,17 +261,54 @@ def check_synthesis(model: Model) -> list[Problem]:
             elif not isinstance(starts[number], tuple):
                 problems.append(Problem(path, f"contour {number} does not start at fixed "
                                         "coordinates", "give it start: [x, y] to vary them"))
+        elif name[0] == "v":
+            number = int(name[1:].split(".")[0])
+            vector = model.vectors.get(number)
+            if vector is None:
+                problems.append(Problem(path, f"there is no vector {number}",
+                                        f"vectors are {sorted(model.vectors)}"))
+            elif not all(isinstance(p, int | float | str) and not is_function(p)
+                         for p in (vector.r, vector.a)):
+                problems.append(Problem(path, f"{name} needs vector {number} with a constant "
+                                        "length and angle",
+                                        f"set r{number} and a{number} themselves instead"))
         else:
             number = vector_of(name)
             if number is None:
                 problems.append(Problem(path, f"there is no vector {name[1:]}",
                                         f"vectors are {sorted(model.vectors)}"))
-                continue
+                return
             role = model.vectors[number].r if name[0] == "r" else model.vectors[number].a
             if is_function(role):
                 problems.append(Problem(path, f"{name} is a function of its contour, "
                                         "not a dimension", "vary a constant, a link's delta "
                                         "or an argument's offset"))
+
+    set_by: dict[str, str] = {}
+    for name, dim in task.dimensions.items():
+        kinds = {_target_kind(tie.set) for tie in dim.sets}
+        if len(kinds) > 1:
+            problems.append(Problem((*base, "dimensions", name, "sets"), f"dimension {name!r} "
+                                    "sets both lengths and angles", "give it targets of "
+                                    "one kind"))
+        for i, tie in enumerate(dim.sets):
+            check_constant(tie.set, (*base, "dimensions", name, "sets", i, "set"))
+            set_by.setdefault(tie.set, name)
+    for name, (low, high) in task.vary.items():
+        path = (*base, "vary", name)
+        if name in task.dimensions:
+            pass
+        elif not VARIABLE.match(name):
+            problems.append(Problem(path, f"{name!r} is neither a constant of the model nor "
+                                    "a named dimension", "vary 'r3' / 'a5' (a constant, a "
+                                    "link's delta, an argument's offset), 'start2.x' / "
+                                    "'start2.y', or a name under dimensions:"))
+        else:
+            check_constant(name, path)
+            if name in set_by:
+                problems.append(Problem(path, f"{name} is also set by dimension "
+                                        f"{set_by[name]!r}", f"vary {set_by[name]!r} or "
+                                        f"{name}, not both"))
         if isinstance(low, int | float) and isinstance(high, int | float) and low >= high:
             problems.append(Problem(path, f"the bounds [{low}, {high}] are empty",
                                     "write [low, high] with low < high"))
@@ -264,7 +358,38 @@ def check_synthesis(model: Model) -> list[Problem]:
         for i, point in enumerate(task.workspace.points):
             check_point(point, (*base, "workspace", "points", i))
     for i, crit in enumerate(task.criteria):
+        if crit.point is not None:
+            check_point(crit.point, (*base, "criteria", i, "point"))
         if crit.max is None and crit.min is None and crit.minimize is None:
-            problems.append(Problem((*base, "criteria", i), f"criterion on {crit.column} "
+            problems.append(Problem((*base, "criteria", i), f"criterion {crit.label} "
                                     "has no max, min or minimize", "give one of them"))
+    given = task.search.start
+    for i, design in enumerate([given] if isinstance(given, dict) else given or []):
+        where = (*base, "search", "start", *(() if isinstance(given, dict) else (i,)))
+        for name, value in design.items():
+            path = (*where, name)
+            if name not in task.vary:
+                problems.append(Problem(path, f"{name} is not a variable of the task",
+                                        f"the variables are {', '.join(task.vary)}: add "
+                                        f"{name} to vary, or leave it out of the start"))
+                continue
+            low, high = task.vary[name]
+            dim = task.dimensions.get(name)
+            kind = _target_kind(name if dim is None else dim.sets[0].set)
+            try:
+                x, lo, hi = (to_si(v, kind, getattr(model.units, kind))
+                             for v in (value, low, high))
+            except UnitProblem as exc:
+                problems.append(Problem(path, exc.message, exc.hint))
+                continue
+            if not lo - 1e-12 * abs(lo) <= x <= hi + 1e-12 * abs(hi):
+                shown = [f"{v:g}" if isinstance(v, float) else v for v in (value, low, high)]
+                problems.append(Problem(path, f"{name} = {shown[0]} is outside its bounds "
+                                        f"[{shown[1]}, {shown[2]}]", "give a value within "
+                                        f"the bounds, or widen vary.{name} on purpose"))
     return problems
+
+
+def _target_kind(name: str) -> str:
+    """``'angle'`` for 'aK', ``'length'`` for 'rK', 'startK.x' and 'vK.x'."""
+    return "angle" if name[0] == "a" else "length"

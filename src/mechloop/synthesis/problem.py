@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import ast
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -114,6 +115,13 @@ class SynthesisProblem:
         self._compile_target()
         self._compile_conditions()
 
+    @property
+    def q_shown_unit(self) -> str:
+        """Q's unit as printed: the target's unit, squared for a sum of squares."""
+        if self.target_kind and self.task.objective == "ssq":
+            return f"{self.q_unit}²"
+        return self.q_unit
+
     # ---- compiling -------------------------------------------------------------------
     def _length(self, value) -> float:
         return to_si(value, "length", self.model.units.length)
@@ -204,6 +212,10 @@ class SynthesisProblem:
             self.q_factor = self.length_unit
         elif self.target_kind == "function":
             self.q_factor = 1.0  # the function's deviations are in the output's model units
+        else:  # Q is the weighted sum of the minimized criteria, in their SI units
+            self.q_factor = 1.0
+            minimized = [c for c in task.criteria if c.minimize]
+            self.q_unit = "m" if all(c.point is not None for c in minimized) else "SI"
 
     def _compile_conditions(self) -> None:
         task, model = self.task, self.model
@@ -234,16 +246,27 @@ class SynthesisProblem:
                 self.polygon = self._points(ws.polygon)
                 size = float(np.ptp(self.polygon.real) + np.ptp(self.polygon.imag))
             self.workspace_size = size or 1.0
+        self.criterion_keys: list[str] = []  # names in the terms, a repeat numbered
+        for crit in task.criteria:
+            key, again = crit.label, 2
+            while key in self.criterion_keys:
+                key, again = f"{crit.label} ({again})", again + 1
+            self.criterion_keys.append(key)
         self._kinematic_criteria: dict[int, tuple[str, float]] = {}
         self._dynamic_criteria: list[int] = []
         for i, crit in enumerate(task.criteria):
-            name = crit.column
-            if _is_parameter(name, model):
-                self._kinematic_criteria[i] = _parameter_column(name)
+            if crit.point is not None:
+                continue  # a point's coordinate: placed from the batched kinematics
+            if _is_parameter(crit.column, model):
+                self._kinematic_criteria[i] = _parameter_column(crit.column)
             else:
                 self._dynamic_criteria.append(i)
         if self._dynamic_criteria:
             self._check_dynamic_columns()
+        # Rates and accelerations are solved for the population only when a criterion
+        # reads one (a column d…/dd…); dynamic criteria solve each design on their own.
+        self.needs_derivatives = any(column.startswith("d") for column, _ in
+                                     self._kinematic_criteria.values())
 
     def _check_dynamic_columns(self) -> None:
         from mechloop.dynamics.analysis import solve_dynamics
@@ -266,8 +289,10 @@ class SynthesisProblem:
 
     # ---- evaluating ------------------------------------------------------------------
     def solve(self, designs: Array) -> DesignResults:
-        """The kinematics of every design, arrays ``(D, P)``."""
-        return solve_designs(self.model, self.variables.overrides(designs))
+        """The kinematics of every design, arrays ``(D, P)``: positions, and rates and
+        accelerations only when a criterion needs them (:attr:`needs_derivatives`)."""
+        return solve_designs(self.model, self.variables.overrides(designs),
+                             derivatives=self.needs_derivatives)
 
     def place(self, results: DesignResults, designs: Array, point: Point
               ) -> NDArray[np.complex128]:
@@ -309,11 +334,16 @@ class SynthesisProblem:
         n_designs = designs.shape[0]
         broken_share = res.broken.mean(axis=-1)
         keeps = res.keeps_variant
-        q = np.zeros(n_designs) if dev is None else dv.reduce_deviation(
-            dev, self.task.objective)
         penalty = sum(terms.values()) if terms else np.zeros(n_designs)
-        with np.errstate(invalid="ignore"):
-            total = q + penalty
+        if dev is None:  # no target: Q is the weighted sum of the minimized criteria
+            q = sum((c.minimize * measures[key] for c, key in zip(
+                self.task.criteria, self.criterion_keys, strict=True) if c.minimize),
+                np.zeros(n_designs))
+            total = penalty
+        else:
+            q = dv.reduce_deviation(dev, self.task.objective)
+            with np.errstate(invalid="ignore"):
+                total = q + penalty
         bad = ~feasible | ~np.isfinite(total)
         total = np.where(bad, INFEASIBLE * (1.0 + broken_share + (~keeps)), total)
         feasible = feasible & ~bad
@@ -323,9 +353,20 @@ class SynthesisProblem:
 
     def residuals(self, designs: Array) -> Array:
         """Deviations (weighted) and the square roots of the penalties, ``(D, K + T)``,
-        for a least-squares polish; an infeasible design gets a large constant row."""
+        for a least-squares polish; an infeasible design gets a large constant row.
+
+        A path with timing gives the x and y errors of each target instead of its distance,
+        ``(D, 2K + T)``: the same sum of squares, but smooth where a distance is zero,
+        so the polish does not stall with fewer targets than variables."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
-        _, feasible, dev, terms, _ = self._assess(designs)
+        res, feasible, dev, terms, _ = self._assess(designs)
+        if dev is not None and self.target_kind == "path" and \
+                self.target_positions is not None:
+            z = self.place(res, designs, self.point)[:, self.target_positions]
+            error = (z - self.targets[None, :]) / self.length_unit
+            if self.weights is not None:
+                error = error * self.weights[None, :]
+            dev = np.concatenate([error.real, error.imag], axis=1)
         parts = [] if dev is None else [dev]
         parts += [np.sqrt(np.maximum(t, 0))[:, None] for t in terms.values()]
         out = np.concatenate(parts, axis=1) if parts else np.zeros((designs.shape[0], 1))
@@ -389,7 +430,10 @@ class SynthesisProblem:
                   terms: dict[str, Array], measures: dict[str, Array]) -> None:
         n_designs = designs.shape[0]
         for i, crit in enumerate(self.task.criteria):
-            if i in self._kinematic_criteria:
+            if crit.point is not None:
+                z = self.place(res, designs, crit.point)
+                value = _reduce(z.real if crit.coordinate == "x" else z.imag, crit.reduce)
+            elif i in self._kinematic_criteria:
                 name, factor = self._kinematic_criteria[i]
                 table = _parameter_table(res, name) * factor
                 value = _reduce(table, crit.reduce)
@@ -397,7 +441,7 @@ class SynthesisProblem:
                 value = np.full(n_designs, np.nan)
                 for d in np.flatnonzero(feasible):  # the one loop: dynamics per design
                     value[d] = self._dynamic_value(designs[d], crit)
-            key = f"{crit.reduce} {crit.column}"
+            key = self.criterion_keys[i]
             measures[key] = value
             term = np.zeros(n_designs)
             scale = _criterion_scale(crit)
@@ -452,7 +496,9 @@ def _parameter_table(res: DesignResults, column: str) -> Array:
 
 
 def _reduce(table: Array, how: str) -> Array:
-    with np.errstate(invalid="ignore"):
+    """One number per row of ``table`` (D, P); NaN for a row of NaN (a broken design)."""
+    with np.errstate(invalid="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # all-NaN rows
         if how == "max":
             return np.nanmax(table, axis=-1)
         if how == "min":
@@ -485,31 +531,42 @@ def _criterion_scale(crit: Criterion) -> float:
 def _place(model: Model, res: DesignResults, starts: dict[int, tuple], point: Point
            ) -> NDArray[np.complex128]:
     """Tail or head of a vector in the plane for every design, as in
-    :class:`mechloop.dynamics.points.Placement` (contours laid from their starts)."""
+    :class:`mechloop.dynamics.points.Placement` (contours laid from their starts).
+
+    Only the vectors on the way to ``point`` are laid (each once), in the order of the
+    contours, so the sums are the same as when every contour is laid."""
     contour_of = {v: i for i, c in enumerate(model.contours) for v in c.vectors}
     shape = res.broken.shape
     units = unit_factor(model.units.length, "length")
-    tails: dict[int, NDArray[np.complex128]] = {}
-
-    def vector(n: int) -> NDArray[np.complex128]:
-        r, a = res.values[f"r{n}"], res.values[f"a{n}"]
-        out = np.empty(r.shape, dtype=complex)
-        out.real = r * np.cos(a)
-        out.imag = r * np.sin(a)
-        return out
-
-    def place(index: int, visiting: tuple[int, ...]) -> None:
-        contour = model.contours[index]
-        if contour.vectors[0] in tails:
-            return
-        if index in visiting:
+    for index in range(len(model.contours)):  # a cycle of starts is an error anywhere
+        seen: list[int] = []
+        while index not in seen:
+            seen.append(index)
+            start = model.contours[index].start
+            if isinstance(start, str | tuple | list):
+                break
+            index = contour_of[start.head if isinstance(start, HeadPoint) else start.tail]
+        else:
             raise ModelError([Problem(("contours", index, "start"),
                                       "the starts of contours refer to each other in a cycle",
                                       "start one of them at the origin or at [x, y]")])
-        start = contour.start
+    vectors: dict[int, NDArray[np.complex128]] = {}
+    tails: dict[int, NDArray[np.complex128]] = {}
+
+    def vector(n: int) -> NDArray[np.complex128]:
+        if n not in vectors:
+            r, a = res.values[f"r{n}"], res.values[f"a{n}"]
+            out = np.empty(shape, dtype=complex)
+            out.real = r * np.cos(a)
+            out.imag = r * np.sin(a)
+            vectors[n] = out
+        return vectors[n]
+
+    def first_tail(index: int) -> NDArray[np.complex128]:
+        start = model.contours[index].start
         if isinstance(start, str):
-            tail = np.zeros(shape, dtype=complex)
-        elif isinstance(start, tuple | list):
+            return np.zeros(shape, dtype=complex)
+        if isinstance(start, tuple | list):
             x = np.full(shape[0], float(start[0]) * units if not isinstance(start[0], str)
                         else to_si(start[0], "length", model.units.length))
             y = np.full(shape[0], float(start[1]) * units if not isinstance(start[1], str)
@@ -517,20 +574,22 @@ def _place(model: Model, res: DesignResults, starts: dict[int, tuple], point: Po
             vx, vy = starts.get(index + 1, (None, None))
             x = x if vx is None else vx
             y = y if vy is None else vy
-            tail = np.broadcast_to((x + 1j * y)[:, None], shape)
-        else:
-            number = start.tail if not isinstance(start, HeadPoint) else start.head
-            place(contour_of[number], (*visiting, index))
-            tail = tails[number] + (vector(number) if isinstance(start, HeadPoint) else 0)
-        for number in contour.vectors:
-            tails[number] = tail
-            tail = tail + vector(number)
+            return np.broadcast_to((x + 1j * y)[:, None], shape)
+        if isinstance(start, HeadPoint):
+            return tail(start.head) + vector(start.head)
+        return tail(start.tail)
 
-    for index in range(len(model.contours)):
-        place(index, ())
+    def tail(n: int) -> NDArray[np.complex128]:
+        if n not in tails:
+            contour = model.contours[contour_of[n]].vectors
+            i = contour.index(n)
+            tails[n] = (tail(contour[i - 1]) + vector(contour[i - 1]) if i
+                        else first_tail(contour_of[n]))
+        return tails[n]
+
     if isinstance(point, HeadPoint):
-        return tails[point.head] + vector(point.head)
-    return tails[point.tail]
+        return tail(point.head) + vector(point.head)
+    return tail(point.tail)
 
 
 __all__ = ["INFEASIBLE", "Evaluation", "SynthesisProblem", "evaluate_expression"]
