@@ -1,0 +1,77 @@
+"""The structure of every bundled example, against a hand analysis written out here.
+
+For each example with bodies: moving links n, lower pairs p5, higher pairs p4, Chebyshev's
+W = 3n − 2p5 − p4, the structure formula and the class.  Examples without bodies are pure
+kinematic models: ``mechloop structure`` must refuse them with the located "no bodies"
+error (the structure of their mechanisms is tested with bodies in tests/test_structure.py:
+the four-bar, the Watt six-bar, the V-twin, the hydraulic rocker).  A new example must be
+added to one of the two lists, so none is left unchecked.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import mechloop
+from mechloop.errors import ModelError
+from mechloop.structure.analysis import analyze
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+# file: (n, p5, p4, W, formula, class), by hand:
+HAND = {
+    # crank 1 pinned to the frame (R), rod 2 pinned to the crank and the slider 3 (R, R),
+    # slider 3 on the guide (P): n = 3, p5 = 4, W = 9 − 8 = 1.  The crank is the input
+    # group; rod + slider with two pins and a slide is an RRP dyad (L2).
+    "crank_slider_dynamics.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "crank_slider_friction.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    # crank 1, coupler 2, rocker 3, four pins: W = 9 − 8 = 1; coupler + rocker is an
+    # RRR dyad (L1).
+    "four_bar_groups.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    "four_bar_groups_synthesis.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # crank 1, coupler 2, rocker 3 (RRR dyad), then link 4 and slider 5 (R, R, P: RRP)
+    # hung on the rocker: n = 5, p5 = 7, W = 15 − 14 = 1.
+    "six_bar_groups.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L2(4,5)", 2),
+    # shield 1, front link 2, rear link 3, pins O2, B, O1, A: n = 3, p5 = 4, W = 1.  The
+    # massless leg is the drive and pushes on the shield at B: the shield alone keeps
+    # 3 − 1 = 2 freedoms, with the front link 6 − 4 − 1 = 1, with the rear link too
+    # 9 − 8 − 1 = 0 — the input group holds all three links (a closed contour of three
+    # links with the drive: class III by the seed's rule).
+    "roof_support.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+    "roof_support_synthesis.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+}
+
+WITHOUT_BODIES = {
+    "crank_slider.yaml", "five_points_timing_synthesis.yaml", "four_bar.yaml",
+    "four_bar_path_synthesis.yaml",
+    "hydraulic_rocker.yaml", "log10_function_generator.yaml", "six_bar.yaml",
+    "six_points_line_synthesis.yaml", "slider_crank_stroke_synthesis.yaml",
+    "sparse_argument.yaml", "v_engine.yaml",
+}
+
+
+def test_every_example_is_in_one_list():
+    files = {p.name for p in EXAMPLES.glob("*.yaml")}
+    assert files - HAND.keys() - WITHOUT_BODIES == set(), "add the new example here"
+    assert (HAND.keys() | WITHOUT_BODIES) - files == set(), "an example was removed"
+
+
+@pytest.mark.parametrize("name", sorted(HAND))
+def test_structure_matches_the_hand_analysis(name: str):
+    mob, dec = analyze(mechloop.load_model(EXAMPLES / name))
+    n, p5, p4, w, formula, klass = HAND[name]
+    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (n, p5, p4, w, 1)
+    assert mob.W == 3 * mob.n - 2 * mob.p5 - mob.p4
+    assert dec.formula == formula
+    assert dec.mechanism_class == klass
+
+
+@pytest.mark.parametrize("name", sorted(WITHOUT_BODIES))
+def test_kinematic_only_examples_are_refused_with_the_fix(name: str):
+    with pytest.raises(ModelError) as info:
+        analyze(mechloop.load_model(EXAMPLES / name))
+    assert "no bodies" in str(info.value)
