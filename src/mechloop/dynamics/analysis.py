@@ -181,6 +181,42 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                 balancing_vp[k] = balancing_vp[k] + np.where(
                     rate != 0, forces.friction_loss / rate, 0.0)
 
+    centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
+    motions = body_motions(mechanism, placement)
+
+    powers: dict[str, Array] = {}
+    for load in loads.forces:
+        powers[load.name] = (np.conj(load.force) * load.point.v).real + powers.get(load.name, 0)
+    for couple in loads.moments:
+        powers[couple.name] = couple.moment * motions[couple.body].omega
+    for drive in mechanism.drives:
+        stem = "M_bal" if drive.kind == "angle" else "F_bal"
+        if len(mechanism.drives) > 1:
+            stem += str(drive.argument)
+        powers[stem] = forces.balancing[drive.argument] * _argument_rate(kin, drive.argument)
+    clock = time.value if time is not None else kin.arguments[min(kin.arguments)]
+    summary = summarize(powers, forces.friction_loss, clock, mechanism.total_mass, kinetic)
+    cycle = None
+    if model.machine is not None:
+        if red is None or time is None:
+            raise ModelError([Problem(("machine",), "machine motion needs one input and a "
+                                      f"model time (the model has {len(mechanism.drives)} "
+                                      f"drive(s) and {'no' if time is None else 'a'} time)",
+                                      "remove machine:, or drive the machine by one "
+                                      "argument and give time: {rpm: ...}")])
+        k = mechanism.drives[0].argument
+        cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
+                             _argument_rate(kin, k), model.machine)
+    return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
+                          centers, center, kinetic, powers, summary, static, inertia, cycle)
+
+
+def mass_terms(mechanism: Mechanism, placement: Placement, static: bool
+               ) -> tuple[dict[int, Motion], Motion, dict[int, tuple[Array, Array]], Array]:
+    """Centres of mass of the bodies, the common centre, the inertia loads (force, moment
+    per body; none when ``static``) and the kinetic energy (J), arrays over positions.
+    Masses and inertias may be arrays over positions too (designs flattened into one
+    axis, :mod:`mechloop.synthesis.dynamic_batch`)."""
     centers = {}
     total = mechanism.total_mass
     for body in sorted(mechanism.bodies):
@@ -192,13 +228,14 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
         centers[body] = Motion(*(sum(m.mass * getattr(p, f) for m, p in zip(parts, points,
                                                                               strict=True))
                                  / mass for f in ("z", "v", "a")))
-    n = kin.broken.size
+    n = placement.results.broken.size
     motions = body_motions(mechanism, placement)
     inertia: dict[int, tuple[Array, Array]] = {}
     if not static:
         for body in sorted(mechanism.bodies):
             parts = [m for m in mechanism.masses if m.body == body]
-            if not parts or (body not in centers and all(m.inertia == 0 for m in parts)):
+            if not parts or (body not in centers
+                             and all(np.all(np.asarray(m.inertia) == 0) for m in parts)):
                 continue
             force = np.zeros(n, dtype=complex)
             moment = np.zeros(n)
@@ -217,38 +254,12 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                           for f in ("z", "v", "a")))
     else:
         center = Motion(zero, zero, zero)
-
     kinetic = np.zeros(n)
     if not static:
         for m in mechanism.masses:
             s = placement.point(m.center)
             kinetic += 0.5 * (m.mass * np.abs(s.v) ** 2 + m.inertia * motions[m.body].omega ** 2)
-
-    powers: dict[str, Array] = {}
-    for load in loads.forces:
-        powers[load.name] = (np.conj(load.force) * load.point.v).real + powers.get(load.name, 0)
-    for couple in loads.moments:
-        powers[couple.name] = couple.moment * motions[couple.body].omega
-    for drive in mechanism.drives:
-        stem = "M_bal" if drive.kind == "angle" else "F_bal"
-        if len(mechanism.drives) > 1:
-            stem += str(drive.argument)
-        powers[stem] = forces.balancing[drive.argument] * _argument_rate(kin, drive.argument)
-    clock = time.value if time is not None else kin.arguments[min(kin.arguments)]
-    summary = summarize(powers, forces.friction_loss, clock, total, kinetic)
-    cycle = None
-    if model.machine is not None:
-        if red is None or time is None:
-            raise ModelError([Problem(("machine",), "machine motion needs one input and a "
-                                      f"model time (the model has {len(mechanism.drives)} "
-                                      f"drive(s) and {'no' if time is None else 'a'} time)",
-                                      "remove machine:, or drive the machine by one "
-                                      "argument and give time: {rpm: ...}")])
-        k = mechanism.drives[0].argument
-        cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
-                             _argument_rate(kin, k), model.machine)
-    return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
-                          centers, center, kinetic, powers, summary, static, inertia, cycle)
+    return centers, center, inertia, kinetic
 
 
 def _argument_rate(results: Results, k: int) -> Array:

@@ -9,9 +9,10 @@ relative rotation, workspace, user criteria).  Bounds are the search's own box.
 What the search minimizes is ``Q + Σ penalties`` for a design that meets the mandatory
 conditions, and ``INFEASIBLE · (1 + share of broken positions)`` otherwise, so every
 feasible design ranks before every infeasible one and an infeasible one is never reported
-as a result.  Dynamic criteria (any column of the dynamic table) solve the dynamics of
-each feasible design on its own: that is the one loop over designs, taken only when a
-criterion needs it.
+as a result.  Dynamic criteria (any column of the dynamic table) solve the force analysis
+of all feasible designs in one batched pass (:mod:`mechloop.synthesis.dynamic_batch`);
+only what the batch does not do — friction, machine models — falls back to solving the
+dynamics of each feasible design on its own.
 """
 
 from __future__ import annotations
@@ -429,6 +430,7 @@ class SynthesisProblem:
     def _criteria(self, res: DesignResults, designs: Array, feasible: NDArray[np.bool_],
                   terms: dict[str, Array], measures: dict[str, Array]) -> None:
         n_designs = designs.shape[0]
+        tables = self._dynamic_tables(res, designs, feasible)
         for i, crit in enumerate(self.task.criteria):
             if crit.point is not None:
                 z = self.place(res, designs, crit.point)
@@ -437,9 +439,11 @@ class SynthesisProblem:
                 name, factor = self._kinematic_criteria[i]
                 table = _parameter_table(res, name) * factor
                 value = _reduce(table, crit.reduce)
-            else:
+            elif tables is not None:
+                value = _reduce(tables[crit.column], crit.reduce)
+            else:  # what the batch cannot do (friction, machine): dynamics per design
                 value = np.full(n_designs, np.nan)
-                for d in np.flatnonzero(feasible):  # the one loop: dynamics per design
+                for d in np.flatnonzero(feasible):
                     value[d] = self._dynamic_value(designs[d], crit)
             key = self.criterion_keys[i]
             measures[key] = value
@@ -454,6 +458,29 @@ class SynthesisProblem:
             if crit.minimize is not None:
                 term = term + crit.minimize * value
             terms[key] = term
+
+    def _dynamic_tables(self, res: DesignResults, designs: Array,
+                        feasible: NDArray[np.bool_]) -> dict[str, Array] | None:
+        """The columns of the dynamic criteria for the feasible designs in one batched
+        force analysis, ``{column: (D, P)}`` (NaN rows for the others); None where the
+        batch does not apply, so the caller solves design by design."""
+        if not self._dynamic_criteria:
+            return {}
+        from mechloop.synthesis.dynamic_batch import dynamic_columns
+
+        rows = np.flatnonzero(feasible)
+        columns = [self.task.criteria[i].column for i in self._dynamic_criteria]
+        try:
+            found = dynamic_columns(self, designs[rows], columns,
+                                    kinematics=res.subset(rows) if res.derivatives
+                                    else None)
+        except (NotImplementedError, KeyError):
+            return None
+        tables = {}
+        for name, table in found.items():
+            tables[name] = np.full((designs.shape[0], table.shape[1]), np.nan)
+            tables[name][rows] = table
+        return tables
 
     def _dynamic_value(self, design: Array, crit: Criterion) -> float:
         from mechloop.dynamics.analysis import solve_dynamics
