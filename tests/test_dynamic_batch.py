@@ -170,3 +170,29 @@ def test_synthesis_uses_the_batch_and_agrees_with_the_loop(monkeypatch):
     monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
     again = problem.evaluate(designs)
     np.testing.assert_array_equal(again.measures["max F_bal"], ev.measures["max F_bal"])
+
+
+def test_efficiency_and_friction_models_fall_back_to_the_force_analysis_per_design():
+    """Efficiency and the loss coefficient are numbers of the cycle, and friction is not
+    batched: both are taken from solve_dynamics of each design."""
+    data = yaml.safe_load((EXAMPLES / "crank_slider_friction.yaml").read_text())
+    data["synthesis"] = {"vary": {"r2": [0.15, 0.3]}, "criteria": [
+        {"column": "efficiency", "min": 0.5},
+        {"column": "loss_coefficient", "max": 0.5},
+        {"column": "M_bal", "reduce": "absmax", "minimize": 1.0}]}
+    problem = SynthesisProblem(mechloop.Model.from_dict(data))
+    designs = problem.variables.scale(np.array([[0.0], [0.4], [1.0]]))
+    ev = problem.evaluate(designs)
+    assert ev.feasible.all()
+    for d, design in enumerate(designs):
+        result = solve_dynamics(problem.design_model(design))
+        assert ev.measures["efficiency"][d] == pytest.approx(
+            result.summary.efficiency, nan_ok=True)
+        assert ev.measures["loss_coefficient"][d] == pytest.approx(
+            result.summary.loss_coefficient, nan_ok=True)
+        m_bal = result.to_frame()["M_bal [N*m]"].to_numpy()
+        assert ev.measures["absmax M_bal"][d] == pytest.approx(np.abs(m_bal).max(),
+                                                               rel=1e-12)
+    with pytest.raises(MechloopError):
+        data["synthesis"]["criteria"] = [{"column": "efficency", "min": 0.5}]
+        SynthesisProblem(mechloop.Model.from_dict(data))

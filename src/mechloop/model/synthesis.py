@@ -50,6 +50,11 @@ class Dimension(_Frozen):
     sets: list[Tie] = Field(min_length=1, description="the constants it sets")
 
 
+CYCLE_VALUES = {"efficiency": "efficiency", "loss_coefficient": "loss_coefficient"}
+"""Criteria on one number of the cycle (as mechloop energy prints), not on a column: the
+name in a criterion and the field of :class:`~mechloop.dynamics.energy.Summary`."""
+
+
 def point_label(point: Point) -> str:
     """``'head 11'`` or ``'tail 3'``."""
     return f"head {point.head}" if isinstance(point, HeadPoint) else f"tail {point.tail}"
@@ -157,7 +162,8 @@ class Criterion(_Frozen):
     """
 
     column: str | None = Field(None, description="a column of mechloop solve's table, "
-                               "e.g. 'a3', 'dr4', 'M_bal', 'RJ0_1'")
+                               "e.g. 'a3', 'dr4', 'M_bal', 'RJ0_1', or 'efficiency' / "
+                               "'loss_coefficient' of the cycle")
     point: Point | None = Field(None, description="or a point: {head: K} or {tail: K}")
     coordinate: Literal["x", "y"] | None = Field(None, description="x or y of the point")
     reduce: Reduction = "absmax"
@@ -177,6 +183,8 @@ class Criterion(_Frozen):
     @property
     def label(self) -> str:
         """The criterion's name in reports: ``'range x(head 11)'``, ``'max F_bal'``."""
+        if self.column in CYCLE_VALUES:
+            return self.column  # one number per design: nothing to reduce
         if self.point is None:
             return f"{self.reduce} {self.column}"
         return f"{self.reduce} {self.coordinate}({point_label(self.point)})"

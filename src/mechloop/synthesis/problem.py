@@ -28,7 +28,7 @@ from numpy.typing import NDArray
 from mechloop.errors import ModelError, Problem, SolveError
 from mechloop.model.dynamic import HeadPoint
 from mechloop.model.schema import Model
-from mechloop.model.synthesis import Criterion, Curve, Point, SynthesisTask
+from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, SynthesisTask
 from mechloop.model.units import registry, to_si, unit_factor
 from mechloop.solve.designs import DesignResults, solve_designs
 from mechloop.synthesis import deviations as dv
@@ -276,7 +276,7 @@ class SynthesisProblem:
             frame = solve_dynamics(self.model).to_frame()
         except SolveError:
             return  # the model's own design may break; columns are checked per design
-        columns = {c.split(" [")[0] for c in frame.columns}
+        columns = {c.split(" [")[0] for c in frame.columns} | set(CYCLE_VALUES)
         for i in self._dynamic_criteria:
             name = self.task.criteria[i].column
             if name not in columns:
@@ -439,7 +439,7 @@ class SynthesisProblem:
                 name, factor = self._kinematic_criteria[i]
                 table = _parameter_table(res, name) * factor
                 value = _reduce(table, crit.reduce)
-            elif tables is not None:
+            elif tables is not None and crit.column not in CYCLE_VALUES:
                 value = _reduce(tables[crit.column], crit.reduce)
             else:  # what the batch cannot do (friction, machine): dynamics per design
                 value = np.full(n_designs, np.nan)
@@ -469,7 +469,8 @@ class SynthesisProblem:
         from mechloop.synthesis.dynamic_batch import dynamic_columns
 
         rows = np.flatnonzero(feasible)
-        columns = [self.task.criteria[i].column for i in self._dynamic_criteria]
+        columns = [self.task.criteria[i].column for i in self._dynamic_criteria
+                   if self.task.criteria[i].column not in CYCLE_VALUES]
         try:
             found = dynamic_columns(self, designs[rows], columns,
                                     kinematics=res.subset(rows) if res.derivatives
@@ -487,9 +488,12 @@ class SynthesisProblem:
 
         model = self.design_model(design)
         try:
-            frame = solve_dynamics(model).to_frame()
+            result = solve_dynamics(model)
         except SolveError:
             return math.nan
+        if crit.column in CYCLE_VALUES:
+            return float(getattr(result.summary, CYCLE_VALUES[crit.column]))
+        frame = result.to_frame()
         columns = {c.split(" [")[0]: c for c in frame.columns}
         if crit.column not in columns:
             return math.nan
