@@ -182,20 +182,9 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                     rate != 0, forces.friction_loss / rate, 0.0)
 
     centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
-    motions = body_motions(mechanism, placement)
-
-    powers: dict[str, Array] = {}
-    for load in loads.forces:
-        powers[load.name] = (np.conj(load.force) * load.point.v).real + powers.get(load.name, 0)
-    for couple in loads.moments:
-        powers[couple.name] = couple.moment * motions[couple.body].omega
-    for drive in mechanism.drives:
-        stem = "M_bal" if drive.kind == "angle" else "F_bal"
-        if len(mechanism.drives) > 1:
-            stem += str(drive.argument)
-        powers[stem] = forces.balancing[drive.argument] * _argument_rate(kin, drive.argument)
-    clock = time.value if time is not None else kin.arguments[min(kin.arguments)]
-    summary = summarize(powers, forces.friction_loss, clock, mechanism.total_mass, kinetic)
+    powers = load_powers(kin, placement, mechanism, loads, forces)
+    summary = summarize(powers, forces.friction_loss, cycle_clock(kin), mechanism.total_mass,
+                        kinetic)
     cycle = None
     if model.machine is not None:
         if red is None or time is None:
@@ -209,6 +198,29 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                              _argument_rate(kin, k), model.machine)
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
                           centers, center, kinetic, powers, summary, static, inertia, cycle)
+
+
+def load_powers(kin: Results, placement: Placement, mechanism: Mechanism, loads: Loads,
+                forces: ForceAnalysis) -> dict[str, Array]:
+    """The power (W) of every external load and of each drive's balancing load, by name
+    (forces of one name summed), arrays over positions: what :func:`summarize` takes."""
+    motions = body_motions(mechanism, placement)
+    powers: dict[str, Array] = {}
+    for load in loads.forces:
+        powers[load.name] = (np.conj(load.force) * load.point.v).real + powers.get(load.name, 0)
+    for couple in loads.moments:
+        powers[couple.name] = couple.moment * motions[couple.body].omega
+    for drive in mechanism.drives:
+        stem = "M_bal" if drive.kind == "angle" else "F_bal"
+        if len(mechanism.drives) > 1:
+            stem += str(drive.argument)
+        powers[stem] = forces.balancing[drive.argument] * _argument_rate(kin, drive.argument)
+    return powers
+
+
+def cycle_clock(kin: Results) -> Array:
+    """What work is integrated over: the model time (s), or argument 1 without time."""
+    return kin.time if kin.time is not None else kin.arguments[min(kin.arguments)]
 
 
 def mass_terms(mechanism: Mechanism, placement: Placement, static: bool

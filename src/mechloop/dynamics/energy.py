@@ -22,68 +22,80 @@ from numpy.typing import NDArray
 Array = NDArray[np.float64]
 
 
-def split_work(power: Array, clock: Array) -> tuple[float, float]:
-    """Positive and negative work (J) of ``power`` (W) over ``clock`` (s).
+def split_work(power: Array, clock: Array) -> tuple[Array, Array]:
+    """Positive and negative work (J) of ``power`` (W, shape (..., P)) over ``clock`` (s,
+    shape (P,) or (..., P)): arrays shaped (...), NumPy scalars for one cycle.
 
     Where the power changes sign inside a step, the step is split at the linear zero
-    crossing, so ``A(+) + A(−)`` equals the trapezoidal work of ``power`` exactly.
+    crossing, so ``A(+) + A(−)`` equals the trapezoidal work of ``power`` exactly.  Steps
+    with an end that is not finite (a broken position) are left out.
     """
-    p0, p1 = power[:-1], power[1:]
-    dt = np.diff(clock)
+    power, clock = np.broadcast_arrays(np.asarray(power, dtype=float),
+                                       np.asarray(clock, dtype=float))
+    p0, p1 = power[..., :-1], power[..., 1:]
+    dt = np.diff(clock, axis=-1)
     ok = np.isfinite(p0) & np.isfinite(p1) & np.isfinite(dt)
-    p0, p1, dt = p0[ok], p1[ok], dt[ok]
-    same = p0 * p1 >= 0
-    whole = 0.5 * (p0 + p1) * dt
-    pos = np.where(same & (whole > 0), whole, 0.0).sum()
-    neg = np.where(same & (whole < 0), whole, 0.0).sum()
-    cross = ~same
-    if cross.any():
-        a, b, h = p0[cross], p1[cross], dt[cross]
-        t0 = h * np.abs(a) / (np.abs(a) + np.abs(b))  # time to the zero crossing
-        first = 0.5 * a * t0
-        second = 0.5 * b * (h - t0)
-        pos += np.where(first > 0, first, 0).sum() + np.where(second > 0, second, 0).sum()
-        neg += np.where(first < 0, first, 0).sum() + np.where(second < 0, second, 0).sum()
-    return float(pos), float(neg)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        same = p0 * p1 >= 0
+        whole = 0.5 * (p0 + p1) * dt
+        cross = ok & ~same
+        t0 = dt * np.abs(p0) / (np.abs(p0) + np.abs(p1))  # time to the zero crossing
+        first = 0.5 * p0 * t0
+        second = 0.5 * p1 * (dt - t0)
+    pos = _sum(whole, ok & same & (whole > 0))
+    neg = _sum(whole, ok & same & (whole < 0))
+    pos = pos + _sum(first, cross & (first > 0)) + _sum(second, cross & (second > 0))
+    neg = neg + _sum(first, cross & (first < 0)) + _sum(second, cross & (second < 0))
+    return pos[()], neg[()]
+
+
+def _sum(values: Array, where: NDArray[np.bool_]) -> Array:
+    return np.where(where, values, 0.0).sum(axis=-1)
 
 
 #: Net work below this share of the largest work over the cycle counts as none.
 NO_WORK_RTOL = 1e-9
 
 
-def _extreme(values: Array, how) -> float:
-    finite = values[np.isfinite(values)]
-    return float(how(finite)) if finite.size else float("nan")
+def _extreme(values: Array, how) -> Array:
+    """``how`` (np.max or np.min) of the finite values over the last axis; NaN where there
+    is none."""
+    finite = np.isfinite(values)
+    fill = -np.inf if how is np.max else np.inf
+    out = how(np.where(finite, values, fill), axis=-1, initial=fill)
+    return np.where(finite.any(axis=-1), out, np.nan)
 
 
-def _clean(value: float, tiny: float) -> float:
+def _clean(value: Array, tiny: Array | float) -> Array:
     """Rounding noise (below ``tiny``) shown as zero, and no negative zero."""
-    return 0.0 if abs(value) <= tiny else value
+    return np.where(np.abs(value) <= tiny, 0.0, value)
 
 
 @dataclass(frozen=True)
 class PowerRow:
-    """One line of the summary table (SI: J, W, W/kg)."""
+    """One line of the summary table (SI: J, W, W/kg): floats for one cycle, arrays shaped
+    (...) for a stack of cycles (designs)."""
 
     name: str
-    positive_work: float
-    negative_work: float
-    max_power: float
-    min_power: float
-    mean_power: float
-    specific_power: float
+    positive_work: float | Array
+    negative_work: float | Array
+    max_power: float | Array
+    min_power: float | Array
+    mean_power: float | Array
+    specific_power: float | Array
 
 
 @dataclass(frozen=True)
 class Summary:
-    """The summary characteristics of a cycle."""
+    """The summary characteristics of a cycle: floats, or arrays shaped (...) when
+    :func:`summarize` is given a stack of cycles (then :meth:`to_frame` does not apply)."""
 
     rows: tuple[PowerRow, ...]
-    driving_work: float
-    friction_work: float
-    loss_coefficient: float
-    efficiency: float
-    kinetic_energy_change: float
+    driving_work: float | Array
+    friction_work: float | Array
+    loss_coefficient: float | Array
+    efficiency: float | Array
+    kinetic_energy_change: float | Array
 
     def to_frame(self) -> pd.DataFrame:
         return pd.DataFrame([{
@@ -94,35 +106,80 @@ class Summary:
 
 def summarize(powers: dict[str, Array], friction_loss: Array, clock: Array,
               total_mass: float, kinetic_energy: Array) -> Summary:
-    """Build the summary table from the power of every load (W, shape (P,)), the power
-    lost to friction (W, ≥ 0), the clock (s) and the kinetic energy (J)."""
-    span = float(clock[-1] - clock[0]) if clock.size > 1 else 0.0
-    rows = []
-    driving = scale = 0.0
-    for name, power in powers.items():
+    """Build the summary table from the power of every load (W), the power lost to
+    friction (W, ≥ 0), the clock (s) and the kinetic energy (J).
+
+    Every array is shaped (P,) for one cycle — the summary then holds floats — or
+    (..., P) for a stack of cycles, e.g. the designs of a population (``clock`` may stay
+    (P,)): the summary then holds arrays shaped (...), each cycle's numbers as it alone
+    would give them.
+    """
+    friction_loss = np.asarray(friction_loss, dtype=float)
+    clock = np.asarray(clock, dtype=float)
+    kinetic_energy = np.asarray(kinetic_energy, dtype=float)
+    lead = np.broadcast_shapes(friction_loss.shape[:-1], kinetic_energy.shape[:-1],
+                               clock.shape[:-1], *(np.shape(p)[:-1] for p in powers.values()))
+    if clock.shape[-1] > 1:
+        span = clock[..., -1] - clock[..., 0]
+    else:
+        span = np.zeros(clock.shape[:-1])
+    span = np.broadcast_to(span, lead)
+
+    def row(name: str, power: Array) -> tuple[PowerRow, Array, Array]:
         pos, neg = split_work(power, clock)
-        mean = (pos + neg) / span if span else float("nan")
-        rows.append(PowerRow(name, pos, neg, _extreme(power, np.max),
-                             _extreme(power, np.min), mean,
-                             mean / total_mass if total_mass > 0 else float("nan")))
-        if pos + neg > 0:
-            driving += pos + neg
-        scale = max(scale, pos - neg)
-    fpos, fneg = split_work(-friction_loss, clock)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            mean = np.where(span != 0, (pos + neg) / np.where(span != 0, span, 1.0), np.nan)
+        specific = mean / total_mass if total_mass > 0 else np.full(np.shape(mean), np.nan)
+        return PowerRow(name, pos, neg, _extreme(power, np.max), _extreme(power, np.min),
+                        mean, specific), pos, neg
+
+    rows = []
+    driving = scale = np.zeros(lead)
+    for name, power in powers.items():
+        line, pos, neg = row(name, np.asarray(power, dtype=float))
+        rows.append(line)
+        net = pos + neg
+        driving = driving + np.where(net > 0, net, 0.0)
+        scale = np.maximum(scale, pos - neg)
+    line, fpos, fneg = row("friction", -friction_loss)
+    rows.append(line)
     friction_work = -(fpos + fneg)
-    mean = (fpos + fneg) / span if span else float("nan")
-    rows.append(PowerRow("friction", fpos, fneg, _extreme(-friction_loss, np.max),
-                         _extreme(-friction_loss, np.min), mean,
-                         mean / total_mass if total_mass > 0 else float("nan")))
     # a machine whose loads only exchange energy over the cycle has no driving work
     tiny = NO_WORK_RTOL * scale
+    tiny_specific = tiny / total_mass if total_mass > 0 else 0.0
     rows = [PowerRow(r.name, *(_clean(v, tiny) for v in (
         r.positive_work, r.negative_work, r.max_power, r.min_power, r.mean_power)),
-        _clean(r.specific_power, tiny / total_mass if total_mass > 0 else 0.0))
-        for r in rows]
+        _clean(r.specific_power, tiny_specific)) for r in rows]
     driving, friction_work = _clean(driving, tiny), _clean(friction_work, tiny)
-    psi = friction_work / driving if driving > 0 else float("nan")
-    ke = kinetic_energy[np.isfinite(kinetic_energy)]
-    change = _clean(float(ke[-1] - ke[0]), tiny) if ke.size else 0.0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        psi = np.where(driving > 0, friction_work / np.where(driving > 0, driving, 1.0),
+                       np.nan)
+    change = _clean(_finite_change(kinetic_energy), tiny)
     efficiency = _clean(1.0 - psi, NO_WORK_RTOL)
-    return Summary(tuple(rows), driving, friction_work, psi, efficiency, change)
+    summary = Summary(tuple(rows), driving, friction_work, psi, efficiency, change)
+    if lead:
+        return summary
+    return Summary(tuple(PowerRow(r.name, *(_float(getattr(r, f)) for f in _ROW_FIELDS))
+                         for r in summary.rows),
+                   *(_float(v) for v in (driving, friction_work, psi, efficiency, change)))
+
+
+_ROW_FIELDS = ("positive_work", "negative_work", "max_power", "min_power", "mean_power",
+               "specific_power")
+
+
+def _float(value: Array) -> float:
+    return float(np.asarray(value).reshape(()))
+
+
+def _finite_change(values: Array) -> Array:
+    """Last minus first finite value over the last axis (0 where none is finite)."""
+    finite = np.isfinite(values)
+    if values.shape[-1] == 0:
+        return np.zeros(values.shape[:-1])
+    first = np.argmax(finite, axis=-1)
+    last = values.shape[-1] - 1 - np.argmax(finite[..., ::-1], axis=-1)
+    take = np.take_along_axis
+    change = (take(values, last[..., None], axis=-1)[..., 0]
+              - take(values, first[..., None], axis=-1)[..., 0])
+    return np.where(finite.any(axis=-1), change, 0.0)

@@ -93,12 +93,23 @@ class PairReaction:
 
 @dataclass(frozen=True)
 class ForceAnalysis:
-    """Reactions of every pair and the balancing load of every drive, shape (P,)."""
+    """Reactions of every pair and the balancing load of every drive, shape (P,).
+
+    ``singular`` marks the positions whose force system is singular; ``iterations`` is the
+    number of friction iterations done (0 without friction).  For a batch solved in
+    segments (``kinetostatics(..., segments=...)``), ``unsettled`` marks the positions of
+    the segments whose friction did not settle (their rows are NaN) and
+    ``segment_iterations`` (shape (S,)) the iteration at which each segment settled
+    (:data:`FRICTION_MAX_ITER` for one that did not); without segments ``unsettled`` is
+    all False (friction that does not settle raises) and ``segment_iterations`` None.
+    """
 
     reactions: dict[str, PairReaction]
     balancing: dict[int, Array]
     singular: NDArray[np.bool_]
     iterations: int
+    unsettled: NDArray[np.bool_]
+    segment_iterations: NDArray[np.int64] | None = None
 
     @property
     def friction_loss(self) -> Array:
@@ -108,7 +119,8 @@ class ForceAnalysis:
 
 
 def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
-                  friction: bool = True, static: bool = False) -> ForceAnalysis:
+                  friction: bool = True, static: bool = False,
+                  segments: NDArray[np.int64] | None = None) -> ForceAnalysis:
     """Reactions and balancing loads at every position (SI).
 
     The placement's results hold time derivatives; with ``static=True`` (a model without
@@ -116,6 +128,15 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
     ``friction=False`` the pairs are ideal whatever the model says.  Rows where the chain
     breaks are NaN; rows where the force system is singular are NaN and marked in
     ``singular``.
+
+    Friction is iterated until no reaction changes by more than :data:`FRICTION_RTOL` of
+    the largest known load, and :class:`~mechloop.errors.SolveError` is raised when it does
+    not settle in :data:`FRICTION_MAX_ITER` iterations.  ``segments`` (shape (P,), the
+    integers ``0..S−1``; default None: one segment) splits the positions into independent
+    problems, e.g. the designs of a population laid out on one axis: the tolerance and the
+    stop are then per segment, a settled segment keeps the reactions and friction loads of
+    the iteration at which it settled (so each equals its own separate run), and a segment
+    that does not settle is reported in ``unsettled`` (NaN rows) instead of raising.
     """
     res = placement.results
     n = res.broken.size
@@ -222,9 +243,21 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
     iterations = 0
     losses = {p.name: np.zeros(n) for p in mechanism.pairs}
     fric = {p.name: np.zeros(n) for p in mechanism.pairs}
+    # each segment (a design of a batch; the whole axis without one) iterates on its own
+    seg = np.zeros(n, dtype=np.int64) if segments is None else np.asarray(segments)
+    if seg.shape != (n,) or (n and seg.min() < 0):
+        raise ValueError(f"segments must be integers ≥ 0 shaped ({n},), one per position "
+                         f"(got shape {seg.shape})")
+    n_seg = 1 if segments is None else int(seg.max(initial=-1)) + 1
+    seg_iterations = np.zeros(n_seg, dtype=np.int64)
+    settling = np.zeros(n_seg, dtype=bool)  # segments still iterating
     if with_friction:
-        scale = max(float(np.abs(rhs[safe & ~singular]).max(initial=0.0)), 1e-300)
-        for iterations in range(1, FRICTION_MAX_ITER + 1):  # noqa: B007 (reported)
+        good = safe & ~singular
+        scale = _segment_max(np.abs(rhs[good]).max(axis=1, initial=0.0), seg[good], n_seg)
+        scale = np.maximum(scale, 1e-300)
+        settling[:] = True
+        for iterations in range(1, FRICTION_MAX_ITER + 1):
+            moving = settling[seg]
             extra = np.zeros((n, size))
             c = 0
             for pair in mechanism.pairs:
@@ -236,8 +269,8 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                     m_f = -pair.friction * pair.radius * r * np.sign(rel)
                     add_known(second, 0.0, None, m_f, extra)
                     add_known(first, 0.0, None, -m_f, extra)
-                    fric[pair.name] = m_f
-                    losses[pair.name] = -m_f * rel
+                    fric[pair.name] = np.where(moving, m_f, fric[pair.name])
+                    losses[pair.name] = np.where(moving, -m_f * rel, losses[pair.name])
                     c += 2
                 else:
                     e = directions[pair.name]
@@ -249,22 +282,29 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                     f_f = -pair.friction * load * np.sign(slide)
                     add_known(second, f_f * e, z, 0.0, extra)
                     add_known(first, -f_f * e, z, 0.0, extra)
-                    fric[pair.name] = f_f
-                    losses[pair.name] = -f_f * slide
+                    fric[pair.name] = np.where(moving, f_f, fric[pair.name])
+                    losses[pair.name] = np.where(moving, -f_f * slide, losses[pair.name])
                     c += 2
             new = solve(rhs + extra)
-            change = np.abs(new - x)[safe & ~singular].max(initial=0.0)
-            x = new
-            if change <= FRICTION_RTOL * scale:
+            with np.errstate(invalid="ignore"):  # a diverging segment may overflow
+                step = np.abs(new - x)[good].max(axis=1, initial=0.0)
+            change = _segment_max(step, seg[good], n_seg)
+            x = np.where(moving[:, None], new, x)
+            done = settling & (change <= FRICTION_RTOL * scale)
+            seg_iterations[done] = iterations
+            settling &= ~done
+            if not settling.any():
                 break
-        else:
+        seg_iterations[settling] = FRICTION_MAX_ITER
+        if segments is None and settling.any():
             raise SolveError(
                 f"friction: the reactions did not settle in {FRICTION_MAX_ITER} iterations "
                 "(the mechanism may be self-locking at some positions)",
                 "lower the coefficients of friction or check the pin radii and slider "
                 "lengths")
+    unsettled = settling[seg]
 
-    bad = ~safe | singular
+    bad = ~safe | singular | unsettled
     x[bad] = np.nan
     reactions: dict[str, PairReaction] = {}
     c = 0
@@ -284,7 +324,8 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                                                 _nan(losses[pair.name], bad))
         c += 2
     balancing = {k: x[:, c] for k, c in drive_cols.items()}
-    return ForceAnalysis(reactions, balancing, singular, iterations)
+    return ForceAnalysis(reactions, balancing, singular, iterations, unsettled,
+                         None if segments is None else seg_iterations)
 
 
 def _invert(matrix: Array, safe: NDArray[np.bool_]) -> tuple[Array, NDArray[np.bool_]]:
@@ -307,6 +348,14 @@ def _invert(matrix: Array, safe: NDArray[np.bool_]) -> tuple[Array, NDArray[np.b
         matrix[singular] = np.eye(matrix.shape[-1])
         inverse = np.linalg.inv(matrix)
     return inverse, singular
+
+
+def _segment_max(values: Array, segments: NDArray[np.int64], count: int) -> Array:
+    """The largest of ``values`` (≥ 0) in each of ``count`` segments (0 for an empty one;
+    NaN propagates)."""
+    out = np.zeros(count)
+    np.maximum.at(out, segments, values)
+    return out
 
 
 def _nan(values: Array, bad: NDArray[np.bool_]) -> Array:

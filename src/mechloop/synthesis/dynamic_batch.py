@@ -10,7 +10,12 @@ constants included, since they differ between designs — is a ``(D·P,)`` array
 time and masses are tiled.  :class:`~mechloop.dynamics.points.Placement` then places the
 contours (a varied fixed start ``startK.x/y`` is one value per design),
 :func:`~mechloop.dynamics.kinetostatics.kinetostatics` does one batched linear solve
-``(D·P, K, K)``, and the table is cut back into ``(D, P)`` rows.
+``(D·P, K, K)``, and the table is cut back into ``(D, P)`` rows.  Friction in the pairs
+is iterated with each design as its own segment of the long axis (its own tolerance and
+stop, frozen once settled), so each design's reactions are those of its own iterations; a
+design whose friction does not settle gets NaN, as its own solve would raise.  The cycle's
+numbers (``efficiency``, ``loss_coefficient``) come from
+:func:`~mechloop.dynamics.energy.summarize` of the ``(D, P)`` powers, one per design.
 
 What is the same for every design is compiled once from a reference design (the model's
 own, or the first one of the population that assembles): the bodies, the kinematic pairs
@@ -20,8 +25,9 @@ inertia ``rod`` is the one mass property that depends on a design (its length) a
 computed per design.
 
 :func:`dynamic_columns` is the fast path; ``solve_dynamics(problem.design_model(d))`` per
-design is its oracle (tests/test_dynamic_batch.py).  What it does not support it refuses
-with :class:`NotImplementedError` (say why), so that a caller can fall back to the loop.
+design is its oracle (tests/test_dynamic_batch.py).  What it does not support — a
+machine model (``machine:``) — it refuses with :class:`NotImplementedError` (saying why),
+so that a caller can fall back to the loop.
 """
 
 from __future__ import annotations
@@ -32,7 +38,15 @@ from weakref import WeakKeyDictionary
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.dynamics.analysis import DynamicResults, _argument_rate, mass_terms, solve_dynamics
+from mechloop.dynamics.analysis import (
+    DynamicResults,
+    _argument_rate,
+    cycle_clock,
+    load_powers,
+    mass_terms,
+    solve_dynamics,
+)
+from mechloop.dynamics.energy import summarize
 from mechloop.dynamics.kinetostatics import kinetostatics
 from mechloop.dynamics.loads import Couple, Loads, PointForce, _values
 from mechloop.dynamics.mechanism import Mass, Mechanism, _point_vector
@@ -41,6 +55,7 @@ from mechloop.dynamics.reduced import Reduced, balancing_by_virtual_power, reduc
 from mechloop.errors import ModelError
 from mechloop.model.check import argument_kind, require_valid
 from mechloop.model.schema import Model
+from mechloop.model.synthesis import CYCLE_VALUES
 from mechloop.model.units import to_si
 from mechloop.solve.designs import DesignResults, solve_designs
 from mechloop.solve.inputs import Signal, model_arguments, model_time
@@ -64,17 +79,21 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     are SI values shaped ``(D, V)`` in the order of ``problem.variables.names``;
     ``columns`` are names of ``solve_dynamics(model).to_frame()`` without the unit suffix
     (``'F_bal'``, ``'M_bal'``, ``'M_bal_vp'``, ``'RJ0_2'``, ``'RA_to_a2'``, ``'xS1'``,
-    ``'T'``, ...).  Units are those of the table (SI; reaction angles in degrees).
+    ``'T'``, ...) or the cycle's numbers ``'efficiency'`` and ``'loss_coefficient'``
+    (:data:`~mechloop.model.synthesis.CYCLE_VALUES`).  Units are those of the table (SI;
+    reaction angles in degrees).
 
     Returns ``{column: array (D, P)}``, equal to
     ``solve_dynamics(problem.design_model(d)).to_frame()[column]`` row by row: NaN at the
     positions where a design's chain breaks (so a row of NaN for a design that breaks
-    everywhere) or its force system is singular.
+    everywhere) or its force system is singular; a cycle's number is an array ``(D,)``
+    equal to the field of ``solve_dynamics(...).summary`` (NaN without driving work).  A
+    design whose friction does not settle (its own solve raises
+    :class:`~mechloop.errors.SolveError`) is NaN in every column.
 
     Raises :class:`NotImplementedError` (with the reason) for what the batch does not
-    do: friction in the pairs (the iterations settle per design), a machine model
-    (``machine:``, a cycle per design), and machine columns; :class:`KeyError` for a
-    column the model's table does not have.
+    do: a machine model (``machine:``, a cycle per design) and machine columns;
+    :class:`KeyError` for a column the model's table does not have.
     """
     model: Model = problem.model
     designs = np.atleast_2d(np.asarray(designs, dtype=float))
@@ -82,7 +101,8 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     _refuse(model, wanted)
     n_designs, n_pos = designs.shape[0], model.positions + 1
     if n_designs == 0:
-        return {name: np.empty((0, n_pos)) for name in wanted}
+        return {name: np.empty((0,) if name in CYCLE_VALUES else (0, n_pos))
+                for name in wanted}
     overrides = problem.variables.overrides(designs)
     kin_designs = kinematics
     if kin_designs is None or not kin_designs.derivatives:
@@ -90,12 +110,7 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     elif kin_designs.broken.shape != (n_designs, n_pos):
         raise ValueError(f"kinematics are shaped {kin_designs.broken.shape}, the designs "
                          f"{(n_designs, n_pos)}: pass the solve of these designs")
-    reference = _reference(problem, designs, kin_designs.assembles)
-    mechanism = reference.mechanism
-    if any(p.friction > 0 for p in mechanism.pairs):
-        raise NotImplementedError(
-            "friction in the pairs: the friction iterations stop by a tolerance on each "
-            "design's own reactions, which one batch cannot reproduce design by design")
+    mechanism = _reference(problem, designs, kin_designs.assembles).mechanism
 
     time = model_time(model)
     static = time is None
@@ -107,7 +122,8 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     placement = _FlatPlacement(kin, starts)
     mechanism = _with_design_masses(model, mechanism, kin, n_designs, n_pos)
     loads = _flat_loads(model, mechanism, placement, time, n_designs, n_pos)
-    forces = kinetostatics(mechanism, placement, loads, friction=True, static=static)
+    forces = kinetostatics(mechanism, placement, loads, friction=True, static=static,
+                           segments=np.repeat(np.arange(n_designs), n_pos))
 
     balancing_vp: dict[int, Array] = {}
     red: Reduced | None = None
@@ -131,8 +147,23 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
     flat = DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
                           centers, center, kinetic, {}, None, static, inertia, None)
-    table = _frame(flat, wanted)
-    return {name: table[name].reshape(n_designs, n_pos) for name in wanted}
+    table = _frame(flat, [c for c in wanted if c not in CYCLE_VALUES])
+    out = {name: np.array(table[name].reshape(n_designs, n_pos)) for name in table}
+    cycle = [c for c in wanted if c in CYCLE_VALUES]
+    if cycle:
+        def by_design(values: Array) -> Array:
+            return np.asarray(values, dtype=float).reshape(n_designs, n_pos)
+
+        powers = load_powers(kin, placement, mechanism, loads, forces)
+        summary = summarize({k: by_design(v) for k, v in powers.items()},
+                            by_design(forces.friction_loss), by_design(cycle_clock(kin)),
+                            mechanism.total_mass, by_design(kinetic))
+        for name in cycle:
+            out[name] = np.array(getattr(summary, CYCLE_VALUES[name]), dtype=float)
+    unsettled = forces.unsettled.reshape(n_designs, n_pos).any(axis=1)
+    for values in out.values():  # its own solve raises: no number of this design
+        values[unsettled] = np.nan
+    return {name: out[name] for name in wanted}
 
 
 # ---- what the batch refuses -----------------------------------------------------------
@@ -151,11 +182,12 @@ def _reference(problem, designs: Array, assembles: NDArray[np.bool_]) -> Dynamic
     it does, else the first such design of the population): the mechanism every design
     shares and the vectors that end at each pair."""
     own = _OWN.get(problem)
-    if own is None:
-        own = _OWN[problem] = solve_dynamics(problem.model)
+    if own is None:  # the mechanism only: no friction iterations (which may not settle)
+        own = _OWN[problem] = solve_dynamics(problem.model, friction=False)
     if not own.kinematics.broken.any() or not assembles.any():
         return own
-    return solve_dynamics(problem.design_model(designs[int(np.argmax(assembles))]))
+    return solve_dynamics(problem.design_model(designs[int(np.argmax(assembles))]),
+                          friction=False)
 
 
 # ---- kinematics of the population as one long axis -------------------------------------

@@ -9,10 +9,11 @@ relative rotation, workspace, user criteria).  Bounds are the search's own box.
 What the search minimizes is ``Q + Σ penalties`` for a design that meets the mandatory
 conditions, and ``INFEASIBLE · (1 + share of broken positions)`` otherwise, so every
 feasible design ranks before every infeasible one and an infeasible one is never reported
-as a result.  Dynamic criteria (any column of the dynamic table) solve the force analysis
-of all feasible designs in one batched pass (:mod:`mechloop.synthesis.dynamic_batch`);
-only what the batch does not do — friction, machine models — falls back to solving the
-dynamics of each feasible design on its own.
+as a result.  Dynamic criteria (any column of the dynamic table, and the cycle's
+``efficiency`` and ``loss_coefficient``) solve the force analysis of all feasible designs
+in one batched pass (:mod:`mechloop.synthesis.dynamic_batch`), friction included; only
+what the batch does not do — machine models — falls back to solving the dynamics of each
+feasible design on its own.
 """
 
 from __future__ import annotations
@@ -265,7 +266,8 @@ class SynthesisProblem:
         if self._dynamic_criteria:
             self._check_dynamic_columns()
         # Rates and accelerations are solved for the population only when a criterion
-        # reads one (a column d…/dd…); dynamic criteria solve each design on their own.
+        # reads one (a column d…/dd…); dynamic criteria solve their own kinematics with
+        # derivatives in the batched force analysis.
         self.needs_derivatives = any(column.startswith("d") for column, _ in
                                      self._kinematic_criteria.values())
 
@@ -439,9 +441,10 @@ class SynthesisProblem:
                 name, factor = self._kinematic_criteria[i]
                 table = _parameter_table(res, name) * factor
                 value = _reduce(table, crit.reduce)
-            elif tables is not None and crit.column not in CYCLE_VALUES:
-                value = _reduce(tables[crit.column], crit.reduce)
-            else:  # what the batch cannot do (friction, machine): dynamics per design
+            elif tables is not None:  # a cycle's number is one per design already
+                value = (tables[crit.column] if crit.column in CYCLE_VALUES
+                         else _reduce(tables[crit.column], crit.reduce))
+            else:  # what the batch cannot do (a machine model): dynamics per design
                 value = np.full(n_designs, np.nan)
                 for d in np.flatnonzero(feasible):
                     value[d] = self._dynamic_value(designs[d], crit)
@@ -462,15 +465,15 @@ class SynthesisProblem:
     def _dynamic_tables(self, res: DesignResults, designs: Array,
                         feasible: NDArray[np.bool_]) -> dict[str, Array] | None:
         """The columns of the dynamic criteria for the feasible designs in one batched
-        force analysis, ``{column: (D, P)}`` (NaN rows for the others); None where the
-        batch does not apply, so the caller solves design by design."""
+        force analysis, ``{column: (D, P)}`` (``(D,)`` for a cycle's number; NaN for the
+        other designs); None where the batch does not apply, so the caller solves design
+        by design."""
         if not self._dynamic_criteria:
             return {}
         from mechloop.synthesis.dynamic_batch import dynamic_columns
 
         rows = np.flatnonzero(feasible)
-        columns = [self.task.criteria[i].column for i in self._dynamic_criteria
-                   if self.task.criteria[i].column not in CYCLE_VALUES]
+        columns = [self.task.criteria[i].column for i in self._dynamic_criteria]
         try:
             found = dynamic_columns(self, designs[rows], columns,
                                     kinematics=res.subset(rows) if res.derivatives
@@ -479,7 +482,7 @@ class SynthesisProblem:
             return None
         tables = {}
         for name, table in found.items():
-            tables[name] = np.full((designs.shape[0], table.shape[1]), np.nan)
+            tables[name] = np.full((designs.shape[0], *table.shape[1:]), np.nan)
             tables[name][rows] = table
         return tables
 
