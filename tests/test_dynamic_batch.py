@@ -14,7 +14,7 @@ from mechloop.dynamics.analysis import solve_dynamics
 from mechloop.errors import MechloopError, SolveError
 from mechloop.model.synthesis import CYCLE_VALUES
 from mechloop.solve.designs import solve_designs
-from mechloop.synthesis.dynamic_batch import dynamic_columns
+from mechloop.synthesis.dynamic_batch import cycle_value, dynamic_columns
 from mechloop.synthesis.problem import SynthesisProblem
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -82,7 +82,7 @@ def _assert_matches_oracle(problem: SynthesisProblem, designs: np.ndarray,
         broken += bool(frame["chain_break"].any())
         for name in columns:
             if name in CYCLE_VALUES:  # one number of the cycle per design
-                expected = getattr(result.summary, CYCLE_VALUES[name])
+                expected = cycle_value(result, name)
                 assert batch[name].shape == (len(designs),)
                 assert batch[name][d] == pytest.approx(expected, rel=RTOL, abs=ATOL,
                                                        nan_ok=True), (d, name)
@@ -138,19 +138,121 @@ def test_unknown_column_names_the_columns_there_are():
         dynamic_columns(problem, _designs(problem, 2, seed=5), ["F_bal"])
 
 
-@pytest.mark.parametrize("example, reason", [
-    ("single_cylinder_engine.yaml", "machine"),
-])
-def test_what_the_batch_does_not_do_is_refused_with_the_reason(example, reason):
-    data = yaml.safe_load((EXAMPLES / example).read_text())
-    number, value = next((k, float(v["r"])) for k, v in data["vectors"].items()
-                         if isinstance(v["r"], int | float))
-    data["synthesis"] = {"vary": {f"r{number}": [0.9 * value, 1.1 * value]},
+# ---- machine models: the steady cycle of every design ----------------------------------
+MACHINE_NUMBERS = ["delta", "flywheel", "constant_load", "efficiency"]
+
+
+def _engine() -> SynthesisProblem:
+    """examples/single_cylinder_engine.yaml at 1000 rpm instead of 3000 (a third of the
+    speed, a ninth of the kinetic energy), its crank r1 and rod r2 varied: a long crank
+    makes the cycle's work swing more than the kinetic energy it has, so the machine stops
+    without a flywheel, and a rod shorter than the crank breaks the chain."""
+    data = yaml.safe_load((EXAMPLES / "single_cylinder_engine.yaml").read_text())
+    data["time"]["rpm"] = 1000
+    data["synthesis"] = {"vary": {"r1": [20, 60], "r2": [30, 200]},
                          "criteria": [{"column": "M_bal", "reduce": "absmax",
-                                       "minimize": 1.0}]}
-    problem = SynthesisProblem(mechloop.Model.from_dict(data))
-    with pytest.raises(NotImplementedError, match=reason):
-        dynamic_columns(problem, _designs(problem, 2, seed=6), ["M_bal"])
+                                       "minimize": 1.0},
+                                      {"column": "omega", "reduce": "range", "max": 50},
+                                      {"column": "delta", "max": 1.5},
+                                      {"column": "flywheel", "minimize": 10.0},
+                                      {"column": "constant_load", "minimize": 0.01}]}
+    return SynthesisProblem(mechloop.Model.from_dict(data))
+
+
+def _failures(problem: SynthesisProblem, designs: np.ndarray) -> list[str]:
+    """How each design solves alone: 'ok', 'stops' or 'breaks'."""
+    out = []
+    for design in designs:
+        try:
+            solve_dynamics(problem.design_model(design))
+            out.append("ok")
+        except SolveError as error:
+            out.append("stops" if "stops" in str(error) else "breaks")
+    return out
+
+
+def test_machine_columns_and_numbers_of_every_engine_design_match_each_alone():
+    problem = _engine()
+    designs = _designs(problem, 12, seed=1)
+    assert {"ok", "stops", "breaks"} <= set(_failures(problem, designs))
+    columns = _all_columns(problem)
+    assert {"omega", "epsilon", "omega_fw", "epsilon_fw", "RJ1_2", "M_bal"} <= set(columns)
+    broken = _assert_matches_oracle(problem, designs, columns + MACHINE_NUMBERS)
+    assert broken == 4  # 3 stop and 1 breaks: NaN in every column, as the loop gives
+    # without a flywheel column the flywheel is not sized: the rest is the same
+    some = ["M_bal", "omega", "delta", "constant_load"]
+    every = dynamic_columns(problem, designs, [*some, "flywheel"])
+    for name, values in dynamic_columns(problem, designs, some).items():
+        np.testing.assert_array_equal(values, every[name], err_msg=name)
+
+
+def test_engine_criteria_use_the_batch_and_agree_with_the_loop(monkeypatch):
+    problem = _engine()
+    designs = _designs(problem, 12, seed=1)
+    ev = problem.evaluate(designs)
+    assert ev.feasible.sum() == 8  # NaN measures (3 stop) and a break are infeasible
+    for i, crit in enumerate(problem.task.criteria):  # the loop gives NaN for all 4
+        loop = np.array([problem._dynamic_value(d, crit) for d in designs])
+        assert np.isnan(loop).sum() == 4, crit.column
+        np.testing.assert_allclose(ev.measures[problem.criterion_keys[i]], loop,
+                                   rtol=RTOL, atol=ATOL, err_msg=crit.column)
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError("the per-design loop was taken")
+
+    monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
+    again = problem.evaluate(designs)
+    for key in problem.criterion_keys:
+        np.testing.assert_array_equal(again.measures[key], ev.measures[key])
+
+
+def test_machine_numbers_are_nan_for_a_model_without_them():
+    problem = SynthesisProblem(_slider_crank())
+    designs = _designs(problem, 3, seed=8)
+    out = dynamic_columns(problem, designs, ["delta", "flywheel", "constant_load"])
+    for name, values in out.items():
+        assert values.shape == (3,) and np.isnan(values).all(), name
+    result = solve_dynamics(problem.design_model(designs[0]))
+    assert np.isnan(cycle_value(result, "delta"))
+
+
+def test_a_stack_of_cycles_equals_each_cycle_alone_failures_as_nan():
+    """steady_cycles on cycles with their own q (two grids) and one machine that stops:
+    each cycle is steady_cycle's, the one that stops NaN with computed False."""
+    from mechloop.dynamics.cycle import steady_cycle, steady_cycles
+    from mechloop.dynamics.reduced import Reduced
+    from mechloop.model.dynamic import Machine
+
+    n = 73
+    phi = np.linspace(0.0, 2 * np.pi, n)
+    grids = [phi, phi + 0.5, phi, phi]
+    j = np.array([np.full(n, 0.5), 0.5 + 0.1 * np.cos(phi), np.full(n, 0.5),
+                  np.full(n, 0.001)])  # the last stops: the mean speed at zero energy at
+    # the slowest point, √(2·2·M0/J)/2 ≈ 141 rad/s, already exceeds ω_mean = 62.8 rad/s
+    load = 20.0 * np.sin(phi) + np.array([[0.0], [5.0], [-3.0], [0.0]])
+    omega = 2 * np.pi * 600 / 60
+    times = [(q - q[0]) / omega for q in grids]
+    spec = Machine(delta=0.01, friction=False)
+    zero = np.zeros((4, n))
+    stack = steady_cycles(np.array(grids), np.array(times),
+                          Reduced(j, np.gradient(j, phi, axis=-1), load), zero, zero, spec)
+    np.testing.assert_array_equal(stack.computed, [True, True, True, False])
+    for d in range(3):
+        alone = steady_cycle(grids[d], times[d], Reduced(j[d], np.gradient(j[d], phi),
+                                                         load[d]), zero[d], zero[d], spec)
+        for name in ("constant_load", "flywheel", "flywheel_approx", "omega_mean"):
+            assert getattr(stack, name)[d] == pytest.approx(getattr(alone, name),
+                                                            rel=1e-12), name
+        for motion in ("motion", "with_flywheel"):
+            for name in ("omega", "epsilon", "time", "kinetic_energy"):
+                np.testing.assert_allclose(getattr(getattr(stack, motion), name)[d],
+                                           getattr(getattr(alone, motion), name),
+                                           rtol=1e-12, err_msg=f"{motion}.{name}")
+    with pytest.raises(SolveError, match="stops"):
+        steady_cycle(grids[3], times[3], Reduced(j[3], np.gradient(j[3], phi), load[3]),
+                     zero[3], zero[3], spec)
+    assert np.isnan(stack.motion.omega[3]).all() and np.isnan(stack.flywheel[3])
+    assert not stack.motion.runs[3]
 
 
 def test_an_empty_population_gives_empty_columns():
@@ -338,3 +440,14 @@ def test_the_compressor_population_is_evaluated_by_the_batch(monkeypatch):
     again = problem.evaluate(designs)
     for key in problem.criterion_keys:
         np.testing.assert_array_equal(again.measures[key], ev.measures[key])
+
+
+def test_machine_numbers_need_a_machine_section():
+    data = yaml.safe_load((EXAMPLES / "crank_slider_friction.yaml").read_text())
+    data["synthesis"] = {"vary": {"r2": [0.15, 0.3]},
+                         "criteria": [{"column": "delta", "max": 0.05},
+                                      {"column": "M_bal", "minimize": 1.0}]}
+    with pytest.raises(MechloopError) as info:
+        mechloop.Model.from_dict(data)
+    assert "synthesis.criteria[0].column" in str(info.value)
+    assert "no machine: section" in str(info.value)

@@ -187,17 +187,23 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                         kinetic)
     cycle = None
     if model.machine is not None:
-        if red is None or time is None:
-            raise ModelError([Problem(("machine",), "machine motion needs one input and a "
-                                      f"model time (the model has {len(mechanism.drives)} "
-                                      f"drive(s) and {'no' if time is None else 'a'} time)",
-                                      "remove machine:, or drive the machine by one "
-                                      "argument and give time: {rpm: ...}")])
+        check_machine(mechanism, red, time)
         k = mechanism.drives[0].argument
         cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
                              _argument_rate(kin, k), model.machine)
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
                           centers, center, kinetic, powers, summary, static, inertia, cycle)
+
+
+def check_machine(mechanism: Mechanism, red: Reduced | None, time) -> None:
+    """Raise :class:`~mechloop.errors.ModelError` unless a ``machine:`` model has what its
+    cycle needs: one input (reduced characteristics ``red``) and a model time."""
+    if red is None or time is None:
+        raise ModelError([Problem(("machine",), "machine motion needs one input and a "
+                                  f"model time (the model has {len(mechanism.drives)} "
+                                  f"drive(s) and {'no' if time is None else 'a'} time)",
+                                  "remove machine:, or drive the machine by one "
+                                  "argument and give time: {rpm: ...}")])
 
 
 def load_powers(kin: Results, placement: Placement, mechanism: Mechanism, loads: Loads,

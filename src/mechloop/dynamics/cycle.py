@@ -9,7 +9,7 @@ cycle, the coefficient of speed fluctuation and the flywheel for a wanted one.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import NDArray
@@ -24,23 +24,27 @@ Array = NDArray[np.float64]
 
 @dataclass(frozen=True)
 class Cycle:
-    """Machine motion over one cycle (SI; arrays shaped (P,)).
+    """Machine motion over one cycle, or over a stack of independent cycles (SI; arrays
+    shaped (..., P), numbers a float or an array shaped (...)).
 
     ``constant_load``: the constant moment (force) on the input that balances the cycle's
     work; ``motion``: the motion without a flywheel; ``flywheel``/``flywheel_approx``: the
     flywheel moment of inertia for ``delta`` (exact root of δ(J_f) = δ, and the textbook
     approximation), None without ``delta``; ``with_flywheel``: the motion with it.
+    ``computed``: where the cycle could be computed (:func:`steady_cycles`); every number
+    and array of a cycle where it is False is NaN (its own :func:`steady_cycle` raises).
     """
 
     q: Array
-    omega_mean: float
+    omega_mean: Array | float
     reduced_load: Array
-    constant_load: float
+    constant_load: Array | float
     motion: machine.MachineMotion
     delta: float | None
-    flywheel: float | None
-    flywheel_approx: float | None
+    flywheel: Array | float | None
+    flywheel_approx: Array | float | None
     with_flywheel: machine.MachineMotion | None
+    computed: NDArray[np.bool_] | bool = True
 
 
 def steady_cycle(q: Array, time: Array, red: Reduced, friction_loss: Array, rate: Array,
@@ -49,34 +53,166 @@ def steady_cycle(q: Array, time: Array, red: Reduced, friction_loss: Array, rate
 
     ``q`` (rad or m) and ``time`` (s) over positions, ``red`` the reduced characteristics,
     ``friction_loss`` (W) and ``rate`` (the input's speed) from the force analysis at the
-    nominal speed.
+    nominal speed; arrays shaped (P,).  Raises :class:`SolveError` when the cycle cannot
+    be computed (the chain breaks, the input does not advance, the machine stops).
     """
-    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(red.inertia))):
+    return steady_cycles(q, time, red, friction_loss, rate, spec, failures="raise")
+
+
+def steady_cycles(q: Array, time: Array, red: Reduced, friction_loss: Array, rate: Array,
+                  spec: Machine, *, failures: str = "nan") -> Cycle:
+    """Machine motion of a stack of solved one-input models (e.g. candidate designs).
+
+    ``red`` (its arrays), ``friction_loss`` and ``rate`` shaped (..., P); ``q`` and
+    ``time`` shaped (P,) or (..., P).  Returns a :class:`Cycle` whose arrays are (..., P)
+    and numbers (...).  ``failures`` (default ``"nan"``): a cycle that cannot be computed —
+    what :func:`steady_cycle` raises as :class:`SolveError` — is NaN with False in
+    ``computed``, or (``"raise"``) raises that error.  Cases that share one ``q`` are
+    solved together; each case's numbers are those of its own :func:`steady_cycle` (to
+    rounding: the stack's linear solves and bisection stops).
+    """
+    if failures not in ("raise", "nan"):
+        raise ValueError(f"failures must be 'raise' or 'nan', got {failures!r}")
+    raising = failures == "raise"
+    inertia, d_inertia = np.asarray(red.inertia, dtype=float), np.asarray(red.d_inertia,
+                                                                              dtype=float)
+    lead = inertia.shape[:-1]
+    q = np.asarray(q, dtype=float)
+    time = np.asarray(time, dtype=float)
+    whole = np.all(np.isfinite(q), axis=-1) & np.all(np.isfinite(inertia), axis=-1)
+    if raising and not np.all(whole):
         raise SolveError("machine motion needs the whole cycle, but the chain breaks or the "
                          "force analysis is singular at some positions",
                          "remove the chain break (see the solve report) before sizing "
                          "the flywheel")
-    if np.any(np.diff(q) <= 0):
+    with np.errstate(invalid="ignore"):
+        advances = np.all(np.diff(q, axis=-1) > 0, axis=-1)
+    if raising and not np.all(advances):
         raise SolveError("machine motion needs the input to advance at every position of "
                          "the cycle", "make argument 1 increase from position 0 to N")
-    omega_mean = float((q[-1] - q[0]) / (time[-1] - time[0]))
-    load = red.load.copy()
+    omega_mean = (q[..., -1] - q[..., 0]) / (time[..., -1] - time[..., 0])
+    load = np.array(red.load, dtype=float)
     if spec.friction:
         with np.errstate(divide="ignore", invalid="ignore"):
             load -= np.where(rate != 0, friction_loss / rate, 0.0)
-    constant = float(machine.steady_driving_moment(q, load))
-    total = load + constant
-    motion = machine.machine_motion(q, red.inertia, total, omega_mean=omega_mean,
-                                    dj_red=red.d_inertia)
+    if raising:  # machine.py raises for the rest
+        return _on_one_q(q, inertia, d_inertia, load, omega_mean, spec, "raise")
+    # what machine.py would raise for: every case that fails becomes a placeholder
+    # (J = 1, no load, the q of a good case) that solves, and NaN at the end
+    ok = np.broadcast_to(whole & advances, lead) & np.all(
+        np.isfinite(load) & np.isfinite(d_inertia) & (inertia > 0), axis=-1)
+    with np.errstate(invalid="ignore"):
+        ok &= np.broadcast_to(np.isfinite(omega_mean) & (omega_mean > 0), lead)
+    n_pos = inertia.shape[-1]
+    flat = int(np.prod(lead, dtype=int))
+    rows_q = np.array(np.broadcast_to(q, (*lead, n_pos)).reshape(flat, n_pos))
+    good = ok.reshape(flat)
+    if not good.any():
+        rows_q[:] = np.arange(n_pos)
+    else:
+        rows_q[~good] = rows_q[np.argmax(good)]
+    j = np.where(good[:, None], inertia.reshape(flat, n_pos), 1.0)
+    dj = np.where(good[:, None], d_inertia.reshape(flat, n_pos), 0.0)
+    m = np.where(good[:, None], np.broadcast_to(load, (*lead, n_pos)).reshape(flat, n_pos),
+                 0.0)
+    w_mean = np.where(good, np.broadcast_to(omega_mean, lead).reshape(flat), 1.0)
+    groups, which = np.unique(rows_q, axis=0, return_inverse=True)
+    which = np.asarray(which).reshape(flat)
+    parts = [(np.flatnonzero(which == g),
+              _on_one_q(groups[g], j[which == g], dj[which == g], m[which == g],
+                        w_mean[which == g], spec, "nan"))
+             for g in range(len(groups))]
+    cycle = parts[0][1] if len(parts) == 1 else _gather(parts, flat)
+    computed = good & cycle.computed
+    return Cycle(
+        q=_shaped(rows_q, computed, lead), omega_mean=_shaped(w_mean, computed, lead),
+        reduced_load=_shaped(m, computed, lead),
+        constant_load=_shaped(cycle.constant_load, computed, lead),
+        motion=_motion_shaped(cycle.motion, computed, lead), delta=spec.delta,
+        flywheel=_shaped(cycle.flywheel, computed, lead),
+        flywheel_approx=_shaped(cycle.flywheel_approx, computed, lead),
+        with_flywheel=_motion_shaped(cycle.with_flywheel, computed, lead),
+        computed=computed.reshape(lead) if lead else bool(computed[0]))
+
+
+def _on_one_q(q: Array, inertia: Array, d_inertia: Array, load: Array,
+              omega_mean: Array | float, spec: Machine, stops: str) -> Cycle:
+    """The cycles of cases that share one ``q`` (P,); ``inertia``, ``d_inertia``, ``load``
+    (..., P), ``omega_mean`` (...).  With ``stops="nan"`` a case that is not steady or
+    stops (with or without the flywheel) is NaN and False in ``computed``."""
+    single = np.ndim(omega_mean) == 0
+    omega_mean = float(omega_mean) if single else omega_mean
+    constant = _number(machine.steady_driving_moment(q, load))
+    total = load + (constant if single else np.asarray(constant)[..., None])
+    motion = machine.machine_motion(q, inertia, total, omega_mean=omega_mean,
+                                    dj_red=d_inertia, stops=stops)
+    runs = np.asarray(motion.runs)
     flywheel = approx = with_flywheel = None
     if spec.delta is not None:
-        flywheel = float(machine.flywheel_inertia(q, red.inertia, total, omega_mean=omega_mean,
-                                                  delta=spec.delta, dj_red=red.d_inertia))
-        approx = float(machine.flywheel_inertia_approx(q, red.inertia, total,
-                                                       omega_mean=omega_mean,
-                                                       delta=spec.delta,
-                                                       dj_red=red.d_inertia))
-        with_flywheel = machine.machine_motion(q, red.inertia + flywheel, total,
-                                               omega_mean=omega_mean, dj_red=red.d_inertia)
+        # a case that stops has no cycle: size a harmless stand-in (no load) instead
+        j = inertia if runs.all() else np.where(runs[..., None], inertia, 1.0)
+        m = total if runs.all() else np.where(runs[..., None], total, 0.0)
+        flywheel = _number(machine.flywheel_inertia(q, j, m, omega_mean=omega_mean,
+                                                    delta=spec.delta, dj_red=d_inertia))
+        approx = _number(machine.flywheel_inertia_approx(q, j, m, omega_mean=omega_mean,
+                                                         delta=spec.delta,
+                                                         dj_red=d_inertia))
+        with_flywheel = machine.machine_motion(
+            q, inertia + (flywheel if single else np.asarray(flywheel)[..., None]), total,
+            omega_mean=omega_mean, dj_red=d_inertia, stops=stops)
+        runs = runs & np.asarray(with_flywheel.runs)
     return Cycle(q, omega_mean, load, constant, motion, spec.delta, flywheel, approx,
-                 with_flywheel)
+                 with_flywheel, bool(runs) if single else runs)
+
+
+def _number(x: Array | float) -> Array | float:
+    return float(x) if np.ndim(x) == 0 else np.asarray(x)
+
+
+def _gather(parts: list[tuple[NDArray[np.intp], Cycle]], n: int) -> Cycle:
+    """One cycle of ``n`` cases from the cycles of groups of them (their indices)."""
+
+    def put(get):
+        first = get(parts[0][1])
+        if first is None:
+            return None
+        first = np.asarray(first)
+        out = np.empty((n, *first.shape[1:]), dtype=first.dtype)
+        for index, cycle in parts:
+            out[index] = get(cycle)
+        return out
+
+    def motion(name):
+        if getattr(parts[0][1], name) is None:
+            return None
+        return machine.MachineMotion(**{f.name: put(lambda c, f=f: getattr(getattr(c, name),
+                                                                          f.name))
+                                        for f in fields(machine.MachineMotion)})
+
+    return Cycle(put(lambda c: np.broadcast_to(c.q, c.reduced_load.shape)),
+                 put(lambda c: c.omega_mean),
+                 put(lambda c: c.reduced_load), put(lambda c: c.constant_load),
+                 motion("motion"), parts[0][1].delta, put(lambda c: c.flywheel),
+                 put(lambda c: c.flywheel_approx), motion("with_flywheel"),
+                 put(lambda c: c.computed))
+
+
+def _shaped(x: Array | None, computed: NDArray[np.bool_], lead: tuple[int, ...]
+            ) -> Array | float | None:
+    """Cases ``(n, ...)`` back to the stack's shape, NaN where not ``computed``."""
+    if x is None:
+        return None
+    x = np.asarray(x, dtype=float)
+    mask = computed.reshape(computed.shape + (1,) * (x.ndim - 1))
+    x = np.where(mask, x, np.nan).reshape(*lead, *x.shape[1:])
+    return float(x) if x.ndim == 0 else x
+
+
+def _motion_shaped(motion: machine.MachineMotion | None, computed: NDArray[np.bool_],
+                   lead: tuple[int, ...]) -> machine.MachineMotion | None:
+    if motion is None:
+        return None
+    values = {f.name: _shaped(getattr(motion, f.name), computed, lead)
+              for f in fields(machine.MachineMotion) if f.name != "runs"}
+    return machine.MachineMotion(**values, runs=computed.reshape(lead) if lead
+                                 else bool(computed[0]))

@@ -62,6 +62,9 @@ class MachineMotion:
         the period of the cycle.
     omega_max, omega_min : float or array, shape (...), rad/s — extremes over the cycle.
     delta : float or array, shape (...) — ``(omega_max − omega_min) / omega_mean``.
+    runs : bool or array of bool, shape (...) — where the motion is steady and the speed
+        stays positive; every other field is NaN where it is False (only with
+        ``stops="nan"``: :func:`machine_motion` raises otherwise).
     """
 
     omega: Array
@@ -71,6 +74,7 @@ class MachineMotion:
     omega_max: Array | float
     omega_min: Array | float
     delta: Array | float
+    runs: NDArray[np.bool_] | bool = True
 
 
 def work(q: ArrayLike, m: ArrayLike) -> Array:
@@ -107,6 +111,7 @@ def machine_motion(
     *,
     omega_mean: ArrayLike,
     dj_red: ArrayLike | None = None,
+    stops: str = "raise",
 ) -> MachineMotion:
     """Steady motion from the reduced characteristics at a given mean speed.
 
@@ -119,6 +124,9 @@ def machine_motion(
     omega_mean : float or array, shape (...), rad/s — ``(ω_max + ω_min) / 2``, positive.
     dj_red : array, shape (..., P), kg·m², optional — ``dJ/dq``; by default the derivative
         of the cubic spline of ``j_red`` (periodic when ``j_red`` is).
+    stops : {"raise", "nan"}, default "raise" — what a case that is not steady or stops
+        gives: the :class:`SolveError` below, or NaN in its fields and False in ``runs``
+        (a stack of independent cases, e.g. candidate designs, where some fail).
 
     ``E0`` is found by bisection on all cases at once: the mean speed grows monotonically
     with ``E0`` from ``E0 = −min A`` (the machine just stops) upwards.
@@ -127,24 +135,38 @@ def machine_motion(
     ------
     SolveError
         If the net work over the cycle is not zero (the motion is not steady), or if the
-        speed cannot stay positive at the requested mean (the machine stops).
+        speed cannot stay positive at the requested mean (the machine stops); with
+        ``stops="nan"`` only for invalid arguments.
     """
+    if stops not in ("raise", "nan"):
+        raise ValueError(f"stops must be 'raise' or 'nan', got {stops!r}")
     q, j, m, w_mean = _reduced(q, j_red, m_red, omega_mean)
     a = work(q, m)
-    _check_steady(q, a)
+    if stops == "raise":
+        _check_steady(q, a)
     kinetic, runs = _kinetic_energy(a, j, w_mean)
-    _check_running(q, a, j, w_mean, runs)
+    if stops == "raise":
+        _check_running(q, a, j, w_mean, runs)
+    else:
+        runs = runs & ~_unsteady(a)
+        kinetic = np.where(runs[..., None], kinetic, 1.0)  # NaN below, after the spline
     omega = np.sqrt(2.0 * kinetic / j)
     dj = _spline_values(q, j, 1) if dj_red is None else _samples("dj_red", dj_red, q)
+    epsilon = (m - 0.5 * omega**2 * dj) / j
+    time = _spline_values(q, 1.0 / omega, -1)
+    if not runs.all():
+        kinetic, omega, epsilon, time = (np.where(runs[..., None], x, np.nan)
+                                         for x in (kinetic, omega, epsilon, time))
     w_max, w_min = omega.max(axis=-1), omega.min(axis=-1)
     return MachineMotion(
         omega=omega,
-        epsilon=(m - 0.5 * omega**2 * dj) / j,
+        epsilon=epsilon,
         kinetic_energy=kinetic,
-        time=_spline_values(q, 1.0 / omega, -1),
+        time=time,
         omega_max=_out(w_max),
         omega_min=_out(w_min),
         delta=_out((w_max - w_min) / w_mean),
+        runs=bool(runs) if runs.ndim == 0 else runs,
     )
 
 
@@ -261,9 +283,14 @@ def _mean_speed(e0: Array, a: Array, j: Array) -> Array:
     return 0.5 * (omega.max(axis=-1) + omega.min(axis=-1))
 
 
+def _unsteady(a: Array) -> NDArray[np.bool_]:
+    """The cases, shape (...), whose net work over the cycle is not zero."""
+    return np.abs(a[..., -1]) > STEADY_RTOL * np.abs(a).max(axis=-1)
+
+
 def _check_steady(q: Array, a: Array) -> None:
     net = a[..., -1]
-    bad = np.abs(net) > STEADY_RTOL * np.abs(a).max(axis=-1)
+    bad = _unsteady(a)
     if bad.any():
         case = _first(bad)
         raise SolveError(

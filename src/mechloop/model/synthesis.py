@@ -50,9 +50,19 @@ class Dimension(_Frozen):
     sets: list[Tie] = Field(min_length=1, description="the constants it sets")
 
 
-CYCLE_VALUES = {"efficiency": "efficiency", "loss_coefficient": "loss_coefficient"}
-"""Criteria on one number of the cycle (as mechloop energy prints), not on a column: the
-name in a criterion and the field of :class:`~mechloop.dynamics.energy.Summary`."""
+CYCLE_VALUES = {
+    "efficiency": "summary.efficiency",
+    "loss_coefficient": "summary.loss_coefficient",
+    "delta": "cycle.motion.delta",
+    "flywheel": "cycle.flywheel",
+    "constant_load": "cycle.constant_load",
+}
+"""Criteria on one number of the cycle (as mechloop energy and solve print), not on a
+column: the name in a criterion and its field of
+:class:`~mechloop.dynamics.analysis.DynamicResults` — of the energy ``summary``, or of the
+machine's ``cycle`` (``machine:``): the coefficient of speed fluctuation without a
+flywheel, the flywheel inertia for the wanted ``delta``, the constant load on the input
+that balances the cycle (NaN without them)."""
 
 
 def point_label(point: Point) -> str:
@@ -162,8 +172,9 @@ class Criterion(_Frozen):
     """
 
     column: str | None = Field(None, description="a column of mechloop solve's table, "
-                               "e.g. 'a3', 'dr4', 'M_bal', 'RJ0_1', or 'efficiency' / "
-                               "'loss_coefficient' of the cycle")
+                               "e.g. 'a3', 'dr4', 'M_bal', 'RJ0_1', or a number of the "
+                               "cycle: 'efficiency', 'loss_coefficient', and with machine: "
+                               "'delta', 'flywheel', 'constant_load'")
     point: Point | None = Field(None, description="or a point: {head: K} or {tail: K}")
     coordinate: Literal["x", "y"] | None = Field(None, description="x or y of the point")
     reduce: Reduction = "absmax"
@@ -368,6 +379,17 @@ def check_synthesis(model: Model) -> list[Problem]:
     for i, crit in enumerate(task.criteria):
         if crit.point is not None:
             check_point(crit.point, (*base, "criteria", i, "point"))
+        where = CYCLE_VALUES.get(crit.column or "", "")
+        if where.startswith("cycle.") and model.machine is None:
+            problems.append(Problem((*base, "criteria", i, "column"), f"{crit.column} is a "
+                                    "number of the machine's steady cycle, and the model "
+                                    "has no machine: section", "add machine: {delta: ...} "
+                                    "(see examples/single_cylinder_engine.yaml)"))
+        elif crit.column == "flywheel" and model.machine is not None and \
+                model.machine.delta is None:
+            problems.append(Problem((*base, "criteria", i, "column"), "the flywheel is "
+                                    "sized only for a wanted speed fluctuation",
+                                    "give machine: {delta: ...}"))
         if crit.max is None and crit.min is None and crit.minimize is None:
             problems.append(Problem((*base, "criteria", i), f"criterion {crit.label} "
                                     "has no max, min or minimize", "give one of them"))

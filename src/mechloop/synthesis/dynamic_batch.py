@@ -15,7 +15,12 @@ is iterated with each design as its own segment of the long axis (its own tolera
 stop, frozen once settled), so each design's reactions are those of its own iterations; a
 design whose friction does not settle gets NaN, as its own solve would raise.  The cycle's
 numbers (``efficiency``, ``loss_coefficient``) come from
-:func:`~mechloop.dynamics.energy.summarize` of the ``(D, P)`` powers, one per design.
+:func:`~mechloop.dynamics.energy.summarize` of the ``(D, P)`` powers, one per design.  A
+machine model (``machine:``) adds the steady cycle of every design from its ``(D, P)``
+reduced characteristics in one call of :func:`~mechloop.dynamics.cycle.steady_cycles`: the
+speed columns (``omega``, ``epsilon``, ``omega_fw``, ``epsilon_fw``) and the numbers
+``delta``, ``flywheel`` and ``constant_load``; a design whose cycle cannot be computed (its
+chain breaks somewhere, the machine stops) is NaN in every column, as its own solve raises.
 
 What is the same for every design is compiled once from a reference design (the model's
 own, or the first one of the population that assembles): the bodies, the kinematic pairs
@@ -25,14 +30,14 @@ inertia ``rod`` is the one mass property that depends on a design (its length) a
 computed per design.
 
 :func:`dynamic_columns` is the fast path; ``solve_dynamics(problem.design_model(d))`` per
-design is its oracle (tests/test_dynamic_batch.py).  What it does not support — a
-machine model (``machine:``) — it refuses with :class:`NotImplementedError` (saying why),
-so that a caller can fall back to the loop.
+design is its oracle (tests/test_dynamic_batch.py).  A caller keeps a fallback to that
+loop for what a batch may refuse with :class:`NotImplementedError` (today nothing does).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import replace
 from weakref import WeakKeyDictionary
 
 import numpy as np
@@ -41,11 +46,13 @@ from numpy.typing import NDArray
 from mechloop.dynamics.analysis import (
     DynamicResults,
     _argument_rate,
+    check_machine,
     cycle_clock,
     load_powers,
     mass_terms,
     solve_dynamics,
 )
+from mechloop.dynamics.cycle import Cycle, steady_cycles
 from mechloop.dynamics.energy import summarize
 from mechloop.dynamics.kinetostatics import kinetostatics
 from mechloop.dynamics.loads import Couple, Loads, PointForce, _values
@@ -67,8 +74,11 @@ Array = NDArray[np.float64]
 #: The dynamics of each problem's own design (the model is frozen): solved once.
 _OWN: WeakKeyDictionary = WeakKeyDictionary()
 
-#: Columns of the dynamic table that only a machine model has (``machine:``).
-MACHINE_COLUMNS = ("omega", "epsilon", "omega_fw", "epsilon_fw")
+#: What needs the flywheel of a machine model: a root per design (``brentq``), solved only
+#: when asked for.  A machine that runs without it runs with it, so leaving it out changes
+#: no other column and fails no design.
+FLYWHEEL_VALUES = frozenset({"omega_fw", "epsilon_fw", "flywheel"})
+
 
 
 def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
@@ -79,26 +89,28 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     are SI values shaped ``(D, V)`` in the order of ``problem.variables.names``;
     ``columns`` are names of ``solve_dynamics(model).to_frame()`` without the unit suffix
     (``'F_bal'``, ``'M_bal'``, ``'M_bal_vp'``, ``'RJ0_2'``, ``'RA_to_a2'``, ``'xS1'``,
-    ``'T'``, ...) or the cycle's numbers ``'efficiency'`` and ``'loss_coefficient'``
-    (:data:`~mechloop.model.synthesis.CYCLE_VALUES`).  Units are those of the table (SI;
-    reaction angles in degrees).
+    ``'T'``, and of a machine model ``'omega'``, ``'epsilon_fw'``, ...) or the cycle's
+    numbers ``'efficiency'``, ``'loss_coefficient'``, and of a machine model ``'delta'``,
+    ``'flywheel'``, ``'constant_load'`` (:data:`~mechloop.model.synthesis.CYCLE_VALUES`).
+    Units are those of the table (SI; reaction angles in degrees).
 
     Returns ``{column: array (D, P)}``, equal to
     ``solve_dynamics(problem.design_model(d)).to_frame()[column]`` row by row: NaN at the
     positions where a design's chain breaks (so a row of NaN for a design that breaks
     everywhere) or its force system is singular; a cycle's number is an array ``(D,)``
-    equal to the field of ``solve_dynamics(...).summary`` (NaN without driving work).  A
-    design whose friction does not settle (its own solve raises
-    :class:`~mechloop.errors.SolveError`) is NaN in every column.
+    equal to :func:`cycle_value` of ``solve_dynamics(...)`` (NaN without driving work,
+    and a machine's number NaN without ``machine:`` or, for ``flywheel``, its ``delta``).
+    A design whose own solve raises :class:`~mechloop.errors.SolveError` — its friction
+    does not settle, or the cycle of a machine model cannot be computed (the chain breaks
+    somewhere, the input does not advance, the machine stops) — is NaN in every column.
 
-    Raises :class:`NotImplementedError` (with the reason) for what the batch does not
-    do: a machine model (``machine:``, a cycle per design) and machine columns;
-    :class:`KeyError` for a column the model's table does not have.
+    Raises :class:`KeyError` for a column the model's table does not have and
+    :class:`~mechloop.errors.ModelError` for a machine model without one input or a
+    model time (as ``solve_dynamics``).
     """
     model: Model = problem.model
     designs = np.atleast_2d(np.asarray(designs, dtype=float))
     wanted = list(dict.fromkeys(columns))
-    _refuse(model, wanted)
     n_designs, n_pos = designs.shape[0], model.positions + 1
     if n_designs == 0:
         return {name: np.empty((0,) if name in CYCLE_VALUES else (0, n_pos))
@@ -144,37 +156,71 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
             balancing_vp[k] = balancing_vp[k] + np.where(
                 rate != 0, forces.friction_loss / rate, 0.0)
 
+    def by_design(values: Array) -> Array:
+        return np.asarray(values, dtype=float).reshape(n_designs, n_pos)
+
+    cycle = None
+    if model.machine is not None:  # as solve_dynamics: the cycle of every design at once
+        check_machine(mechanism, red, time)
+        k = mechanism.drives[0].argument
+        spec = model.machine
+        if not FLYWHEEL_VALUES.intersection(wanted):  # sizing it is most of the cycle's
+            spec = spec.model_copy(update={"delta": None})  # time; the rest runs anyway
+        cycle = steady_cycles(by_design(kin.arguments[k]), by_design(kin.time),
+                              Reduced(*(by_design(x) for x in (red.inertia, red.d_inertia,
+                                                                red.load))),
+                              by_design(forces.friction_loss),
+                              by_design(_argument_rate(kin, k)), spec)
     centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
     flat = DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
-                          centers, center, kinetic, {}, None, static, inertia, None)
+                          centers, center, kinetic, {}, None, static, inertia,
+                          None if cycle is None else _flat_cycle(cycle))
     table = _frame(flat, [c for c in wanted if c not in CYCLE_VALUES])
     out = {name: np.array(table[name].reshape(n_designs, n_pos)) for name in table}
-    cycle = [c for c in wanted if c in CYCLE_VALUES]
-    if cycle:
-        def by_design(values: Array) -> Array:
-            return np.asarray(values, dtype=float).reshape(n_designs, n_pos)
-
+    numbers = [c for c in wanted if c in CYCLE_VALUES]
+    if numbers:
         powers = load_powers(kin, placement, mechanism, loads, forces)
         summary = summarize({k: by_design(v) for k, v in powers.items()},
                             by_design(forces.friction_loss), by_design(cycle_clock(kin)),
                             mechanism.total_mass, by_design(kinetic))
-        for name in cycle:
-            out[name] = np.array(getattr(summary, CYCLE_VALUES[name]), dtype=float)
-    unsettled = forces.unsettled.reshape(n_designs, n_pos).any(axis=1)
+        stack = _Stack(summary, cycle)
+        for name in numbers:
+            out[name] = np.array(np.broadcast_to(cycle_value(stack, name), (n_designs,)),
+                                 dtype=float)
+    failed = forces.unsettled.reshape(n_designs, n_pos).any(axis=1)
+    if cycle is not None:
+        failed |= ~cycle.computed
     for values in out.values():  # its own solve raises: no number of this design
-        values[unsettled] = np.nan
+        values[failed] = np.nan
     return {name: out[name] for name in wanted}
 
 
-# ---- what the batch refuses -----------------------------------------------------------
-def _refuse(model: Model, wanted: list[str]) -> None:
-    if model.machine is not None:
-        raise NotImplementedError(
-            "a machine model (machine:): its steady cycle and flywheel are solved per "
-            "design over the whole cycle")
-    machine = [c for c in wanted if c in MACHINE_COLUMNS]
-    if machine:
-        raise NotImplementedError(f"machine columns {', '.join(machine)}")
+def cycle_value(result, name: str) -> float | Array:
+    """The number ``name`` of :data:`~mechloop.model.synthesis.CYCLE_VALUES` of a solved
+    model (:class:`DynamicResults`; or of a stack of designs, an array ``(D,)``): the
+    field its dotted path names, NaN where a step is missing (a model without
+    ``machine:``, a machine without ``delta`` has no ``flywheel``)."""
+    value = result
+    for step in CYCLE_VALUES[name].split("."):
+        value = getattr(value, step, None) if value is not None else None
+    return np.nan if value is None else value
+
+
+class _Stack:
+    """What :func:`cycle_value` reads of a population: its summary and cycle ``(D,)``."""
+
+    def __init__(self, summary, cycle: Cycle | None):
+        self.summary, self.cycle = summary, cycle
+
+
+def _flat_cycle(cycle: Cycle) -> Cycle:
+    """The speed arrays of a stack of cycles ``(D, P)`` on the long axis ``(D·P,)``, as
+    :meth:`DynamicResults.to_frame` reads them."""
+    def flat(motion):
+        return None if motion is None else replace(motion, omega=_flatten(motion.omega),
+                                                   epsilon=_flatten(motion.epsilon))
+
+    return replace(cycle, motion=flat(cycle.motion), with_flywheel=flat(cycle.with_flywheel))
 
 
 def _reference(problem, designs: Array, assembles: NDArray[np.bool_]) -> DynamicResults:
@@ -183,11 +229,21 @@ def _reference(problem, designs: Array, assembles: NDArray[np.bool_]) -> Dynamic
     shares and the vectors that end at each pair."""
     own = _OWN.get(problem)
     if own is None:  # the mechanism only: no friction iterations (which may not settle)
-        own = _OWN[problem] = solve_dynamics(problem.model, friction=False)
+        own = _OWN[problem] = solve_dynamics(_without_machine(problem.model),
+                                             friction=False)
     if not own.kinematics.broken.any() or not assembles.any():
         return own
-    return solve_dynamics(problem.design_model(designs[int(np.argmax(assembles))]),
-                          friction=False)
+    return solve_dynamics(_without_machine(problem.design_model(
+        designs[int(np.argmax(assembles))])), friction=False)
+
+
+def _without_machine(model: Model) -> Model:
+    """The model without its cycle (``machine:``), which the mechanism does not need and
+    which may not be computable for the reference design (the machine stops); without its
+    synthesis task too, whose criteria may name the cycle's numbers."""
+    if model.machine is None:
+        return model
+    return model.model_copy(update={"machine": None, "synthesis": None})
 
 
 # ---- kinematics of the population as one long axis -------------------------------------
@@ -349,4 +405,4 @@ def _frame(flat: DynamicResults, wanted: list[str]) -> dict[str, Array]:
     return {name: frame[by_name[name]].to_numpy(dtype=float) for name in wanted}
 
 
-__all__ = ["dynamic_columns"]
+__all__ = ["cycle_value", "dynamic_columns"]

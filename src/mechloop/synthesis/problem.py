@@ -9,11 +9,13 @@ relative rotation, workspace, user criteria).  Bounds are the search's own box.
 What the search minimizes is ``Q + Σ penalties`` for a design that meets the mandatory
 conditions, and ``INFEASIBLE · (1 + share of broken positions)`` otherwise, so every
 feasible design ranks before every infeasible one and an infeasible one is never reported
-as a result.  Dynamic criteria (any column of the dynamic table, and the cycle's
-``efficiency`` and ``loss_coefficient``) solve the force analysis of all feasible designs
-in one batched pass (:mod:`mechloop.synthesis.dynamic_batch`), friction included; only
-what the batch does not do — machine models — falls back to solving the dynamics of each
-feasible design on its own.
+as a result.  Dynamic criteria (any column of the dynamic table, the cycle's
+``efficiency`` and ``loss_coefficient``, and a machine's ``delta``, ``flywheel`` and
+``constant_load``) solve the force analysis of all feasible designs in one batched pass
+(:mod:`mechloop.synthesis.dynamic_batch`), friction and the machine's steady cycle
+included.  Solving the dynamics of each feasible design on its own remains only as the
+fallback for what a batch refuses (:class:`NotImplementedError`) and for a column the
+batch does not find.
 """
 
 from __future__ import annotations
@@ -444,7 +446,7 @@ class SynthesisProblem:
             elif tables is not None:  # a cycle's number is one per design already
                 value = (tables[crit.column] if crit.column in CYCLE_VALUES
                          else _reduce(tables[crit.column], crit.reduce))
-            else:  # what the batch cannot do (a machine model): dynamics per design
+            else:  # the batch refused (NotImplementedError, KeyError): design by design
                 value = np.full(n_designs, np.nan)
                 for d in np.flatnonzero(feasible):
                     value[d] = self._dynamic_value(designs[d], crit)
@@ -466,8 +468,9 @@ class SynthesisProblem:
                         feasible: NDArray[np.bool_]) -> dict[str, Array] | None:
         """The columns of the dynamic criteria for the feasible designs in one batched
         force analysis, ``{column: (D, P)}`` (``(D,)`` for a cycle's number; NaN for the
-        other designs); None where the batch does not apply, so the caller solves design
-        by design."""
+        other designs); None where the batch refuses (:class:`NotImplementedError`, which
+        it raises for nothing today) or lacks a column, so the caller solves design by
+        design."""
         if not self._dynamic_criteria:
             return {}
         from mechloop.synthesis.dynamic_batch import dynamic_columns
@@ -487,7 +490,10 @@ class SynthesisProblem:
         return tables
 
     def _dynamic_value(self, design: Array, crit: Criterion) -> float:
+        """One design's criterion value by its own ``solve_dynamics`` (NaN when that
+        raises :class:`SolveError`): the oracle and fallback of the batch."""
         from mechloop.dynamics.analysis import solve_dynamics
+        from mechloop.synthesis.dynamic_batch import cycle_value
 
         model = self.design_model(design)
         try:
@@ -495,7 +501,7 @@ class SynthesisProblem:
         except SolveError:
             return math.nan
         if crit.column in CYCLE_VALUES:
-            return float(getattr(result.summary, CYCLE_VALUES[crit.column]))
+            return float(cycle_value(result, crit.column))
         frame = result.to_frame()
         columns = {c.split(" [")[0]: c for c in frame.columns}
         if crit.column not in columns:
