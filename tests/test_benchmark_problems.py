@@ -162,6 +162,59 @@ def test_six_point_example_holds_the_published_targets():
     assert not task.path.timing and task.objective == "ssq"
 
 
+# Case1/Data1/Check_Case1.m, columns 1, 7 and 8 of X (r1..r4, rcx, rcy, x0, y0, theta0;
+# the six crank angles follow there): column 1 is Cabrera's GA design, the labels of
+# columns 7 and 8 are uncertain (the file's comment names fewer papers than columns).
+SIX_POINT_DESIGNS = {
+    "Cabrera": [39.46629, 8.56291, 19.09486, 47.83886, 13.38556, 12.21961, 29.72250,
+                23.45450, 6.20163],
+    "column 7": [45.9540268793200, 10.1413352283990, 36.1198616002200, 49.7905570636800,
+                 51.4935231082160, 16.4957302836340, 59.9251894962240, -0.2672551778894,
+                 0.8623849541875],
+    "column 8": [18.1304774597420, 8.5119056360364, 50.5261110390030, 47.4165113621710,
+                 51.6932129228460, -59.9706964849970, -50.6632020069740,
+                 44.5248269164710, 5.8015503547832],
+}
+
+
+@pytest.mark.parametrize(("name", "low", "high"), [("Cabrera", 0.0257, 0.0258),
+                                                   ("column 7", 1e-11, 1e-9),
+                                                   ("column 8", 1e-12, 1e-10)])
+def test_published_six_point_designs_in_the_examples_formulation(name, low, high):
+    """The published designs inside the six-point file's bounds: feasible, and their Q
+    (distance to the traced curve, no timing) equals the distances recomputed here from
+    a dense trace of the papers' own linkage formula."""
+    problem = SynthesisProblem(mechloop.load_model(SIX))
+    r1, r2, r3, r4, rcx, rcy, x0, y0, theta0 = SIX_POINT_DESIGNS[name]
+    values = {"r1": r2, "r2": r3, "r3": r4, "r4": r1, "a4": np.degrees(theta0) % 360 + 180,
+              "r6": np.hypot(rcx, rcy), "a6": np.degrees(np.arctan2(rcy, rcx)),
+              "start1.x": x0, "start1.y": y0}
+    row = np.array([values[n] * (np.pi / 180 if n[0] == "a" else 1e-3)
+                    for n in problem.variables.names])
+    ev = problem.evaluate(row[None, :])
+    assert ev.feasible[0] and low < ev.q[0] < high
+    # the papers' coupler point (frame rotated by theta0 and moved to x0, y0): the
+    # nearest point of each target on a 0.1-degree trace, refined by a scalar search in
+    # the crank angle — the exact distances to the curve
+    from scipy.optimize import minimize_scalar
+
+    def traced(theta2):
+        local = papers_coupler_point([r1, r2, r3, r4, rcx, rcy], theta2)
+        return local * np.exp(1j * theta0) + complex(x0, y0)
+
+    grid = np.radians(np.arange(0, 360, 0.1))
+    exact = 0.0
+    for target in (20 + 20j, 20 + 25j, 20 + 30j, 20 + 35j, 20 + 40j, 20 + 45j):
+        near = grid[np.argmin(np.abs(traced(grid) - target))]
+        found = minimize_scalar(lambda t, z=target: abs(traced(t) - z) ** 2,
+                                bounds=(near - 0.005, near + 0.005), method="bounded",
+                                options={"xatol": 1e-13})
+        exact += found.fun
+    # mechloop measures to the polyline through one position per degree: the chords
+    # differ from the arcs by a fraction of a micrometre here
+    assert ev.q[0] == pytest.approx(exact, rel=0.01, abs=2e-10)
+
+
 def test_polish_residuals_of_a_timed_path_are_x_and_y_errors():
     """With timing, the polish fits the x and y errors (2K residuals): their sum of
     squares is Q, and a least-squares fit from Cabrera's design reaches the better
