@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import time
 
 import numpy as np
 import pytest
@@ -140,6 +141,18 @@ def test_multistart_runs_local_searches():
     result = synthesize(model, scheduler="serial")
     assert result.feasible and result.q < 50
     assert result.evaluations > 256
+
+
+def test_multistart_keeps_the_time_budget():
+    """Long local searches stop at the budget with their best design so far."""
+    model = _with(mechloop.load_model(PATH), search={"method": "multistart", "seed": 2,
+                                                     "starts": 4, "iterations": 100000,
+                                                     "population": 16, "time": 1.5})
+    started = time.perf_counter()
+    result = synthesize(model, scheduler="serial")
+    assert time.perf_counter() - started < 15  # without the deadline: hours
+    assert result.stopped == "time budget spent"
+    assert result.feasible
 
 
 def test_function_generation_log10():

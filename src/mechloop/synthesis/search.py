@@ -438,16 +438,30 @@ def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: S
     _local(problem, variables.unscale(tracker.best_x), 100 * n_vars, evaluate)
 
 
-def _local_run(problem: SynthesisProblem, x0_unit: Array, max_evals: int
-               ) -> tuple[Array, float, int]:
-    """One local search of the multi-start (runs on a worker)."""
+class _OutOfTime(Exception):
+    """A local search reached the run's deadline."""
+
+
+def _local_run(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
+               deadline: float | None = None) -> tuple[Array, float, int]:
+    """One local search of the multi-start (runs on a worker); it stops with the best
+    design so far at ``deadline`` (``time.time()``, s), the search's time budget."""
     count = [0]
+    best: list = [problem.variables.scale(np.clip(x0_unit, 0.0, 1.0)), math.inf]
 
     def evaluate(x: Array) -> float:
+        if deadline is not None and count[0] and time.time() > deadline:
+            raise _OutOfTime
         count[0] += 1
-        return float(problem.evaluate(x[None, :]).total[0])
+        f = float(problem.evaluate(x[None, :]).total[0])
+        if f < best[1]:
+            best[:] = [x, f]
+        return f
 
-    x, f = _local(problem, x0_unit, max_evals, evaluate)
+    try:
+        x, f = _local(problem, x0_unit, max_evals, evaluate)
+    except _OutOfTime:
+        x, f = best
     return x, f, count[0]
 
 
@@ -471,7 +485,9 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
     first = list(np.clip(variables.unscale(starts), 0.0, 1.0)) if given else []
     local = first + [samples[i] for i in order[: max(search.starts - len(first), 0)]]
     budget = max(200, search.iterations * 10) * len(variables)
-    jobs = [(problem, s, budget) for s in local]
+    deadline = None if tracker.budget is None else \
+        time.time() + tracker.budget - (time.perf_counter() - tracker.started)
+    jobs = [(problem, s, budget, deadline) for s in local]
     clock = time.perf_counter()
     problem.evaluate(variables.scale(local[0])[None, :])
     per_run = (time.perf_counter() - clock) * budget
@@ -483,6 +499,7 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
         tracker.generation_done(before)
 
 
-def _run_job(job: tuple[SynthesisProblem, Array, int]) -> tuple[Array, float, int]:
-    problem, x0, budget = job
-    return _local_run(problem, x0, budget)
+def _run_job(job: tuple[SynthesisProblem, Array, int, float | None]
+             ) -> tuple[Array, float, int]:
+    problem, x0, budget, deadline = job
+    return _local_run(problem, x0, budget, deadline)
