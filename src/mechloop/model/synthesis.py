@@ -85,14 +85,23 @@ class PathTask(_Frozen):
     Without ``timing`` (class 3) the deviation of a target is its distance to the nearest
     point of the traced curve; with ``timing`` (class 4) the target ``k`` is reached at the
     position given for it, and the deviation is the distance to the point there, times
-    its weight E_k.
+    its weight E_k.  With ``timing: free`` the input (argument 1, model units) at which
+    each target is reached is a design variable of its own (``input@target1`` ...,
+    bounded by the argument's range over the positions), and the deviation is the
+    distance to the point solved at that input; with ``ordered`` (the default) the
+    inputs must follow the targets' order (increasing, modulo a turn for an input that
+    turns fully), and a design out of order is penalized by the overlap.
     """
 
     point: Point = Field(description="the tracing point: {head: K} or {tail: K}")
     targets: list[tuple[Scalar, Scalar]] | dict[int, tuple[Scalar, Scalar]] | Curve = Field(
         description="target points [[x, y], ...]; with timing a mapping position -> [x, y] "
         "(or a list, one per position); or a parametric curve")
-    timing: bool = Field(False, description="targets are reached at given positions")
+    timing: bool | Literal["free"] = Field(
+        False, description="targets are reached at given positions (true), anywhere on "
+        "the curve (false), or at inputs that the synthesis chooses (free)")
+    ordered: bool = Field(True, description="with timing: free, the inputs of the "
+                          "targets increase in the targets' order (within one turn)")
     weights: list[float] | None = Field(None, description="E_k: a weight per target")
 
 
@@ -352,10 +361,32 @@ def check_synthesis(model: Model) -> list[Problem]:
             if bad:
                 problems.append(Problem((*base, "path", "targets"), f"positions {bad} are "
                                         f"outside 0..{n}", "give positions of the model"))
-        if task.path.timing and isinstance(targets, list) and len(targets) != n + 1:
+        if task.path.timing is True and isinstance(targets, list) and \
+                len(targets) != n + 1:
             problems.append(Problem((*base, "path", "targets"), f"with timing, a list of "
                                     f"targets has one point per position ({n + 1})",
                                     "or map positions to points: {0: [x, y], 5: [x, y]}"))
+        if task.path.timing == "free":
+            if isinstance(targets, dict):
+                problems.append(Problem((*base, "path", "targets"), "with timing: free the "
+                                        "targets are a list: the synthesis chooses where "
+                                        "each is reached", "write targets: [[x, y], ...], "
+                                        "or timing: true to keep the positions"))
+            if 1 not in model.arguments:
+                problems.append(Problem((*base, "path", "timing"), "timing: free varies "
+                                        "the value of argument 1, and the model has none",
+                                        "add arguments: {1: {table: ...}}"))
+            for i, contour in enumerate(model.contours):
+                if contour.variant == "auto":
+                    problems.append(Problem(
+                        ("contours", i, "variant"), f"contour {i + 1} tracks its variant "
+                        "(auto); timing: free solves the targets' inputs apart from the "
+                        "positions, where a tracked variant is not defined",
+                        "give the contour variant: 1 or 2"))
+        elif "ordered" in task.path.model_fields_set:
+            problems.append(Problem((*base, "path", "ordered"), "ordered applies to "
+                                    "timing: free only", "remove ordered, or set "
+                                    "timing: free"))
         count = (targets.count if isinstance(targets, Curve) else len(targets))
         if task.path.weights is not None and len(task.path.weights) != count:
             problems.append(Problem((*base, "path", "weights"), f"{len(task.path.weights)} "

@@ -11,7 +11,7 @@ computation for one design.
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from mechloop.errors import SolveError
 from mechloop.model.check import require_valid
 from mechloop.model.schema import Model
-from mechloop.solve.inputs import model_arguments, model_time
+from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import _finish_angles, _setup, _solve_block
 
 Array = NDArray[np.float64]
@@ -146,6 +146,43 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
 
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
+    regular, _ = _solve(model, overrides, None, derivatives=derivatives,
+                        chunk_elements=chunk_elements)
+    return regular
+
+
+def solve_designs_at(model: Model, overrides: Mapping[str, ArrayLike], inputs: ArrayLike,
+                     *, derivatives: bool = True, chunk_elements: int = CHUNK_ELEMENTS
+                     ) -> tuple[DesignResults, DesignResults]:
+    """:func:`solve_designs`, and each design also at its own ``K`` values of argument 1.
+
+    ``inputs`` : shape ``(D, K)``, SI (rad or m) — per design, the values of argument 1
+    (its offsets not included) at which to solve besides the model's positions: free
+    timing in path synthesis.  They are solved in the same vectorized call, as ``K``
+    extra columns of the position axis, by the same closed-form modules; any other
+    argument takes there its value interpolated over argument 1 along the positions
+    (which then must run monotonically).
+
+    Returns ``(regular, at)``: ``regular`` is exactly what :func:`solve_designs` returns
+    (arrays ``(D, P)``); ``at`` holds the positions only (``rates`` and ``accels`` are
+    :class:`NotSolved`), arrays ``(D, K)``, with ``arguments[1]`` the inputs, its masks
+    at those inputs, and as ``branch_changes`` per contour whether the assembly branch at
+    any input differs from the branch of the regular positions.  With a tracked variant
+    (``auto``) the extra columns would follow the last position rather than their own
+    place in the motion: give such contours a fixed variant.
+    """
+    values = np.asarray(inputs, dtype=float)
+    if values.ndim != 2:
+        raise SolveError(f"inputs need the shape (D, K), got {values.shape}",
+                         "pass one row of argument values per design")
+    return _solve(model, overrides, values, derivatives=derivatives,
+                  chunk_elements=chunk_elements)
+
+
+def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | None, *,
+           derivatives: bool, chunk_elements: int
+           ) -> tuple[DesignResults, DesignResults | None]:
+    """The regular positions, and with ``inputs`` ``(D, K)`` the extra columns too."""
     structure = require_valid(model)
     over = {name: np.atleast_1d(np.asarray(v, dtype=float)) for name, v in overrides.items()}
     sizes = {v.shape for v in over.values()}
@@ -157,48 +194,77 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
     full = (n_designs, n_pos)
     time = model_time(model)
     args = model_arguments(model, time)
-    chunk = max(1, int(chunk_elements) // n_pos)
+    n_extra = 0
+    if inputs is not None:
+        if not sizes:
+            n_designs = inputs.shape[0]
+            full = (n_designs, n_pos)
+        if inputs.shape[0] != n_designs or 1 not in args:
+            raise SolveError(f"inputs need one row per design ({n_designs}) and a model "
+                             "with argument 1", f"got inputs of shape {inputs.shape}")
+        n_extra = inputs.shape[1]
+        extra_at = _extra_arguments(args, inputs)
+    n_cols = n_pos + n_extra
+    chunk = max(1, int(chunk_elements) // n_cols)
 
     setup = _setup(model, structure, args, over)
     names = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"]
     # Parameters that no design changes over positions are broadcast, not copied: a
     # constant, or a link of one, is its root's value plus the link's delta.
     values: dict[str, Array] = {}
+    extra: dict[str, Array] = {}
     for name in names:
         if name in setup.constant:
             root = structure.links[name].root if name in structure.links else name
             value = (setup.constants[name] if name == root
                      else setup.constants[root] + setup.deltas[name])
             values[name] = np.broadcast_to(value, full)
+            extra[name] = np.broadcast_to(value, (n_designs, n_extra))
     still = np.broadcast_to(0.0, full)
     rates = {name: still for name in values}
     accels = dict(rates)
     for name in setup.varying:
         values[name] = np.empty(full)
+        extra[name] = np.empty((n_designs, n_extra))
         if derivatives:
             rates[name], accels[name] = np.empty(full), np.empty(full)
     values = {name: values[name] for name in names}
+    extra = {name: extra[name] for name in names}
     numbers = [c.number for c in setup.ordered]
     no_solution = {c: np.zeros(full, dtype=bool) for c in numbers}
     dead = {c: np.zeros(full, dtype=bool) for c in numbers}
     changes = {c: np.zeros(n_designs, dtype=bool) for c in numbers}
+    extra_none = {c: np.zeros((n_designs, n_extra), dtype=bool) for c in numbers}
+    extra_dead = {c: np.zeros((n_designs, n_extra), dtype=bool) for c in numbers}
+    extra_changes = {c: np.zeros(n_designs, dtype=bool) for c in numbers}
 
     for lo in range(0, n_designs, chunk):
         hi = min(lo + chunk, n_designs)
-        shape = (hi - lo, n_pos)
+        shape = (hi - lo, n_cols)
         part = _setup(model, structure, args, {k: v[lo:hi] for k, v in over.items()})
-        block = _solve_block(part, 0, n_pos, shape, {}, derivatives=derivatives)
+        if n_extra:
+            part = _with_extra_columns(part, args, extra_at, lo, hi)
+        block = _solve_block(part, 0, n_cols, shape, {}, derivatives=derivatives)
         for c in numbers:
-            no_solution[c][lo:hi] = block.no_solution[c]
-            dead[c][lo:hi] = block.dead[c]
-            branch = block.branch[c]
+            no_solution[c][lo:hi] = block.no_solution[c][:, :n_pos]
+            dead[c][lo:hi] = block.dead[c][:, :n_pos]
+            branch = block.branch[c][:, :n_pos]
             changes[c][lo:hi] = (branch.max(axis=-1) > 0) & (branch.min(axis=-1) < 0)
+            if n_extra:
+                extra_none[c][lo:hi] = block.no_solution[c][:, n_pos:]
+                extra_dead[c][lo:hi] = block.dead[c][:, n_pos:]
+                at = block.branch[c][:, n_pos:]
+                extra_changes[c][lo:hi] = ((at.max(axis=-1) > 0) & (branch.min(axis=-1) < 0)
+                                           | (at.min(axis=-1) < 0)
+                                           & (branch.max(axis=-1) > 0))
         for name in setup.varying:
             p = block.params[name]
-            values[name][lo:hi] = p.value
+            values[name][lo:hi] = p.value[..., :n_pos]
+            if n_extra:
+                extra[name][lo:hi] = p.value[..., n_pos:]
             if derivatives:
-                rates[name][lo:hi] = p.rate
-                accels[name][lo:hi] = p.accel
+                rates[name][lo:hi] = p.rate[..., :n_pos]
+                accels[name][lo:hi] = p.accel[..., :n_pos]
 
     broken = np.zeros(full, dtype=bool)
     for c in numbers:
@@ -209,7 +275,7 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
         for name in setup.varying:
             for table in (values, rates, accels) if derivatives else (values,):
                 np.copyto(table[name], np.nan, where=broken)
-    return DesignResults(
+    regular = DesignResults(
         model=model,
         arguments={k: s.value for k, s in args.items()},
         time=None if time is None else time.value,
@@ -221,6 +287,50 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
         dead=dead,
         branch_changes=changes,
     )
+    if inputs is None:
+        return regular, None
+    extra_broken = np.zeros((n_designs, n_extra), dtype=bool)
+    for c in numbers:
+        extra_broken |= extra_none[c] | extra_dead[c]
+    _finish_angles(setup, {name: extra[name] for name in setup.varying})
+    for name in setup.varying:
+        np.copyto(extra[name], np.nan, where=extra_broken)
+    at_inputs = DesignResults(
+        model=model, arguments=extra_at, time=None, values=extra,
+        rates=NotSolved("rates"), accels=NotSolved("accelerations"), broken=extra_broken,
+        no_solution=extra_none, dead=extra_dead, branch_changes=extra_changes)
+    return regular, at_inputs
+
+
+def _extra_arguments(args: Mapping[int, Signal], inputs: Array) -> dict[int, Array]:
+    """Every argument at the extra inputs, SI, ``(D, K)``: argument 1 is ``inputs``, any
+    other is interpolated over argument 1 along the positions."""
+    out = {1: inputs}
+    first = args[1].value
+    order = np.argsort(first, kind="stable")
+    for number, signal in args.items():
+        if number != 1:
+            out[number] = np.interp(inputs, first[order], signal.value[order])
+    return out
+
+
+def _with_extra_columns(part, args: Mapping[int, Signal], extra_at: Mapping[int, Array],
+                        lo: int, hi: int):
+    """``part`` with every driven parameter extended by the extra columns: the argument's
+    signal gets zeros there (and no rates), and the per-design argument values enter
+    through the offset, ``(rows, P + K)``."""
+    driven = {}
+    for name, (signal, offset) in part.driven.items():
+        number = next(k for k, s in args.items() if s is signal)
+        n_pos = signal.value.shape[-1]
+        at = extra_at[number][lo:hi]
+        pad = np.zeros(at.shape[-1])
+        longer = Signal(np.concatenate([signal.value, pad]),
+                        np.concatenate([signal.rate, pad]),
+                        np.concatenate([signal.accel, pad]))
+        shift = np.concatenate([np.zeros((at.shape[0], n_pos)), at], axis=-1)
+        driven[name] = (longer, offset + shift)
+    return replace(part, driven=driven)
 
 
 def _rows(table: Array, rows: NDArray[np.int64]) -> Array:

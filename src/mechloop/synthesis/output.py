@@ -11,6 +11,7 @@ import pandas as pd
 from mechloop.model.groups import GroupMechanism, save_mechanism, with_dimensions
 from mechloop.model.load import atomic_write_bytes, save_model
 from mechloop.synthesis.search import SynthesisResult
+from mechloop.synthesis.variables import is_input
 
 
 def terms_frame(result: SynthesisResult) -> pd.DataFrame:
@@ -49,8 +50,24 @@ def write_model(result: SynthesisResult, path: str | os.PathLike[str], *,
     built from, default: none) the group file is written instead: the mechanism with the
     best dimensions (``result.values()``, keyed by their names) and its ``synthesis:``
     section kept, to refine or solve.
+
+    With free timing the written model is the mechanism alone: the target inputs
+    (``input@target1`` ...) are no constants of it.  A YAML file gets them in a comment
+    at its top (argument 1 in its model unit), so that the file says where each target
+    is reached; ``result.values()``, the table and ``mechloop synthesize`` report them
+    with the other variables.
     """
+    inputs = {name: value for name, value in result.values().items() if is_input(name)}
     if mechanism is not None:
-        return save_mechanism(with_dimensions(mechanism, result.values()), path)
-    save_model(result.model, path)
-    return Path(path)
+        written = save_mechanism(with_dimensions(
+            mechanism, {k: v for k, v in result.values().items() if not is_input(k)}), path)
+    else:
+        save_model(result.model, path)
+        written = Path(path)
+    if inputs and written.suffix.lower() != ".json":
+        unit = result.problem.variables.units[result.problem.variables.input_columns[0]]
+        lines = [f"# free timing: target k is reached at argument 1 = input@targetk ({unit})"]
+        lines += [f"#   {name}: {value:.12g}" for name, value in inputs.items()]
+        text = "\n".join(lines) + "\n" + written.read_text(encoding="utf-8")
+        atomic_write_bytes(written, text.encode("utf-8"))
+    return written

@@ -33,7 +33,7 @@ from mechloop.model.dynamic import HeadPoint
 from mechloop.model.schema import Model
 from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, SynthesisTask
 from mechloop.model.units import registry, to_si, unit_factor
-from mechloop.solve.designs import DesignResults, solve_designs
+from mechloop.solve.designs import DesignResults, solve_designs, solve_designs_at
 from mechloop.synthesis import deviations as dv
 from mechloop.synthesis.variables import Variables, apply_design, compile_variables
 
@@ -139,6 +139,7 @@ class SynthesisProblem:
     def _compile_target(self) -> None:
         task, n = self.task, self.model.positions
         self.target_kind: str | None = None
+        self.free_timing = False
         self.q_unit = self.model.units.length
         self.weights: Array | None = None
         if task.path is not None:
@@ -157,10 +158,12 @@ class SynthesisProblem:
                 self.target_positions = np.array(list(targets), dtype=np.int64)
             else:
                 self.targets = self._points(targets)
-                self.target_positions = (np.arange(n + 1, dtype=np.int64) if path.timing
-                                         else None)
-            if not path.timing:
+                self.target_positions = (np.arange(n + 1, dtype=np.int64)
+                                         if path.timing is True else None)
+            if path.timing is not True:
                 self.target_positions = None
+            if path.timing == "free":
+                self._compile_free_timing()
             if path.weights is not None:
                 self.weights = np.asarray(path.weights, dtype=float)
             self.point = path.point
@@ -220,6 +223,39 @@ class SynthesisProblem:
             self.q_factor = 1.0
             minimized = [c for c in task.criteria if c.minimize]
             self.q_unit = "m" if all(c.point is not None for c in minimized) else "SI"
+
+    def _compile_free_timing(self) -> None:
+        """Free timing: the target inputs are the last columns of a design; argument 1
+        must run one way over the positions, so that its range is the motion."""
+        from mechloop.solve.inputs import model_arguments, model_time
+
+        self.free_timing = True
+        values = model_arguments(self.model, model_time(self.model), strict=False)[1].value
+        steps = np.diff(values)
+        if not ((steps >= 0).all() or (steps <= 0).all()) or values[0] == values[-1]:
+            raise ModelError([Problem(("arguments", 1), "timing: free needs argument 1 to "
+                                      "run one way over the positions (its range is where "
+                                      "the targets may be reached)", "give argument 1 a "
+                                      "monotonic table or law")])
+        span = float(values.max() - values.min())
+        angle = self.variables.kind(int(self.variables.input_columns[0])) == "angle" \
+            if self.variables.input_columns.size else False
+        # an input that turns fully is ordered modulo the turn (the order may start
+        # anywhere); any other must simply increase
+        self.input_turn = 2 * np.pi if angle and span >= 2 * np.pi * (1 - 1e-9) else None
+        self.input_span = span or 1.0
+
+    def order_violation(self, designs: Array) -> Array:
+        """How far the free-timing inputs of ``designs`` ``(D, V)`` are out of the
+        targets' order, SI, ``(D,)`` (0 in order).  Increasing inputs: the sum of the
+        backward steps.  An input that turns fully: by how much the forward steps
+        (modulo the turn) add up to more than one turn."""
+        inputs = designs[:, self.variables.input_columns]
+        steps = np.diff(inputs, axis=-1)
+        if self.input_turn is None:
+            return np.maximum(-steps, 0).sum(axis=-1)
+        forward = np.mod(steps, self.input_turn).sum(axis=-1)
+        return np.maximum(forward - self.input_turn, 0)
 
     def _compile_conditions(self) -> None:
         task, model = self.task, self.model
@@ -304,25 +340,55 @@ class SynthesisProblem:
         """Global position (m, as x + iy) of a point at every position, ``(D, P)``."""
         return _place(self.model, results, self.variables.starts(designs), point)
 
+    def solve_at_inputs(self, designs: Array) -> tuple[DesignResults, DesignResults]:
+        """Free timing: the kinematics at the positions, ``(D, P)``, and at each
+        design's target inputs, ``(D, K)``, in one call
+        (:func:`~mechloop.solve.designs.solve_designs_at`)."""
+        return solve_designs_at(self.model, self.variables.overrides(designs),
+                                designs[:, self.variables.input_columns],
+                                derivatives=self.needs_derivatives)
+
+    def reached(self, at: DesignResults, designs: Array) -> NDArray[np.complex128]:
+        """Free timing: the tracing point (m, x + iy) at each design's target inputs,
+        ``(D, K)``: column k is where target k is reached."""
+        return self.place(at, designs, self.point)
+
     def _assess(self, designs: Array) -> tuple[DesignResults, NDArray[np.bool_],
                                                 Array | None, dict[str, Array],
                                                 dict[str, Array]]:
         """Solve a population and compute what both :meth:`evaluate` and
         :meth:`residuals` need: the results, the mandatory conditions, the weighted
         deviations ``(D, K)`` (NaN rows where a design does not assemble; None without a
-        target), and the penalty terms and measures."""
-        res = self.solve(designs)
-        feasible = res.assembles & res.keeps_variant
+        target), and the penalty terms and measures.  With free timing a design must
+        also assemble, on the same branch, at its target inputs, and ``self._reached``
+        keeps the points there for :meth:`residuals`."""
+        terms: dict[str, Array] = {}
+        measures: dict[str, Array] = {}
+        if self.free_timing:
+            res, at = self.solve_at_inputs(designs)
+            feasible = res.assembles & res.keeps_variant & at.assembles & at.keeps_variant
+        else:
+            res = self.solve(designs)
+            feasible = res.assembles & res.keeps_variant
         dev = None
         if self.target_kind:
             rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
             dev = np.full((designs.shape[0], self._target_count()), np.nan)
-            if rows.size:
+            if self.free_timing:
+                self._reached = np.full(dev.shape, np.nan, dtype=complex)
+                if rows.size:
+                    self._reached[rows] = self.reached(at.subset(rows), designs[rows])
+                dev = np.abs(self._reached - self.targets[None, :]) / self.length_unit
+            elif rows.size:
                 dev[rows] = self.deviations(res.subset(rows), designs[rows])
             if self.weights is not None:
                 dev = dev * self.weights[None, :]
-        terms: dict[str, Array] = {}
-        measures: dict[str, Array] = {}
+        if self.free_timing and self.task.path.ordered:
+            overlap = self.order_violation(designs)
+            factor = unit_factor(self.variables.units[self.variables.input_columns[0]],
+                                 self.variables.kind(int(self.variables.input_columns[0])))
+            measures["order"] = overlap / factor
+            terms["order"] = 1000.0 * overlap / self.input_span
         self._desirable(res, designs, terms, measures)
         self._criteria(res, designs, feasible, terms, measures)
         return res, feasible, dev, terms, measures
@@ -360,12 +426,18 @@ class SynthesisProblem:
         """Deviations (weighted) and the square roots of the penalties, ``(D, K + T)``,
         for a least-squares polish; an infeasible design gets a large constant row.
 
-        A path with timing gives the x and y errors of each target instead of its distance,
-        ``(D, 2K + T)``: the same sum of squares, but smooth where a distance is zero,
-        so the polish does not stall with fewer targets than variables."""
+        A path with timing (given or free) gives the x and y errors of each target
+        instead of its distance, ``(D, 2K + T)``: the same sum of squares, but smooth where
+        a distance is zero, so the polish does not stall with fewer targets than
+        variables."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
         res, feasible, dev, terms, _ = self._assess(designs)
-        if dev is not None and self.target_kind == "path" and \
+        if dev is not None and self.free_timing:
+            error = (self._reached - self.targets[None, :]) / self.length_unit
+            if self.weights is not None:
+                error = error * self.weights[None, :]
+            dev = np.concatenate([error.real, error.imag], axis=1)
+        elif dev is not None and self.target_kind == "path" and \
                 self.target_positions is not None:
             z = self.place(res, designs, self.point)[:, self.target_positions]
             error = (z - self.targets[None, :]) / self.length_unit
@@ -380,8 +452,14 @@ class SynthesisProblem:
         return out
 
     def deviations(self, results: DesignResults, designs: Array) -> Array:
-        """Deviations from the targets, ``(D, K)``, in the model's units."""
+        """Deviations from the targets, ``(D, K)``, in the model's units.
+
+        With free timing ``results`` are those at the target inputs (the second of
+        :meth:`solve_at_inputs`): the distance from target k to the point at its input."""
         kind = self.target_kind
+        if kind == "path" and self.free_timing:
+            return np.abs(self.reached(results, designs) - self.targets[None, :]) / \
+                self.length_unit
         if kind == "path":
             z = self.place(results, designs, self.point)
             if self.target_positions is None:

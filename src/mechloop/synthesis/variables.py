@@ -11,6 +11,12 @@ components.  Every target is a linear function of the design, so a whole populat
 to its parameters in a few array operations (:meth:`Variables.targets`) and is solved in
 one call of :func:`~mechloop.solve.designs.solve_designs`.
 
+Path synthesis with free timing (``timing: free``) adds one *internal* variable per
+target, ``input@target1`` ...: the value of argument 1 at which the target is reached.
+They are columns of the design matrix like any other (bounded by the argument's range
+over the positions) and are reported with the result, but they set no constant of the
+model: :func:`apply_design` leaves them out, the written model is the mechanism.
+
 Inside the search every value is SI (m, rad); bounds and saved models are in the model's
 units.
 """
@@ -45,6 +51,8 @@ class Variables:
     in SI — the target is the sum of ``factor · design[column] + shift`` over its ties.
     ``components`` hold, for every vector set by its components (``vK.x``), the SI
     components ``(x, y)`` it has in the model (used where a component is not tied).
+    ``internal`` maps the name of each internal variable (free timing:
+    ``input@target1`` ...) to its kind; they come last and tie nothing.
     """
 
     names: tuple[str, ...]
@@ -53,11 +61,19 @@ class Variables:
     units: tuple[str, ...]
     ties: tuple[tuple[str, int, float, float], ...] = ()
     components: Mapping[int, tuple[float, float]] | None = None
+    internal: Mapping[str, str] | None = None
 
     def __post_init__(self) -> None:
         if not self.ties:  # plain variables: each sets the constant it names
-            object.__setattr__(self, "ties", tuple((name, i, 1.0, 0.0)
-                                                   for i, name in enumerate(self.names)))
+            object.__setattr__(self, "ties", tuple(
+                (name, i, 1.0, 0.0) for i, name in enumerate(self.names)
+                if name not in (self.internal or {})))
+
+    @property
+    def input_columns(self) -> NDArray[np.int64]:
+        """The columns of the internal free-timing inputs, in target order, ``(K,)``."""
+        return np.array([i for i, name in enumerate(self.names)
+                         if name in (self.internal or {})], dtype=np.int64)
 
     def __len__(self) -> int:
         return len(self.names)
@@ -102,6 +118,8 @@ class Variables:
 
     def kind(self, column: int) -> str:
         """``'length'`` or ``'angle'``: the kind of variable ``column``."""
+        if self.names[column] in (self.internal or {}):
+            return self.internal[self.names[column]]
         target = next(t for t, c, _, _ in self.ties if c == column)
         return kind_of(target)
 
@@ -143,7 +161,45 @@ def compile_variables(model: Model) -> Variables:
             number = int(target[1:].split(".")[0])
             r, a = _vector_si(model, number)
             components[number] = (r * math.cos(a), r * math.sin(a))
-    return Variables(names, low, high, tuple(units), tuple(ties), components)
+    internal: dict[str, str] = {}
+    if task.path is not None and task.path.timing == "free":
+        kind, unit, lowest, highest = input_range(model)
+        count = _target_count(task.path.targets)
+        inputs = tuple(input_name(k) for k in range(count))
+        names += inputs
+        units += [unit] * count
+        low = np.concatenate([low, np.full(count, lowest)])
+        high = np.concatenate([high, np.full(count, highest)])
+        internal = dict.fromkeys(inputs, kind)
+    return Variables(names, low, high, tuple(units), tuple(ties), components,
+                     internal or None)
+
+
+def input_name(k: int) -> str:
+    """The internal variable of free timing for target ``k`` (from 0): ``input@target1``."""
+    return f"input@target{k + 1}"
+
+
+def is_input(name: str) -> bool:
+    """Whether ``name`` is an internal free-timing input (not a constant of the model)."""
+    return name.startswith("input@target")
+
+
+def input_range(model: Model) -> tuple[str, str, float, float]:
+    """Argument 1: its kind, its unit in the model, and its least and greatest value over
+    positions 0..N (SI)."""
+    from mechloop.model.check import argument_kind
+    from mechloop.solve.inputs import model_arguments, model_time
+
+    kind = argument_kind(model, 1)
+    unit = model.arguments[1].unit or getattr(model.units, kind)
+    values = model_arguments(model, model_time(model), strict=False)[1].value
+    return kind, unit, float(values.min()), float(values.max())
+
+
+def _target_count(targets) -> int:
+    return targets.count if hasattr(targets, "count") and not isinstance(
+        targets, list | dict) else len(targets)
 
 
 def _vector_si(model: Model, number: int) -> tuple[float, float]:
@@ -180,7 +236,13 @@ def current_values(model: Model, variables: Variables) -> Array:
     task = model.synthesis
     dims = task.dimensions if task is not None else {}
     values = []
+    inputs = variables.input_columns
     for i, name in enumerate(variables.names):
+        if is_input(name):  # free timing: spread over the argument's range in order
+            k = int(np.flatnonzero(inputs == i)[0])
+            share = (k + 0.5) / inputs.size
+            values.append(variables.low[i] + share * (variables.high[i] - variables.low[i]))
+            continue
         raw = dims[name].value if name in dims else _constant(model, name)
         unit = variables.units[i]
         values.append(raw * unit_factor(unit, variables.kind(i)))
@@ -190,13 +252,14 @@ def current_values(model: Model, variables: Variables) -> Array:
 def apply_design(model: Model, values: Mapping[str, float]) -> Model:
     """A copy of ``model`` with the variables set to ``values`` (model units): a named
     dimension sets every constant it ties and takes the new value itself.  The synthesis
-    task is kept, so the result can be refined by another run."""
+    task is kept, so the result can be refined by another run.  Internal variables (free
+    timing's ``input@targetK``) set nothing: they are not part of the mechanism."""
     task = model.synthesis
     dims = dict(task.dimensions) if task is not None else {}
     data = model.model_dump(mode="json", exclude_defaults=True)
     settings: dict[str, float] = {}
     for name, value in values.items():
-        if name not in dims:
+        if name not in dims and not is_input(name):
             settings[name] = float(value)
     # constants tied to dimensions: the sum of the terms of every dimension that sets them
     sums: dict[str, float] = {}
