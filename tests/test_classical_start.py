@@ -210,6 +210,20 @@ def _fine_extreme(data: dict, angle: float, sign: float) -> tuple[float, float]:
     return x[i] + offset * step, sign * (y1 - 0.25 * (y0 - y2) * offset)
 
 
+def test_slider_crank_example_starts_from_the_closed_form():
+    """search.start of the file is slider_crank_from_stroke(200, 1.4, offset=100)."""
+    from mechloop.synthesis.classical import slider_crank_from_stroke
+
+    sc = slider_crank_from_stroke(200.0, 1.4, offset=100.0)
+    start = mechloop.load_model(SLIDER).synthesis.search.start
+    assert float(start["r1"]) == pytest.approx(float(sc.crank), abs=1e-4)
+    assert float(start["r2"]) == pytest.approx(float(sc.rod), abs=1e-4)
+    assert float(start["r4"]) == 100.0
+    # the guide turned so that the far dead point falls at the crank's 20 degrees
+    far = np.degrees(float(sc.crank_angle_far))
+    assert float(start["a3"]) == pytest.approx(180.0 + 20.0 - abs(far), abs=1e-4)
+
+
 def test_slider_crank_example_has_its_stroke_and_time_ratio():
     model = mechloop.load_model(SLIDER)
     result = synthesize(model)
@@ -273,6 +287,7 @@ def test_classical_start_script_scores_freudensteins_design_independently():
     t = np.arange(31) / 30
     error = np.degrees(psi - psi[0]) - 60.0 * np.log10(1 + 9 * t)
     assert out["q_classical"] == pytest.approx(np.abs(error).max(), abs=1e-9)
+    assert out["q_classical"] == pytest.approx(0.7540, abs=1e-4)  # as the README says
     assert out["q_with"] <= out["q_classical"] + 1e-12  # the start is kept
     assert out["values"]["r1"] == pytest.approx(float(fg.a))
     assert abs(error[[0, -1]]).max() > 0 and np.abs(error).max() < 1.0  # degrees

@@ -142,6 +142,15 @@ def test_unknown_column_names_the_columns_there_are():
 MACHINE_NUMBERS = ["delta", "flywheel", "constant_load", "efficiency"]
 
 
+def _forbid_the_loop(monkeypatch) -> None:
+    """Make the per-design fallback of the problem fail, so a passing evaluation proves
+    the batch was used."""
+    def forbidden(*args, **kwargs):
+        raise AssertionError("the per-design loop was taken")
+
+    monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
+
+
 def _engine() -> SynthesisProblem:
     """examples/single_cylinder_engine.yaml at 1000 rpm instead of 3000 (a third of the
     speed, a ninth of the kinetic energy), its crank r1 and rod r2 varied: a long crank
@@ -197,10 +206,7 @@ def test_engine_criteria_use_the_batch_and_agree_with_the_loop(monkeypatch):
         np.testing.assert_allclose(ev.measures[problem.criterion_keys[i]], loop,
                                    rtol=RTOL, atol=ATOL, err_msg=crit.column)
 
-    def forbidden(*args, **kwargs):
-        raise AssertionError("the per-design loop was taken")
-
-    monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
+    _forbid_the_loop(monkeypatch)
     again = problem.evaluate(designs)
     for key in problem.criterion_keys:
         np.testing.assert_array_equal(again.measures[key], ev.measures[key])
@@ -275,10 +281,7 @@ def test_synthesis_uses_the_batch_and_agrees_with_the_loop(monkeypatch):
                      for d, f in zip(designs, ev.feasible, strict=True)])
     np.testing.assert_allclose(ev.measures["max F_bal"], loop, rtol=1e-9)
 
-    def forbidden(*args, **kwargs):
-        raise AssertionError("the per-design loop was taken")
-
-    monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
+    _forbid_the_loop(monkeypatch)
     again = problem.evaluate(designs)
     np.testing.assert_array_equal(again.measures["max F_bal"], ev.measures["max F_bal"])
 
@@ -401,10 +404,7 @@ def test_friction_and_efficiency_criteria_use_the_batch_and_agree_with_each_desi
     problem = SynthesisProblem(mechloop.Model.from_dict(data))
     designs = problem.variables.scale(np.array([[0.0], [0.4], [1.0]]))
 
-    def forbidden(*args, **kwargs):
-        raise AssertionError("the per-design loop was taken")
-
-    monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
+    _forbid_the_loop(monkeypatch)
     ev = problem.evaluate(designs)
     assert ev.feasible.all()
     for d, design in enumerate(designs):
@@ -433,10 +433,7 @@ def test_the_compressor_population_is_evaluated_by_the_batch(monkeypatch):
         np.testing.assert_allclose(ev.measures[problem.criterion_keys[i]], loop,
                                    rtol=RTOL, atol=ATOL)
 
-    def forbidden(*args, **kwargs):
-        raise AssertionError("the per-design loop was taken")
-
-    monkeypatch.setattr(SynthesisProblem, "_dynamic_value", forbidden)
+    _forbid_the_loop(monkeypatch)
     again = problem.evaluate(designs)
     for key in problem.criterion_keys:
         np.testing.assert_array_equal(again.measures[key], ev.measures[key])

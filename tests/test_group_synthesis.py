@@ -21,6 +21,7 @@ from typer.testing import CliRunner
 
 import mechloop
 from mechloop.cli import app
+from mechloop.dynamics.analysis import solve_dynamics
 from mechloop.model.dynamic import HeadPoint
 from mechloop.model.groups import (
     GroupMechanism,
@@ -265,3 +266,25 @@ def test_dimensions_of_a_vector_model_are_checked_at_their_place():
     assert "no vector 9" in text and "function of its contour" in text
     assert "synthesis.vary.frame2" in text and "neither a constant" in text
     assert "synthesis.vary.r4" in text and "also set by dimension 'frame'" in text
+
+
+def test_a_rod_inertia_follows_the_length_synthesis_varies():
+    """inertia: rod of a link whose centre is on its line is written as 'rod', so a
+    design with another length gets m·l²/12 of that length, as rebuilding the groups
+    with it does."""
+    data = yaml.safe_load((ROOT / "examples" / "crank_slider_groups.yaml").read_text())
+    data["masses"]["connecting rod"]["inertia"] = "rod"
+    data["synthesis"] = {"vary": {"groups[0].length": [0.15, 0.3]},
+                         "criteria": [{"column": "M_bal", "reduce": "absmax",
+                                       "minimize": 1.0}]}
+    mech = GroupMechanism.model_validate(data)
+    model = build_model(mech)
+    assert "rod" in {b.inertia for b in model.bodies.values()}
+    problem = SynthesisProblem(model)
+    design = problem.variables.scale(np.array([0.8]))
+    batched = solve_dynamics(problem.design_model(design)).to_frame()["M_bal [N*m]"]
+    rebuilt = build_model(with_dimensions(mech, problem.variables.to_model_units(design)))
+    alone = solve_dynamics(rebuilt).to_frame()["M_bal [N*m]"]
+    np.testing.assert_allclose(batched.to_numpy(), alone.to_numpy(), rtol=1e-12)
+    ev = problem.evaluate(design[None, :])
+    assert ev.measures["absmax M_bal"][0] == pytest.approx(np.abs(alone).max(), rel=1e-9)

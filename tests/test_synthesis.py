@@ -255,3 +255,17 @@ def test_cli_writes_the_best_model_table_and_plots(tmp_path):
     assert (tmp_path / "c.png").stat().st_size > 0 and (tmp_path / "f.svg").exists()
     bad = runner.invoke(app, ["synthesize", "examples/four_bar.yaml"])
     assert bad.exit_code == 2 and "no synthesis task" in bad.output
+
+
+def test_a_bad_method_override_is_refused():
+    with pytest.raises(ValueError, match="method"):
+        synthesize(mechloop.load_model(PATH), method="foo", iterations=1)
+
+
+def test_cli_refuses_a_bad_method_before_searching():
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+
+    result = CliRunner().invoke(app, ["synthesize", PATH, "--method", "foo"])
+    assert result.exit_code != 0 and "de, cmaes or multistart" in result.output

@@ -393,7 +393,6 @@ def report(
     out.print(f"wrote {path}")
 
 
-ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI"}
 
 
 @app.command()
@@ -406,6 +405,7 @@ def structure(model: ModelPath) -> None:
     Example: mechloop structure examples/crank_slider_dynamics.yaml
     """
     from mechloop.structure import analyze, identification_table
+    from mechloop.structure.assur import ROMAN
 
     m = load_model(model)
     try:
@@ -417,7 +417,7 @@ def structure(model: ModelPath) -> None:
     cls = dec.mechanism_class
     out.print("class of the mechanism: "
               + ("not determined (links left over)" if cls is None
-                 else ROMAN.get(cls, str(cls))))
+                 else ROMAN[cls] if cls < len(ROMAN) else str(cls)))
     for group in dec.groups:
         ext = ", ".join(f"{p.name} {p.kind} {p.link}→{p.to}" for p in group.external)
         inner = ", ".join(f"{p.name} {p.kind} {p.link}–{p.to}" for p in group.internal)
@@ -548,9 +548,6 @@ def _table(title: str, headers: list[str]) -> Table:
     return table
 
 
-if __name__ == "__main__":  # pragma: no cover
-    app()
-
 
 @app.command()
 @user_errors
@@ -591,6 +588,9 @@ def synthesize(
     from mechloop.views.figure import save_figure
     from mechloop.views.synthesis import plot_convergence, plot_fit
 
+    if method is not None and method not in ("de", "cmaes", "multistart"):
+        raise typer.BadParameter(f"{method!r}: use de, cmaes or multistart",
+                                 param_hint="--method")
     m = load_model(model)
     if m.synthesis is None:
         raise ModelError([Problem(("synthesis",), "the model has no synthesis task",
@@ -650,3 +650,7 @@ def synthesize(
         out.print(f"wrote {save_figure(plot_convergence(result), plot)}")
     if fit is not None:
         out.print(f"wrote {save_figure(plot_fit(result), fit)}")
+
+
+if __name__ == "__main__":  # pragma: no cover
+    app()

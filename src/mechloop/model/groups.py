@@ -547,38 +547,25 @@ def mechanism_of(path: str | Path) -> GroupMechanism | None:
 
 def _from_group_data(data: dict[str, Any], file: str | None,
                      lines: dict[tuple[Any, ...], int] | None, *, build_it: bool) -> Any:
-    from mechloop.model.load import _data_path, _dedupe, _describe, _import_csv_tables, _locate
+    from mechloop.model.load import located_error, validate_data
 
     lines = lines or {}
 
-    def located(problems: list[Problem]) -> ModelError:
-        return ModelError([Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
-                           for p in _dedupe(problems)], file)
 
     mixed = [k for k in ("vectors", "contours", "bodies", "joints") if k in data]
     if mixed:
-        raise located([Problem((key,), f"'{key}' belongs to a vector model, and this file "
-                               "describes the mechanism by 'groups'",
-                               f"remove '{key}' (the groups generate it), or remove 'groups' "
-                               "and write the vector model") for key in mixed])
-    base = Path(file).resolve().parent if file else Path.cwd()
-    data, csv_problems = _import_csv_tables(data, base)
-    if csv_problems:
-        raise located(csv_problems)
-    try:
-        mech = GroupMechanism.model_validate(data)
-    except ValidationError as exc:
-        problems = []
-        for error in exc.errors():
-            path = _data_path(error["loc"], data)
-            message, hint = _describe(error)
-            message, hint = _group_hint(error, message, hint)
-            problems.append(Problem(path, message, hint))
-        raise located(problems) from None
+        raise located_error([Problem((key,), f"'{key}' belongs to a vector model, and this "
+                                     "file describes the mechanism by 'groups'",
+                                     f"remove '{key}' (the groups generate it), or remove "
+                                     "'groups' and write the vector model")
+                             for key in mixed], file, lines)
+    mech, problems = validate_data(GroupMechanism, data, file, _group_hint)
+    if problems:
+        raise located_error(problems, file, lines)
     try:
         model = build_model(mech)
     except ModelError as exc:
-        raise located(list(exc.problems)) from None
+        raise located_error(list(exc.problems), file, lines) from None
     return model if build_it else mech
 
 
@@ -1043,14 +1030,13 @@ class _Builder:
 
     def run(self) -> BuiltModel:
         mech = self.mech
-        try:
-            self.half = math.pi / unit_factor(self.units.angle, "angle")
-        except UnitProblem as exc:
-            raise ModelError([Problem(("units", "angle"), exc.message, exc.hint)]) from None
-        try:
-            unit_factor(self.units.length, "length")
-        except UnitProblem as exc:
-            raise ModelError([Problem(("units", "length"), exc.message, exc.hint)]) from None
+        for kind in ("angle", "length"):
+            try:
+                factor = unit_factor(getattr(self.units, kind), kind)
+            except UnitProblem as exc:
+                raise ModelError([Problem(("units", kind), exc.message, exc.hint)]) from None
+            if kind == "angle":
+                self.half = math.pi / factor
         self.links[GROUND] = _Link(GROUND, 0, None, 0.0, {}, None, None)
         for name, (x, y) in mech.ground.items():
             z = complex(self.num(x, "length", ("ground", name, 0)),
@@ -1630,6 +1616,9 @@ class _Builder:
                                              "point", "give the moment of inertia as a "
                                              "number"))
                 return out
+            if isinstance(placed[0], VectorPoint) and self._on_line(link, placed[0].vector):
+                out["inertia"] = "rod"  # from the line vector's length: follows synthesis
+                return out
             length = abs(link.local[link.second] - link.local[link.first])
             units = self.units
             try:
@@ -1641,6 +1630,13 @@ class _Builder:
         else:
             out["inertia"] = spec.inertia
         return out
+
+    def _on_line(self, link: _Link, vector: int) -> bool:
+        """Whether ``vector`` is the link's line from its first to its second point, of
+        constant length."""
+        return any(self.segs[s].vector == vector and self.segs[s].r[0] == "const"
+                   and {self.segs[s].tail, self.segs[s].head} == {link.first, link.second}
+                   for s in link.segments)
 
     def forces(self) -> list[dict[str, Any]]:
         out = []

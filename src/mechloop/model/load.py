@@ -12,8 +12,9 @@ from __future__ import annotations
 import json
 import os
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import yaml
 from pydantic import ValidationError
@@ -22,6 +23,8 @@ from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
 from mechloop.model.schema import Model
 from mechloop.model.signals import read_csv_table
+
+T = TypeVar("T")
 
 LineMap = dict[tuple[Any, ...], int]
 
@@ -181,6 +184,27 @@ def _describe(error: dict[str, Any]) -> tuple[str, str]:
     return message, hint
 
 
+def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
+                  hint: Callable[[dict[str, Any], str, str], tuple[str, str]] | None = None
+                  ) -> tuple[T | None, list[Problem]]:
+    """``cls`` validated from the plain data of a file, its CSV tables read first (paths
+    relative to the file); or None and every problem, not yet located by line.  ``hint``
+    may rewrite the message and fix of a validation error."""
+    base = Path(file).resolve().parent if file else Path.cwd()
+    data, problems = _import_csv_tables(data, base)
+    if problems:
+        return None, problems
+    try:
+        return cls.model_validate(data), []
+    except ValidationError as exc:
+        for error in exc.errors():
+            message, fix = _describe(error)
+            if hint is not None:
+                message, fix = hint(error, message, fix)
+            problems.append(Problem(_data_path(error["loc"], data), message, fix))
+        return None, problems
+
+
 def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None = None
                     ) -> Model:
     """Validate plain data into a :class:`Model`, raising all problems at once."""
@@ -192,25 +216,19 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
         from mechloop.model.groups import model_from_group_data
 
         return model_from_group_data(data, file=file, lines=lines)
-    base = Path(file).resolve().parent if file else Path.cwd()
-    data, csv_problems = _import_csv_tables(data, base)
-    if csv_problems:
-        raise ModelError([Problem(p.path, p.message, p.hint, _locate(p.path, lines))
-                          for p in csv_problems], file)
-    try:
-        model = Model.model_validate(data)
-    except ValidationError as exc:
-        problems = []
-        for error in exc.errors():
-            path = _data_path(error["loc"], data)
-            message, hint = _describe(error)
-            problems.append(Problem(path, message, hint, _locate(path, lines)))
-        raise ModelError(_dedupe(problems), file) from None
+    model, problems = validate_data(Model, data, file)
+    if problems:
+        raise located_error(problems, file, lines)
     _, problems = check_model(model)
     if problems:
-        located = [Problem(p.path, p.message, p.hint, _locate(p.path, lines)) for p in problems]
-        raise ModelError(located, file)
+        raise located_error(problems, file, lines)
     return model
+
+
+def located_error(problems: list[Problem], file: str | None, lines: LineMap) -> ModelError:
+    """The problems, each with its line in ``file`` (when it has none yet), as one error."""
+    return ModelError([Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
+                       for p in _dedupe(problems)], file)
 
 
 def _import_csv_tables(data: dict[str, Any], base: Path

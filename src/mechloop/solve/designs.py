@@ -120,13 +120,6 @@ class DesignResults:
             dead={k: v[rows] for k, v in self.dead.items()},
             branch_changes={k: v[rows] for k, v in self.branch_changes.items()})
 
-    def point(self, vectors: list[int] | tuple[int, ...]) -> tuple[Array, Array]:
-        """x, y (m), shape ``(D, P)``, of the end of ``vectors`` laid end to end from the
-        origin."""
-        x = sum(self.values[f"r{n}"] * np.cos(self.values[f"a{n}"]) for n in vectors)
-        y = sum(self.values[f"r{n}"] * np.sin(self.values[f"a{n}"]) for n in vectors)
-        return np.asarray(x), np.asarray(y)
-
 
 def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
                   derivatives: bool = True,

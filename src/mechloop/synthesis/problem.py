@@ -215,12 +215,7 @@ class SynthesisProblem:
             else:
                 span = np.ptp(self.targets.real) + np.ptp(self.targets.imag)
                 self.pose_length = float(span) or 1.0
-        if self.target_kind in ("path", "motion"):
-            self.q_factor = self.length_unit
-        elif self.target_kind == "function":
-            self.q_factor = 1.0  # the function's deviations are in the output's model units
-        else:  # Q is the weighted sum of the minimized criteria, in their SI units
-            self.q_factor = 1.0
+        if self.target_kind is None:  # Q: the weighted sum of the minimized criteria, SI
             minimized = [c for c in task.criteria if c.minimize]
             self.q_unit = "m" if all(c.point is not None for c in minimized) else "SI"
 

@@ -212,8 +212,8 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
     update = {k: v for k, v in {"method": method, "seed": seed, "iterations": iterations,
                                 "population": population, "time": time_budget,
                                 "polish": polish}.items() if v is not None}
-    if update:
-        search = search.model_copy(update=update)
+    if update:  # validated like the file's own settings (method, bounds of counts)
+        search = type(search).model_validate({**search.model_dump(), **update})
     tracker = _Tracker(problem, search, keep, progress, search.time)
     rng = np.random.default_rng(search.seed)
     given = start_designs(problem, start)
