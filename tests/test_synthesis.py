@@ -269,3 +269,87 @@ def test_cli_refuses_a_bad_method_before_searching():
 
     result = CliRunner().invoke(app, ["synthesize", PATH, "--method", "foo"])
     assert result.exit_code != 0 and "de, cmaes or multistart" in result.output
+
+
+KNOWN = {"r1": 100, "r2": 350, "r3": 250, "r4": 300, "a4": 180, "r6": 250, "a6": 30,
+         "start1.x": 0, "start1.y": 0}  # examples/four_bar.yaml in the path example's terms
+
+
+def _motion_model(timing: bool) -> tuple[mechloop.Model, np.ndarray]:
+    """The path example with a motion task instead: three poses of the coupler (point P
+    and the direction of A->B) taken from the known four-bar solved alone; and the known
+    design (SI)."""
+    base = SynthesisProblem(mechloop.load_model(PATH))
+    known = np.array([KNOWN[n] * (1e-3 if n[0] in "rs" else np.pi / 180)
+                      for n in base.variables.names])
+    solved = mechloop.solve(base.design_model(known))
+    positions = [10, 50, 110]
+    z = Placement(solved).head(6).z[positions] * 1000
+    angle = np.degrees(solved.values["a2"][positions])
+    poses = [[float(p.real), float(p.imag), float(a)] for p, a in zip(z, angle,
+                                                                       strict=True)]
+    data = base.model.model_dump(mode="json", exclude_defaults=True)
+    del data["synthesis"]["path"]
+    data["synthesis"]["motion"] = {
+        "point": {"head": 6}, "angle": "a2", "length": 100.0,
+        "poses": dict(zip(positions, poses, strict=True)) if timing else poses}
+    return mechloop.Model.from_dict(data), known
+
+
+@pytest.mark.parametrize("timing", [True, False])
+def test_motion_generation_deviations_against_poses(timing):
+    """Q of the known four-bar is 0; for other designs each pose's deviation is
+    sqrt(distance² + (length · angle error)²), recomputed from each design solved
+    alone (at the pose's position with timing, else the best position)."""
+    model, si = _motion_model(timing)
+    problem = SynthesisProblem(model)
+    assert problem.evaluate(si[None, :]).q[0] == pytest.approx(0.0, abs=1e-9)
+    rng = np.random.default_rng(4)
+    designs = si[None, :] * (1 + 0.03 * rng.standard_normal((6, si.size)))
+    ev = problem.evaluate(designs)
+    assert ev.feasible.sum() >= 3
+    task = model.synthesis.motion
+    poses = list(task.poses.values()) if timing else task.poses
+    where = list(task.poses) if timing else None
+    for d, design in enumerate(designs):
+        if not ev.feasible[d]:
+            continue
+        alone = mechloop.solve(problem.design_model(design))
+        z = Placement(alone).head(6).z * 1000
+        a = alone.values["a2"]
+        errors = []
+        for k, (x, y, deg) in enumerate(poses):
+            da = np.angle(np.exp(1j * (a - np.radians(deg))))
+            each = np.sqrt(np.abs(z - complex(x, y)) ** 2 + (100.0 * da) ** 2)
+            errors.append(each[where[k]] if timing else each.min())
+        assert ev.q[d] == pytest.approx(max(errors), rel=1e-9)
+
+
+def test_curve_targets_and_weights():
+    """Targets from a parametric curve equal the same points listed; weights E_k scale
+    each timed target's deviation."""
+    six = mechloop.load_model("examples/six_points_line_synthesis.yaml")
+    listed = SynthesisProblem(six)
+    data = six.model_dump(mode="json", exclude_defaults=True)
+    data["synthesis"]["path"]["targets"] = {"x": "20", "y": "20 + 25*t", "count": 6}
+    curve = SynthesisProblem(mechloop.Model.from_dict(data))
+    np.testing.assert_allclose(curve.targets, listed.targets, rtol=0, atol=1e-15)
+    designs = listed.variables.scale(np.random.default_rng(2).uniform(size=(20, 9)))
+    np.testing.assert_array_equal(curve.evaluate(designs).q, listed.evaluate(designs).q)
+
+    model, known = _motion_model(True)  # poses at positions 10, 50, 110
+    data = model.model_dump(mode="json", exclude_defaults=True)
+    poses = data["synthesis"].pop("motion")["poses"]
+    targets = {k: v[:2] for k, v in poses.items()}
+    data["synthesis"]["path"] = {"point": {"head": 6}, "targets": targets, "timing": True}
+    data["synthesis"]["objective"] = "ssq"
+    plain = SynthesisProblem(mechloop.Model.from_dict(data))
+    data["synthesis"]["path"]["weights"] = [1.0, 2.0, 3.0]
+    weighted = SynthesisProblem(mechloop.Model.from_dict(data))
+    design = known * 1.01
+    res = plain.solve(design[None, :])
+    z = plain.place(res, design[None, :], plain.point)[0] * 1000
+    dist = np.abs(z[[10, 50, 110]] - np.array([complex(*t) for t in targets.values()]))
+    assert plain.evaluate(design[None, :]).q[0] == pytest.approx(np.sum(dist ** 2))
+    assert weighted.evaluate(design[None, :]).q[0] == pytest.approx(
+        np.sum((np.array([1.0, 2.0, 3.0]) * dist) ** 2))
