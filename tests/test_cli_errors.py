@@ -160,7 +160,7 @@ def test_unknown_output_format(tmp_path):
     path = _write(tmp_path, GOOD)
     result = CliRunner().invoke(app, ["solve", str(path), "-o", str(tmp_path / "r.txt")])
     assert result.exit_code == 2
-    assert "use a file name ending in .csv, .json or .xlsx" in result.output
+    assert "use a file name ending in .csv, .json, .parquet or .xlsx" in result.output
 
 
 def test_model_error_pickles():

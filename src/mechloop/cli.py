@@ -22,7 +22,7 @@ from rich.text import Text
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.errors import MechloopError, ModelError, Problem
 from mechloop.model.formula import describe_structure
-from mechloop.model.load import atomic_write_bytes, atomic_write_text, load_model, locate
+from mechloop.model.load import load_model, locate
 from mechloop.model.schema import model_json_schema
 from mechloop.solve.kinematics import solve as solve_model
 from mechloop.solve.results import compress_positions
@@ -93,7 +93,21 @@ def info(model: ModelPath) -> None:
     out.print(describe_structure(m))
 
 
-SUFFIXES = (".csv", ".json", ".xlsx")
+SUFFIXES = (".csv", ".json", ".parquet", ".xlsx")
+
+Force = Annotated[bool, typer.Option("--force", help="write the output even when it is the "
+                                     "input model file, which is then replaced")]
+
+
+def _outputs(model: Path | None, force: bool, *pairs: tuple[Path | None, tuple[str, ...]]
+             ) -> None:
+    """Check every output path (file type, folder, not the input model) before the run."""
+    from mechloop.output.paths import check_output
+
+    for path, suffixes in pairs:
+        if path is not None:
+            check_output(path, suffixes=suffixes, inputs=[model] if model else [],
+                         force=force)
 
 
 @app.command()
@@ -101,8 +115,9 @@ SUFFIXES = (".csv", ".json", ".xlsx")
 def solve(
     model: ModelPath,
     output: Annotated[Path | None, typer.Option(
-        "-o", "--output", help="write the table here: .csv, .json or .xlsx (default: print "
-        "a summary only)")] = None,
+        "-o", "--output", help="write the table here: .csv, .json, .parquet or .xlsx "
+        "(default: print a summary only)")] = None,
+    force: Force = False,
 ) -> None:
     """Solve positions, velocities and accelerations at every position; for a model with
     bodies also the balancing load, reduced characteristics, centres of mass and the
@@ -110,11 +125,12 @@ def solve(
 
     Example: mechloop solve examples/crank_slider.yaml -o results.csv
     """
-    if output is not None and output.suffix.lower() not in SUFFIXES:
-        err.print(f"[bold red]error:[/] {output}: unknown output format "
-                  f"'{output.suffix}'\n    fix: use a file name ending in .csv, .json or .xlsx")
-        raise typer.Exit(code=2)
+    from mechloop.output.tables import check_table_size
+
+    _outputs(model, force, (output, SUFFIXES))
     m = load_model(model)
+    if output is not None:
+        check_table_size(m.positions + 1, 0, output)
     if m.bodies:
         dynamic = _dynamics(m, model)
         results, frame = dynamic.kinematics, dynamic.to_frame()
@@ -142,18 +158,9 @@ def solve(
 
 
 def _write_frame(frame, output: Path) -> None:
-    suffix = output.suffix.lower()
-    if suffix == ".csv":
-        atomic_write_text(output, frame.to_csv(index=False))
-    elif suffix == ".json":
-        records = json.loads(frame.to_json(orient="records", double_precision=15))
-        atomic_write_text(output, json.dumps(records, indent=1) + "\n")
-    else:
-        import io
+    from mechloop.output.tables import write_frame
 
-        buffer = io.BytesIO()
-        frame.to_excel(buffer, index=False, sheet_name="results")
-        atomic_write_bytes(output, buffer.getvalue())
+    write_frame(frame, output)
 
 
 @app.command()
@@ -253,6 +260,7 @@ def plot(
     polar: Annotated[bool, typer.Option(help="hodograph in polar form")] = False,
     units: Annotated[str | None, typer.Option(help="display units, e.g. "
                      "length=mm,angle=deg,force=kN,power=kW (default SI and deg)")] = None,
+    force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
 
@@ -264,10 +272,11 @@ def plot(
     from mechloop.views import curves, dynamics, formula
     from mechloop.views import plan as plans
     from mechloop.views.display import Display
-    from mechloop.views.figure import ViewError, save_figure
+    from mechloop.views.figure import FIGURE_SUFFIXES, ViewError, save_figure
 
     if kind not in PLOTS:
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
+    _outputs(model, force, (output, FIGURE_SUFFIXES))
     m = load_model(model)
     display = Display(**dict(item.split("=", 1) for item in _split(units)))
     if kind == "structure":
@@ -346,13 +355,16 @@ def animate(
                                          ".mp4 or .html")],
     fps: Annotated[float | None, typer.Option(help="frames per second (default: from the "
                                               "model time, at least 20 ms a frame)")] = None,
+    force: Force = False,
 ) -> None:
     """Animate a cycle ("cinema"): one frame per position.
 
     Example: mechloop animate examples/four_bar.yaml -o cycle.gif
     """
+    from mechloop.views.animation import ANIMATION_SUFFIXES
     from mechloop.views.animation import animate as make_animation
 
+    _outputs(model, force, (output, ANIMATION_SUFFIXES))
     m = load_model(model)
     results = _dynamics(m, model) if m.bodies else solve_model(m)
     with _progress("frames") as bar:
@@ -372,6 +384,7 @@ def report(
     parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
                          "the first contour's length function, else its last angle)")
                          ] = None,
+    force: Force = False,
 ) -> None:
     """Write the course-project report (PDF): model, formula, kinematics of the output
     link, angle differences, dynamics, reactions, centres of mass, conclusion, and the
@@ -381,6 +394,7 @@ def report(
     """
     from mechloop.views.report import write_report
 
+    _outputs(model, force, (output, (".pdf",)))
     m = load_model(model)
     try:
         with _progress("pages") as bar:
@@ -429,18 +443,28 @@ def structure(model: ModelPath) -> None:
 
 
 @app.command()
+@user_errors
 def schema(
     output: Annotated[Path | None, typer.Option("-o", "--output",
                                                 help="write the schema to this file "
                                                 "(default: print it)")] = None,
     groups: Annotated[bool, typer.Option("--groups", help="the schema of files built from "
                                          "Assur groups (groups:) instead")] = False,
+    force: Annotated[bool, typer.Option("--force", help="replace the output file even when "
+                                        "it holds something other than a schema (a model)")
+                     ] = False,
 ) -> None:
     """Print the JSON Schema of model files (generated from the code): vector models, or
     with --groups models built from an input and Assur groups.
 
     Example: mechloop schema -o model.schema.json
     """
+    if output is not None:
+        from mechloop.output.paths import check_output, check_replaces_schema
+
+        check_output(output)
+        if not force:
+            check_replaces_schema(output)
     if groups:
         from mechloop.model.groups import group_json_schema
 
@@ -451,7 +475,10 @@ def schema(
     if output is None:
         sys.stdout.write(text)
     else:
+        from mechloop.output.atomic import atomic_write_text
+
         atomic_write_text(output, text)
+        out.print(f"wrote {output}")
 
 
 @app.command(name="sweep")
@@ -468,7 +495,8 @@ def sweep_command(
                        "J_red, ...) and max, min, mean, rms, range, absmax or at=K "
                        "(position K)", show_default=False)],
     output: Annotated[Path | None, typer.Option("-o", "--output", help="write the table "
-                      "here: .csv, .json or .xlsx (default: print it only)")] = None,
+                      "here: .csv, .json, .parquet or .xlsx (default: print it only)")
+                      ] = None,
     plot_file: Annotated[Path | None, typer.Option("--plot", help="draw the quantities "
                          "against the parameter(s): .png, .svg or .pdf (default: none)")
                          ] = None,
@@ -481,6 +509,7 @@ def sweep_command(
                        "(default: a map above 6 values)", show_default=False)] = None,
     units: Annotated[str | None, typer.Option(help="display units of the plot, e.g. "
                      "force=kN,moment=kN*m (default SI and deg)")] = None,
+    force: Force = False,
 ) -> None:
     """Parametric analysis: solve the model for every value of one or two parameters and
     tabulate reductions of result columns (KDAM's "parametric analysis" panel).
@@ -497,15 +526,10 @@ def sweep_command(
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
     from mechloop.views.display import Display
-    from mechloop.views.figure import FIGURE_SUFFIXES, ViewError, save_figure
+    from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
     from mechloop.views.sweep import plot_sweep
 
-    if output is not None and output.suffix.lower() not in SUFFIXES:
-        raise ViewError(f"{output}: unknown output format '{output.suffix}'",
-                        "use a file name ending in .csv, .json or .xlsx")
-    if plot_file is not None and plot_file.suffix.lower() not in FIGURE_SUFFIXES:
-        raise ViewError(f"{plot_file}: cannot save a figure as '{plot_file.suffix}'",
-                        "use a file name ending in .png, .svg or .pdf")
+    _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
     display = Display(**dict(item.split("=", 1) for item in _split(units)))
     check_scheduler(scheduler)
     pairs = [parse_vary(text) for text in vary]
@@ -556,8 +580,9 @@ def synthesize(
     output: Annotated[Path | None, typer.Option("-o", "--output", help="write the best "
                       "design as a model file (.yaml or .json; a file built from Assur "
                       "groups is written back as a group file); default: none")] = None,
-    table: Annotated[Path | None, typer.Option(help="the best designs: .csv, .json or "
-                     ".xlsx (with the terms and the history); default: none")] = None,
+    table: Annotated[Path | None, typer.Option(help="the best designs: .csv, .json, "
+                     ".parquet or .xlsx (with the terms and the history); default: none")
+                     ] = None,
     plot: Annotated[Path | None, typer.Option(help="convergence plot (.png, .svg, .pdf); "
                     "default: none")] = None,
     fit: Annotated[Path | None, typer.Option(help="the result against its targets "
@@ -573,6 +598,9 @@ def synthesize(
     scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
                          "or a dask scheduler address tcp://host:8786 (default: chosen by "
                          "the work's size)")] = None,
+    force: Annotated[bool, typer.Option("--force", help="write -o even when it is the input "
+                                        "model file, which is then replaced (its comments "
+                                        "are lost)")] = False,
 ) -> None:
     """Synthesis by optimization: vary the dimensions listed in the model's synthesis:
     section to reach its target (a path, a function, poses) under its conditions.
@@ -585,21 +613,19 @@ def synthesize(
 
     from mechloop.synthesis.output import write_model, write_table
     from mechloop.synthesis.search import synthesize as run
-    from mechloop.views.figure import save_figure
+    from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
     from mechloop.views.synthesis import plot_convergence, plot_fit
 
     if method is not None and method not in ("de", "cmaes", "multistart"):
         raise typer.BadParameter(f"{method!r}: use de, cmaes or multistart",
                                  param_hint="--method")
+    _outputs(model, force, (output, (".yaml", ".yml", ".json")), (table, SUFFIXES),
+             (plot, FIGURE_SUFFIXES), (fit, FIGURE_SUFFIXES))
     m = load_model(model)
     if m.synthesis is None:
         raise ModelError([Problem(("synthesis",), "the model has no synthesis task",
                                   "add a synthesis: section, see "
                                   "examples/four_bar_path_synthesis.yaml")], str(model))
-    for path in (plot, fit):
-        if path is not None and path.suffix.lower() not in (".png", ".svg", ".pdf"):
-            raise ModelError([Problem((), f"cannot write a figure to {path}",
-                                      "use .png, .svg or .pdf")])
     search = m.synthesis.search
     total = iterations or search.iterations
     columns = (TextColumn("[progress.description]{task.description}"), BarColumn(),

@@ -609,21 +609,24 @@ def _document_keys(name: str) -> list[str | int]:
     return keys
 
 
-def save_mechanism(mech: GroupMechanism, path: str | Path) -> Path:
-    """Write ``mech`` as a group file (YAML, or JSON for ``.json``) atomically."""
+def mechanism_text(mech: GroupMechanism, *, json_form: bool = False) -> str:
+    """``mech`` as the text of a group file: YAML, or JSON when ``json_form``."""
     import json
 
     import yaml
 
-    from mechloop.model.load import atomic_write_text
-
     data = mech.model_dump(mode="json", by_alias=True, exclude_defaults=True)
+    if json_form:
+        return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+    return yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
+
+
+def save_mechanism(mech: GroupMechanism, path: str | Path) -> Path:
+    """Write ``mech`` as a group file (YAML, or JSON for ``.json``) atomically."""
+    from mechloop.output.atomic import atomic_write_text
+
     target = Path(path)
-    if target.suffix.lower() == ".json":
-        text = json.dumps(data, indent=2, ensure_ascii=False) + "\n"
-    else:
-        text = yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
-    atomic_write_text(target, text)
+    atomic_write_text(target, mechanism_text(mech, json_form=target.suffix.lower() == ".json"))
     return target
 
 

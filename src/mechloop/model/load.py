@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TypeVar
@@ -23,6 +22,7 @@ from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
 from mechloop.model.schema import Model
 from mechloop.model.signals import read_csv_table
+from mechloop.output.atomic import atomic_write_bytes, atomic_write_text  # noqa: F401 (re-exported)
 
 T = TypeVar("T")
 
@@ -306,24 +306,3 @@ def save_model(model: Model, path: str | os.PathLike[str]) -> None:
     else:
         text = yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
     atomic_write_text(target, text)
-
-
-def atomic_write_text(target: Path, text: str) -> None:
-    """Write text to a temporary file in the target's folder, then rename it in place."""
-    atomic_write_bytes(target, text.encode("utf-8"))
-
-
-def atomic_write_bytes(target: Path, payload: bytes) -> None:
-    """Write bytes to a temporary file in the target's folder, then rename it in place."""
-    target = Path(target)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
-                               dir=target.parent or Path("."))
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(payload)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise

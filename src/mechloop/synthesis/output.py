@@ -3,13 +3,16 @@ designs with every term of the best one, and the plots — each file written ato
 
 from __future__ import annotations
 
+import json
 import os
 from pathlib import Path
 
 import pandas as pd
 
-from mechloop.model.groups import GroupMechanism, save_mechanism, with_dimensions
-from mechloop.model.load import atomic_write_bytes, save_model
+from mechloop.model.groups import GroupMechanism, mechanism_text, with_dimensions
+from mechloop.model.load import model_to_data
+from mechloop.output.atomic import atomic_file, atomic_write_text
+from mechloop.output.tables import check_table_size, write_frame
 from mechloop.synthesis.search import SynthesisResult
 from mechloop.synthesis.variables import is_input
 
@@ -21,24 +24,17 @@ def terms_frame(result: SynthesisResult) -> pd.DataFrame:
 
 
 def write_table(result: SynthesisResult, path: str | os.PathLike[str]) -> Path:
-    """The best designs (CSV, JSON or XLSX by the suffix); an XLSX file also gets a sheet
-    with the terms of the best design and one with the convergence history."""
+    """The best designs (CSV, JSON, Parquet or XLSX by the suffix); an XLSX file also gets
+    a sheet with the terms of the best design and one with the convergence history."""
     target = Path(path)
-    suffix = target.suffix.lower()
-    if suffix == ".xlsx":
-        import io
-
-        buffer = io.BytesIO()
-        with pd.ExcelWriter(buffer, engine="openpyxl") as writer:
-            result.designs.to_excel(writer, sheet_name="designs", index=False)
-            terms_frame(result).to_excel(writer, sheet_name="terms", index=False)
-            result.history.to_excel(writer, sheet_name="history", index=False)
-        atomic_write_bytes(target, buffer.getvalue())
-    elif suffix == ".json":
-        atomic_write_bytes(target, result.designs.to_json(orient="records",
-                                                          indent=2).encode())
-    else:
-        atomic_write_bytes(target, result.designs.to_csv(index=False).encode())
+    if target.suffix.lower() != ".xlsx":
+        return write_frame(result.designs, target)
+    for frame in (result.designs, result.history):
+        check_table_size(len(frame), len(frame.columns), target)
+    with atomic_file(target) as handle, pd.ExcelWriter(handle, engine="openpyxl") as writer:
+        result.designs.to_excel(writer, sheet_name="designs", index=False)
+        terms_frame(result).to_excel(writer, sheet_name="terms", index=False)
+        result.history.to_excel(writer, sheet_name="history", index=False)
     return target
 
 
@@ -55,19 +51,26 @@ def write_model(result: SynthesisResult, path: str | os.PathLike[str], *,
     (``input@target1`` ...) are no constants of it.  A YAML file gets them in a comment
     at its top (argument 1 in its model unit), so that the file says where each target
     is reached; ``result.values()``, the table and ``mechloop synthesize`` report them
-    with the other variables.
+    with the other variables.  The file is written once, atomically, comment included.
     """
+    target = Path(path)
+    json_form = target.suffix.lower() == ".json"
     inputs = {name: value for name, value in result.values().items() if is_input(name)}
     if mechanism is not None:
-        written = save_mechanism(with_dimensions(
-            mechanism, {k: v for k, v in result.values().items() if not is_input(k)}), path)
+        text = mechanism_text(with_dimensions(
+            mechanism, {k: v for k, v in result.values().items() if not is_input(k)}),
+            json_form=json_form)
+    elif json_form:
+        text = json.dumps(model_to_data(result.model), indent=2, ensure_ascii=False) + "\n"
     else:
-        save_model(result.model, path)
-        written = Path(path)
-    if inputs and written.suffix.lower() != ".json":
+        import yaml
+
+        text = yaml.safe_dump(model_to_data(result.model), sort_keys=False,
+                              allow_unicode=True)
+    if inputs and not json_form:
         unit = result.problem.variables.units[result.problem.variables.input_columns[0]]
         lines = [f"# free timing: target k is reached at argument 1 = input@targetk ({unit})"]
         lines += [f"#   {name}: {value:.12g}" for name, value in inputs.items()]
-        text = "\n".join(lines) + "\n" + written.read_text(encoding="utf-8")
-        atomic_write_bytes(written, text.encode("utf-8"))
-    return written
+        text = "\n".join(lines) + "\n" + text
+    atomic_write_text(target, text)
+    return target

@@ -22,11 +22,8 @@ is written atomically: to a temporary file in the same folder, then renamed.
 
 from __future__ import annotations
 
-import io
 import os
-import tempfile
 from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import matplotlib
@@ -39,7 +36,7 @@ from numpy.typing import NDArray
 from PIL import Image
 
 from mechloop.dynamics.analysis import DynamicResults
-from mechloop.model.load import atomic_write_bytes
+from mechloop.output.atomic import atomic_file, atomic_path
 from mechloop.solve.results import Results
 from mechloop.views.figure import ViewError
 from mechloop.views.plan import (
@@ -181,32 +178,15 @@ def _counted(frames: Iterator[NDArray[np.uint8]], total: int, progress: Progress
             progress(done, total)
 
 
-@contextmanager
-def _temporary_beside(target: Path) -> Iterator[Path]:
-    """A temporary file in the target's folder (same suffix, for the writers that go by
-    it), renamed onto the target when the block succeeds and removed otherwise."""
-    fd, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=target.suffix.lower(),
-                                dir=target.parent)
-    os.close(fd)
-    temporary = Path(name)
-    try:
-        yield temporary
-        os.replace(temporary, target)
-    except BaseException:
-        temporary.unlink(missing_ok=True)
-        raise
-
-
 def _save_gif(frames: Iterator[NDArray[np.uint8]], target: Path, delay_ms: int) -> None:
     """Frames written by Pillow with an exact delay (matplotlib's PillowWriter truncates
     ``1000 / fps`` and cannot hold a delay of whole 10 ms); each frame gets its own
     palette."""
     images = [Image.fromarray(frame[..., :3]).quantize(256, method=Image.Quantize.FASTOCTREE)
               for frame in frames]
-    buffer = io.BytesIO()
-    images[0].save(buffer, format="GIF", save_all=True, append_images=images[1:],
-                   duration=delay_ms, loop=0)
-    atomic_write_bytes(target, buffer.getvalue())
+    with atomic_file(target) as handle:
+        images[0].save(handle, format="GIF", save_all=True, append_images=images[1:],
+                       duration=delay_ms, loop=0)
 
 
 def _player(size: tuple[int, int]) -> tuple[Figure, FigureImage]:
@@ -227,9 +207,9 @@ def _save_mp4(frames: Iterator[NDArray[np.uint8]], size: tuple[int, int], target
 
     figure, image = _player(size)
     with matplotlib.rc_context({"animation.ffmpeg_path": imageio_ffmpeg.get_ffmpeg_exe()}):
-        writer = FFMpegWriter(fps=1000.0 / interval_ms, codec="h264")
-        with _temporary_beside(target) as temporary, \
-                writer.saving(figure, str(temporary), figure.dpi):
+        writer = FFMpegWriter(fps=1000.0 / interval_ms, codec="h264",
+                              extra_args=["-f", "mp4"])  # the staged path has no suffix
+        with atomic_path(target) as staged, writer.saving(figure, staged, figure.dpi):
             for frame in frames:
                 image.set_data(frame)
                 writer.grab_frame()
@@ -243,8 +223,8 @@ def _save_html(frames: Iterator[NDArray[np.uint8]], size: tuple[int, int], targe
     figure, image = _player(size)
     writer = HTMLWriter(fps=1000.0 / interval_ms, embed_frames=True, default_mode="loop",
                         embed_limit=HTML_LIMIT_MB)
-    with _temporary_beside(target) as temporary, \
-            writer.saving(figure, str(temporary), figure.dpi):
+    with atomic_path(target) as staged, writer.saving(figure, target, figure.dpi):
+        writer.outfile = Path(staged)  # the page is written there at the end (frames embedded)
         for frame in frames:
             image.set_data(frame)
             writer.grab_frame()

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import io
 import os
 from pathlib import Path
 
@@ -25,14 +24,13 @@ def new_figure(width: float = 8.0, height: float = 6.0) -> Figure:
 
 def save_figure(figure: Figure, path: str | os.PathLike[str], *, dpi: int = 150) -> Path:
     """Write ``figure`` as PNG, SVG or PDF (by the suffix of ``path``), atomically."""
-    from mechloop.model.load import atomic_write_bytes
+    from mechloop.output.atomic import atomic_file
 
     target = Path(path)
     suffix = target.suffix.lower()
     if suffix not in FIGURE_SUFFIXES:
         raise ViewError(f"{target}: cannot save a figure as '{suffix or 'no suffix'}'",
                         "use a file name ending in .png, .svg or .pdf")
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format=suffix[1:], dpi=dpi)
-    atomic_write_bytes(target, buffer.getvalue())
+    with atomic_file(target) as handle:
+        figure.savefig(handle, format=suffix[1:], dpi=dpi)
     return target

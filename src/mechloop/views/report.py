@@ -15,7 +15,6 @@ matplotlib) renders Cyrillic.
 from __future__ import annotations
 
 import datetime
-import io
 import itertools
 import os
 from collections.abc import Callable, Iterator
@@ -178,7 +177,7 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
     ``lang``: 'en' or 'ru'; ``output``: the output parameter ('r3', 'a3'; default
     :func:`output_parameter`); ``progress(done, total)`` is called after each page.
     """
-    from mechloop.model.load import atomic_write_bytes
+    from mechloop.output.atomic import atomic_file
 
     if lang not in TEXT:
         raise ViewError(f"no report language {lang!r}", "use 'en' or 'ru'")
@@ -192,9 +191,9 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
         raise ViewError(f"{name!r} is not a varying parameter of the model",
                         f"use one of {', '.join(results.varying())}")
     pages = list(_pages(model, results, dyn, name, TEXT[lang]))
-    buffer = io.BytesIO()
-    with PdfPages(buffer, metadata={"Title": model.name or TEXT[lang]["title"],
-                                    "Creator": "mechloop"}) as pdf:
+    with atomic_file(target) as handle, \
+            PdfPages(handle, metadata={"Title": model.name or TEXT[lang]["title"],
+                                       "Creator": "mechloop"}) as pdf:
         for i, make in enumerate(pages):
             figure = translate(make(), lang)
             figure.text(0.99, 0.005, f"{TEXT[lang]['page']} {i + 1}", ha="right",
@@ -202,7 +201,6 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
             pdf.savefig(figure)
             if progress is not None:
                 progress(i + 1, len(pages))
-    atomic_write_bytes(target, buffer.getvalue())
     return target
 
 

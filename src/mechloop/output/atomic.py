@@ -1,0 +1,274 @@
+"""Atomic writing: a file appears whole or not at all, and nothing is left beside it.
+
+On Linux the content goes to an anonymous file in the target's folder (``O_TMPFILE``: it
+has no name, so a process killed even by SIGKILL while writing leaves nothing behind); when
+it is complete and on disk (fsync) it is given the target's name — directly by
+``linkat`` when the target does not exist yet, else under a hidden temporary name renamed
+onto the target at once (``os.replace``), a window of two system calls.  Elsewhere, or on a
+file system without ``O_TMPFILE``, a hidden temporary file beside the target is written
+instead and removed on any exception, on Ctrl-C and on SIGTERM/SIGHUP.
+
+The written file keeps the mode (and, where allowed, the owner) of the file it replaces; a
+new file gets ``0o666`` less the umask, as any program's.  A symlink as the target is
+followed: the file it points to is replaced and the link stays.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import secrets
+import signal
+import stat
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager, nullcontext
+from pathlib import Path
+from typing import BinaryIO
+
+from mechloop.output.paths import destination, write_error
+
+#: errno values by which ``open(O_TMPFILE)`` says the file system cannot do it.
+_NO_TMPFILE = frozenset({errno.EOPNOTSUPP, errno.EISDIR, errno.EINVAL, errno.ENOSYS})
+
+
+#: Whether anonymous files can be linked into the file system here (False after a failure).
+_ANONYMOUS = True
+
+_AT_FDCWD = -100
+_AT_EMPTY_PATH = 0x1000
+
+
+def _link(fd: int, name: Path) -> bool:
+    """Give the anonymous file ``fd`` the name ``name``: by its /proc link
+    (AT_SYMLINK_FOLLOW), else by ``linkat(fd, "", AT_EMPTY_PATH)``; False when neither is
+    allowed.  FileExistsError when ``name`` exists."""
+    try:
+        os.link(f"/proc/self/fd/{fd}", name, follow_symlinks=True)
+        return True
+    except FileExistsError:
+        raise
+    except OSError as exc:
+        if exc.errno not in _NO_LINK:
+            raise
+    import ctypes
+
+    libc = ctypes.CDLL(None, use_errno=True)
+    if libc.linkat(fd, b"", _AT_FDCWD, os.fsencode(name), _AT_EMPTY_PATH) == 0:
+        return True
+    code = ctypes.get_errno()
+    if code == errno.EEXIST:
+        raise FileExistsError(code, os.strerror(code), str(name))
+    if code not in _NO_LINK:
+        raise OSError(code, os.strerror(code), str(name))
+    return False
+
+
+#: errno values by which a link of an anonymous file is refused (not a disk error).
+_NO_LINK = frozenset({errno.EXDEV, errno.ENOENT, errno.EPERM, errno.EACCES,
+                      errno.EOPNOTSUPP, errno.EINVAL, errno.ENOSYS})
+
+
+class _Stage:
+    """The file being written for ``target`` until it is committed or discarded."""
+
+    def __init__(self, target: Path):
+        self.dest = destination(target)
+        self.folder = self.dest.parent
+        try:
+            st = os.stat(self.dest)
+            self.mode: int | None = stat.S_IMODE(st.st_mode)
+            self.owner: tuple[int, int] | None = (st.st_uid, st.st_gid)
+        except FileNotFoundError:
+            self.mode = self.owner = None
+        self.named: Path | None = None
+        fd = self._anonymous()
+        self.fd = fd if fd is not None else self._named()
+
+    def _anonymous(self) -> int | None:
+        flag = getattr(os, "O_TMPFILE", None)
+        if flag is None or not _ANONYMOUS or not os.path.isdir(f"/proc/{os.getpid()}/fd"):
+            return None
+        try:
+            return os.open(self.folder, flag | os.O_RDWR | os.O_CLOEXEC, 0o666)
+        except OSError as exc:
+            if exc.errno in _NO_TMPFILE:
+                return None
+            raise
+
+    def _free_name(self) -> Path:
+        return self.folder / f".{self.dest.name}.{secrets.token_hex(6)}.tmp{self.dest.suffix}"
+
+    def _named(self) -> int:
+        while True:
+            name = self._free_name()
+            try:
+                fd = os.open(name, os.O_RDWR | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0),
+                             0o666)
+            except FileExistsError:
+                continue
+            self.named = name
+            return fd
+
+    @property
+    def path(self) -> str:
+        """A path by which another program (ffmpeg) can open the staged file to write."""
+        return str(self.named) if self.named is not None else f"/proc/{os.getpid()}/fd/{self.fd}"
+
+    def commit(self) -> None:
+        """Put the staged file, complete and on disk, in place of the target."""
+        os.fsync(self.fd)
+        if self.mode is not None:
+            os.fchmod(self.fd, self.mode)
+            if self.owner is not None and hasattr(os, "fchown"):
+                st = os.fstat(self.fd)
+                if (st.st_uid, st.st_gid) != self.owner:
+                    try:
+                        os.fchown(self.fd, *self.owner)
+                    except PermissionError:
+                        pass
+        if self.named is None:
+            try:
+                linked = _link(self.fd, self.dest)
+            except FileExistsError:
+                self.named = self._free_name()
+                linked = _link(self.fd, self.named)
+                if linked:
+                    os.replace(self.named, self.dest)
+                else:
+                    self.named = None
+            if not linked:
+                self._copy_named()
+        else:
+            os.replace(self.named, self.dest)
+        self.named = None
+        os.close(self.fd)
+        self.fd = -1
+        _sync_folder(self.folder)
+
+    def _copy_named(self) -> None:
+        """The anonymous file cannot be given a name here (no /proc link, no
+        AT_EMPTY_PATH): copy it to a named temporary file, then rename that, and use named
+        temporary files from now on."""
+        global _ANONYMOUS
+        _ANONYMOUS = False
+        anonymous = self.fd
+        self.fd = self._named()
+        os.lseek(anonymous, 0, os.SEEK_SET)
+        size = os.fstat(anonymous).st_size
+        with _signals_raise():
+            try:
+                copied = 0
+                while copied < size:
+                    done = os.sendfile(self.fd, anonymous, copied, size - copied)
+                    if done == 0:
+                        break
+                    copied += done
+                os.fsync(self.fd)
+                if self.mode is not None:
+                    os.fchmod(self.fd, self.mode)
+                os.replace(self.named, self.dest)  # type: ignore[arg-type]
+            finally:
+                os.close(anonymous)
+
+    def discard(self) -> None:
+        """Drop the staged file: close it and remove its temporary name, if it has one."""
+        if self.fd >= 0:
+            os.close(self.fd)
+            self.fd = -1
+        if self.named is not None:
+            self.named.unlink(missing_ok=True)
+            self.named = None
+
+
+def _sync_folder(folder: Path) -> None:
+    try:
+        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def _exit_on_signal(signum: int, frame: object) -> None:
+    raise SystemExit(128 + signum)
+
+
+@contextmanager
+def _signals_raise() -> Iterator[None]:
+    """In the main thread, SIGTERM and SIGHUP (left at their default) raise SystemExit
+    inside the block, so that its clean-up runs; the handlers are restored after it."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    saved = {}
+    for sig in (getattr(signal, "SIGTERM", None), getattr(signal, "SIGHUP", None)):
+        if sig is not None and signal.getsignal(sig) is signal.SIG_DFL:
+            saved[sig] = signal.signal(sig, _exit_on_signal)
+    try:
+        yield
+    finally:
+        for sig, handler in saved.items():
+            signal.signal(sig, handler)
+
+
+@contextmanager
+def _staged(target: str | os.PathLike[str]) -> Iterator[_Stage]:
+    try:
+        stage = _Stage(Path(target))
+    except OSError as exc:
+        raise write_error(exc, target) from None
+    guard = _signals_raise() if stage.named is not None else nullcontext()
+    try:
+        with guard:
+            yield stage
+            with _signals_raise():
+                stage.commit()
+    except OSError as exc:
+        stage.discard()
+        if exc.errno is None:
+            raise
+        raise write_error(exc, target) from None
+    except BaseException:
+        stage.discard()
+        raise
+
+
+@contextmanager
+def atomic_file(target: str | os.PathLike[str]) -> Iterator[BinaryIO]:
+    """A binary file to write ``target`` through; it replaces ``target`` when the block
+    ends without an exception, and vanishes otherwise.  Write errors (no space, no
+    permission, a read-only disk) raise :class:`~mechloop.output.paths.OutputError`."""
+    with _staged(target) as stage:
+        handle = open(stage.fd, "wb", closefd=False, buffering=1 << 20)
+        try:
+            yield handle  # type: ignore[misc]
+            if not handle.closed:
+                handle.flush()
+        finally:
+            if not handle.closed:
+                handle.close()
+
+
+@contextmanager
+def atomic_path(target: str | os.PathLike[str]) -> Iterator[str]:
+    """A path for a writer that opens the file itself (ffmpeg, matplotlib's movie
+    writers); the file it writes replaces ``target`` when the block succeeds.  The path
+    need not end in the target's suffix: tell the writer the format explicitly."""
+    with _staged(target) as stage:
+        yield stage.path
+
+
+def atomic_write_bytes(target: str | os.PathLike[str], payload: bytes) -> None:
+    """Write ``payload`` to ``target`` atomically (see :func:`atomic_file`)."""
+    with atomic_file(target) as handle:
+        handle.write(payload)
+
+
+def atomic_write_text(target: str | os.PathLike[str], text: str) -> None:
+    """Write ``text`` (UTF-8) to ``target`` atomically (see :func:`atomic_file`)."""
+    atomic_write_bytes(target, text.encode("utf-8"))
