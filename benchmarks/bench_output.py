@@ -1,0 +1,176 @@
+"""Writing a large results table: CSV, JSON and Parquet by mechloop's streaming writers.
+
+The model is ``--contours`` crank-rocker four-bars (default 200; crank 0.1 m, coupler
+0.35 m + 0.5 mm per four-bar, rocker 0.25 m, frame 0.3 m), all driven by argument 1 over
+``--positions`` positions (default 10^5): a table of positions x (3 + 9 per four-bar)
+columns, 1,803 columns at the default, solved by ``mechloop.solve``.
+
+Each format is written in a forked child process (the table is shared copy-on-write), so
+its peak memory is its own: ``peak RSS`` is the child's ``ru_maxrss`` and ``above the
+table`` that minus the resident size at the fork.  The file is read back and checked
+against the table (the first and last 1,000 rows, bit for bit; ``--check-all`` checks
+every row) and removed.
+
+    python benchmarks/bench_output.py                  # options: --contours 200
+    python benchmarks/bench_output.py --contours 20 --positions 20000 --pandas
+
+``--pandas`` also times pandas' own ``to_csv`` and ``to_json`` (what mechloop used before)
+for comparison.  The default size writes about 3.4 GB of CSV and 8 GB of JSON: see that
+the folder (``--dir``, default the system temporary folder) has room.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import resource
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+import mechloop
+from mechloop.output.tables import write_frame
+
+
+def build_frame(contours: int, positions: int) -> pd.DataFrame:
+    """The results table of ``contours`` four-bars at ``positions`` positions."""
+    vectors: dict[int, dict] = {}
+    loops = []
+    for k in range(contours):
+        base = 4 * k
+        vectors[base + 1] = {"r": 0.1, "a": {"argument": 1}}
+        vectors[base + 2] = {"r": 0.35 + 0.0005 * k, "a": "function"}
+        vectors[base + 3] = {"r": 0.25, "a": "function"}
+        vectors[base + 4] = {"r": 0.3, "a": math.pi}
+        loops.append({"vectors": [base + 1, base + 2, base + 3, base + 4], "variant": 1})
+    model = mechloop.Model.from_dict({
+        "units": {"length": "m", "angle": "rad"},
+        "positions": positions - 1,
+        "time": {"rpm": 60},
+        "arguments": {1: {"law": "constant_speed", "start": [0, 0.0],
+                          "end": [positions - 1, 2.0 * math.pi]}},
+        "vectors": vectors,
+        "contours": loops,
+    })
+    return mechloop.solve(model).to_frame()
+
+
+def _rss_mb() -> float:
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
+
+
+def _maxrss_mb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def _read(path: Path, rows: slice | None) -> pd.DataFrame:
+    suffix = path.suffix
+    if suffix == ".csv":
+        return pd.read_csv(path, engine="pyarrow")
+    if suffix == ".parquet":
+        return pd.read_parquet(path)
+    with path.open("rb") as f:
+        import orjson
+
+        return pd.DataFrame(orjson.loads(f.read()))
+
+
+def _check(frame: pd.DataFrame, path: Path, check_all: bool) -> str:
+    back = _read(path, None)
+    if list(back.columns) != [str(c) for c in frame.columns] or len(back) != len(frame):
+        return "FAILED: columns or rows differ"
+    pick = (np.arange(len(frame)) if check_all or len(frame) <= 2000
+            else np.r_[0:1000, len(frame) - 1000:len(frame)])
+    for name in frame.columns:
+        a = frame[name].to_numpy()[pick]
+        b = back[str(name)].to_numpy()[pick]
+        if a.dtype.kind == "f":
+            same = np.array_equal(a.view(np.int64), b.astype(np.float64).view(np.int64))
+        else:
+            same = np.array_equal(a, b.astype(a.dtype))
+        if not same:
+            return f"FAILED: column {name} differs"
+    return "read back: identical"
+
+
+def run_child(frame: pd.DataFrame, path: Path, how: str, check_all: bool) -> dict:
+    """Write in a forked child; its seconds, peak memory and check."""
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child
+        os.close(read)
+        start_rss = _rss_mb()
+        t0 = time.perf_counter()
+        if how == "mechloop":
+            write_frame(frame, path)
+        elif path.suffix == ".csv":
+            frame.to_csv(path, index=False)
+        else:
+            frame.to_json(path, orient="records", double_precision=15)
+        seconds = time.perf_counter() - t0
+        peak = _maxrss_mb()
+        verdict = _check(frame, path, check_all) if how == "mechloop" else ""
+        report = {"seconds": seconds, "peak": peak, "above": peak - start_rss,
+                  "size": path.stat().st_size, "check": verdict}
+        os.write(write, json.dumps(report).encode())
+        os._exit(0)
+    os.close(write)
+    data = b""
+    while chunk := os.read(read, 65536):
+        data += chunk
+    os.close(read)
+    os.waitpid(pid, 0)
+    return json.loads(data) if data else {"check": "FAILED: the child died"}
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--contours", type=int, default=200, help="four-bars (default 200)")
+    parser.add_argument("--positions", type=int, default=100_000,
+                        help="rows (default 100000)")
+    parser.add_argument("--formats", default="csv,json,parquet",
+                        help="comma-separated (default csv,json,parquet)")
+    parser.add_argument("--dir", default=None, help="where to write (default: temp folder)")
+    parser.add_argument("--pandas", action="store_true",
+                        help="also time pandas' to_csv and to_json")
+    parser.add_argument("--check-all", action="store_true", help="check every row read back")
+    args = parser.parse_args()
+
+    t0 = time.perf_counter()
+    frame = build_frame(args.contours, args.positions)
+    print(f"{args.contours} four-bars x {args.positions} positions: {len(frame)} rows x "
+          f"{len(frame.columns)} columns ({frame.memory_usage().sum() / 2**20:.0f} MB in "
+          f"memory), built in {time.perf_counter() - t0:.1f} s; resident "
+          f"{_rss_mb():.0f} MB")
+    runs = [("mechloop", f) for f in args.formats.split(",")]
+    if args.pandas:
+        runs += [("pandas", f) for f in ("csv", "json") if f in args.formats.split(",")]
+    failed = False
+    print(f"{'writer':<10} {'format':<8} {'seconds':>8} {'MB':>8} {'MB/s':>7} "
+          f"{'peak RSS MB':>12} {'above table MB':>15}  check")
+    with tempfile.TemporaryDirectory(dir=args.dir) as folder:
+        for how, fmt in runs:
+            path = Path(folder) / f"table.{fmt}"
+            r = run_child(frame, path, how, args.check_all)
+            path.unlink(missing_ok=True)
+            if "seconds" not in r:
+                print(f"{how:<10} {fmt:<8} {r['check']}")
+                failed = True
+                continue
+            mb = r["size"] / 2**20
+            print(f"{how:<10} {fmt:<8} {r['seconds']:8.1f} {mb:8.0f} "
+                  f"{mb / r['seconds']:7.0f} {r['peak']:12.0f} {r['above']:15.0f}  "
+                  f"{r['check']}")
+            failed |= r["check"].startswith("FAILED")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
