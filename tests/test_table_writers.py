@@ -1,0 +1,174 @@
+"""The streaming table writers: every value reads back bit for bit, broken rows stay
+empty (CSV) or null (JSON) as pandas wrote them before, chunk and type boundaries do not
+show, and an Excel sheet too large is refused before anything is written."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+from mechloop.cli import app
+from mechloop.output import OutputError, tables
+from mechloop.output.tables import check_table_size, write_frame
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _frame(rows: int = 53) -> pd.DataFrame:
+    """A results-like table: int position, float columns holding every awkward double
+    (subnormal, huge, -0.0, 1/3, values needing 17 digits), NaN in broken rows, a bool
+    mark, a float run cut by a string column."""
+    rng = np.random.default_rng(7)
+    broken = np.zeros(rows, bool)
+    broken[[3, 4, 40]] = True
+    special = np.array([5e-324, 1.7976931348623157e308, -0.0, 1 / 3, 0.1 + 0.2, 1e-7,
+                        123456789.12345679, 2.0**-1074 * 3, -1e22, 1.0])
+    a = rng.normal(size=rows) * 10.0 ** rng.integers(-12, 12, rows)
+    a[: len(special)] = special
+    b = rng.standard_cauchy(rows)
+    a[broken] = b[broken] = np.nan
+    return pd.DataFrame({
+        "position": np.arange(rows), "time [s]": np.linspace(0, 0.5, rows),
+        "a2 [deg]": a, "da2 [rad/s]": b,
+        "note": ["" if i % 5 else f"row {i}, \"quoted\"" for i in range(rows)],
+        "dda2 [rad/s^2]": rng.uniform(-1, 1, rows),
+        "chain_break": broken,
+    })
+
+
+@pytest.fixture(autouse=True)
+def small_chunks(monkeypatch):
+    """Chunks of a few rows, so that every test crosses chunk boundaries."""
+    monkeypatch.setattr(tables, "CHUNK_VALUES", 20)
+    monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
+
+
+def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
+    a, b = np.asarray(a, np.float64), np.asarray(b, np.float64)
+    nan = np.isnan(a)
+    return bool(np.array_equal(nan, np.isnan(b))
+                and np.array_equal(a[~nan].view(np.int64), b[~nan].view(np.int64)))
+
+
+def test_csv_reads_back_bit_for_bit_and_as_pandas_wrote_it(tmp_path):
+    frame = _frame()
+    write_frame(frame, tmp_path / "t.csv")
+    text = (tmp_path / "t.csv").read_text()
+    back = pd.read_csv(tmp_path / "t.csv", engine="pyarrow")
+    before = pd.read_csv(pd.io.common.StringIO(frame.to_csv(index=False)))
+    assert list(back.columns) == list(frame.columns)
+    assert dict(back.dtypes) == dict(before.dtypes)  # same types as the old writer gave
+    for name in ("time [s]", "a2 [deg]", "da2 [rad/s]", "dda2 [rad/s^2]"):
+        assert _same_bits(frame[name], back[name]), name
+    assert back["position"].tolist() == frame["position"].tolist()
+    assert back["chain_break"].tolist() == frame["chain_break"].tolist()
+    assert back["note"].fillna("").tolist() == frame["note"].tolist()
+    lines = text.splitlines()
+    assert lines[0] == "position,time [s],a2 [deg],da2 [rad/s],note,dda2 [rad/s^2],chain_break"
+    assert lines[1 + 3].split(",")[2:4] == ["", ""]  # a broken row: empty, as before
+    assert lines[1 + 3].endswith(",True") and lines[1 + 2].endswith(",False")
+    assert '"row 5, ""quoted"""' in lines[1 + 5]
+    assert len(lines) == 1 + len(frame)
+
+
+def test_json_is_the_old_list_of_records_with_exact_values(tmp_path):
+    frame = _frame()
+    write_frame(frame, tmp_path / "t.json")
+    records = json.loads((tmp_path / "t.json").read_text())
+    old = json.loads(frame.to_json(orient="records", double_precision=15))
+    assert len(records) == len(old) == len(frame)
+    for new, was in zip(records, old, strict=True):
+        assert list(new) == list(was)
+        assert [type(v) for v in new.values()] == [type(v) for v in was.values()]
+    for name in ("time [s]", "a2 [deg]", "da2 [rad/s]", "dda2 [rad/s^2]"):
+        got = np.array([np.nan if r[name] is None else r[name] for r in records])
+        assert _same_bits(frame[name], got), name
+    assert records[3]["a2 [deg]"] is None and records[3]["chain_break"] is True
+    assert [r["note"] for r in records] == frame["note"].tolist()
+
+
+def test_parquet_keeps_types_and_values(tmp_path):
+    frame = _frame()
+    write_frame(frame, tmp_path / "t.parquet")
+    back = pd.read_parquet(tmp_path / "t.parquet")
+    assert list(back.columns) == list(frame.columns)
+    for name in frame.columns:
+        if frame[name].dtype.kind == "f":
+            assert _same_bits(frame[name], back[name]), name
+        else:
+            assert back[name].tolist() == frame[name].tolist(), name
+    assert back["position"].dtype == np.int64 and back["chain_break"].dtype == bool
+
+
+def test_an_infinity_reads_back_in_csv(tmp_path):
+    frame = pd.DataFrame({"x": [1.0, np.inf, -np.inf, np.nan]})
+    write_frame(frame, tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_text() == "x\n1.0\ninf\n-inf\n\n"
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".json", ".parquet", ".xlsx"])
+def test_empty_tables(tmp_path, suffix):
+    frame = pd.DataFrame({"position": np.arange(0), "x": np.zeros(0)})
+    write_frame(frame, tmp_path / f"t{suffix}")
+    if suffix == ".json":
+        assert json.loads((tmp_path / "t.json").read_text()) == []
+    elif suffix == ".csv":
+        assert (tmp_path / "t.csv").read_text() == "position,x\n"
+
+
+def test_xlsx_past_its_limits_is_refused_before_writing(tmp_path):
+    with pytest.raises(OutputError) as caught:
+        check_table_size(1_048_576, 3, tmp_path / "t.xlsx")
+    assert "1,048,575 rows under the header" in str(caught.value)
+    assert ".csv or .parquet" in str(caught.value)
+    with pytest.raises(OutputError):
+        check_table_size(10, 16_385, tmp_path / "t.xlsx")
+    check_table_size(1_048_575, 16_384, tmp_path / "t.xlsx")  # the largest that fits
+    check_table_size(10**7, 10**5, tmp_path / "t.csv")  # CSV and Parquet have no limit
+    wide = pd.DataFrame(np.zeros((1, 16_385)))
+    with pytest.raises(OutputError):
+        write_frame(wide, tmp_path / "wide.xlsx")
+    assert not list(tmp_path.iterdir())
+
+
+def test_solve_refuses_xlsx_for_too_many_positions_before_solving(tmp_path, monkeypatch):
+    model = tmp_path / "m.yaml"
+    text = (ROOT / "examples" / "four_bar.yaml").read_text()
+    model.write_text(text.replace("positions: 72", "positions: 1048576")
+                     .replace("72: 360", "1048576: 360"))
+
+    def no_solve(*args, **kwargs):
+        raise AssertionError("solved before the table size was checked")
+
+    monkeypatch.setattr("mechloop.cli.solve_model", no_solve)
+    result = CliRunner().invoke(app, ["solve", str(model), "-o", str(tmp_path / "r.xlsx")])
+    assert result.exit_code == 2, result.output
+    assert "do not fit an Excel sheet" in result.output and ".parquet" in result.output
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".json", ".parquet", ".xlsx"])
+def test_solve_writes_every_format_with_the_same_values(tmp_path, suffix):
+    model = tmp_path / "m.yaml"
+    shutil.copy(ROOT / "examples" / "four_bar.yaml", model)
+    out = tmp_path / f"r{suffix}"
+    result = CliRunner().invoke(app, ["solve", str(model), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    import mechloop
+
+    frame = mechloop.solve(mechloop.load_model(model)).to_frame()
+    back = {".csv": lambda p: pd.read_csv(p, engine="pyarrow"),
+            ".json": lambda p: pd.DataFrame(json.loads(p.read_text())),
+            ".parquet": pd.read_parquet, ".xlsx": pd.read_excel}[suffix](out)
+    assert list(back.columns) == list(frame.columns)
+    for name in frame.columns:
+        if frame[name].dtype.kind == "f" and suffix != ".xlsx":
+            assert _same_bits(frame[name], back[name]), name
+        else:
+            assert np.allclose(back[name].astype(float), frame[name].astype(float),
+                               rtol=1e-15, equal_nan=True), name
