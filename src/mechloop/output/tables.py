@@ -42,8 +42,9 @@ XLSX_COLUMNS = 16_384
 #: Values in one chunk of rows (rows x columns, at least 16 rows): about 1.5 MB of text.
 CHUNK_VALUES = 1 << 16
 
-#: Values in one Parquet row group (about 32 MB of doubles).
-PARQUET_GROUP_VALUES = 1 << 22
+#: Values in one Parquet row group (about 64 MB of doubles: fewer, larger groups write
+#: faster and read better; the group is held in memory while it is written).
+PARQUET_GROUP_VALUES = 1 << 23
 
 
 def check_table_size(rows: int, columns: int, path: str | os.PathLike[str]) -> None:
@@ -227,14 +228,16 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
 
 def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
-    """``frame`` as Parquet (row groups of about 4 million values) into ``handle``."""
+    """``frame`` as Parquet (row groups of about 8 million values; dictionary encoding
+    only for columns that are not floats) into ``handle``."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
     named = frame.set_axis([str(c) for c in frame.columns], axis=1)
     schema = pa.Schema.from_pandas(named, preserve_index=False)
     step = max(1, PARQUET_GROUP_VALUES // max(1, len(named.columns)))
-    with pq.ParquetWriter(handle, schema) as writer:
+    coded = [str(c) for c in named.columns if named[c].dtype.kind != "f"]  # few values
+    with pq.ParquetWriter(handle, schema, use_dictionary=coded) as writer:
         for start in range(0, len(named), step):
             writer.write_table(pa.Table.from_pandas(named.iloc[start:start + step],
                                                     schema=schema, preserve_index=False))
