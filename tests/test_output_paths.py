@@ -305,3 +305,17 @@ def test_a_killed_writer_leaves_no_temporary_file(tmp_path, scheme, sig):
         child.wait()
     assert [p.name for p in tmp_path.iterdir()] == ["big.csv"]
     assert target.read_bytes() == b"old\n"
+
+
+def test_solve_does_not_overwrite_a_csv_table_its_model_reads(tmp_path, monkeypatch):
+    table = tmp_path / "crank.csv"
+    table.write_text("position,angle\n0,0\n72,360\n")
+    model = tmp_path / "m.yaml"
+    model.write_text((EXAMPLES / "four_bar.yaml").read_text().replace(
+        "1: {table: {0: 0, 72: 360}}", "1: {csv: crank.csv}"))
+    assert runner.invoke(app, ["check", str(model)]).exit_code == 0
+    _forbid(monkeypatch, "mechloop.cli", "load_model")
+    result = runner.invoke(app, ["solve", str(model), "-o", str(table)])
+    assert result.exit_code == 2
+    assert f"is a table the model reads, {table}" in result.output
+    assert table.read_text() == "position,angle\n0,0\n72,360\n"

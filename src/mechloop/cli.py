@@ -101,13 +101,14 @@ Force = Annotated[bool, typer.Option("--force", help="write the output even when
 
 def _outputs(model: Path | None, force: bool, *pairs: tuple[Path | None, tuple[str, ...]]
              ) -> None:
-    """Check every output path (file type, folder, not the input model) before the run."""
-    from mechloop.output.paths import check_output
+    """Check every output path (file type, folder, not the input model nor a CSV table it
+    reads) before the run."""
+    from mechloop.output.paths import check_output, model_inputs
 
+    inputs = model_inputs(model) if model is not None and any(p for p, _ in pairs) else []
     for path, suffixes in pairs:
         if path is not None:
-            check_output(path, suffixes=suffixes, inputs=[model] if model else [],
-                         force=force)
+            check_output(path, suffixes=suffixes, inputs=inputs, force=force)
 
 
 @app.command()

@@ -66,13 +66,37 @@ def check_output(path: str | os.PathLike[str], *, suffixes: Iterable[str] | None
         raise OutputError(f"cannot write {target}: no permission to write in the folder "
                           f"{folder}", "choose a folder you can write to, or change its "
                           "permissions")
-    for source in inputs:
+    for i, source in enumerate(inputs):
         if dest.exists() and _same(dest, Path(source)) and not force:
-            raise OutputError(f"{target} is the input model {source}: writing it would "
-                              "overwrite the model",
-                              "choose another output file, or add --force to replace the "
-                              "model")
+            what = "the input model" if i == 0 else "a table the model reads,"
+            raise OutputError(f"{target} is {what} {source}: writing it would overwrite it",
+                              "choose another output file, or add --force to replace it")
     return target
+
+
+def model_inputs(model: str | os.PathLike[str]) -> list[Path]:
+    """The files a run reads: the model file, then every ``{csv: FILE}`` table in it
+    (relative to the model's folder); just the model when it cannot be read (loading
+    reports that)."""
+    from mechloop.errors import ModelError
+    from mechloop.model.load import read_document
+
+    files = [Path(model)]
+    try:
+        data, _ = read_document(model)
+    except ModelError:
+        return files
+    base = Path(model).resolve().parent
+    stack: list[object] = [data]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, dict):
+            if isinstance(item.get("csv"), str):
+                files.append(base / item["csv"])
+            stack.extend(item.values())
+        elif isinstance(item, list):
+            stack.extend(item)
+    return files
 
 
 def _same(a: Path, b: Path) -> bool:
