@@ -39,8 +39,12 @@ TABLE_SUFFIXES = (".csv", ".json", ".parquet", ".xlsx")
 XLSX_ROWS = 1_048_576
 XLSX_COLUMNS = 16_384
 
-#: Values in one chunk of rows (rows x columns, at least 16 rows): about 1.5 MB of text.
-CHUNK_VALUES = 1 << 16
+#: Values in one chunk of rows (rows x columns, at least 16 rows): about 100 kB of text,
+#: small enough for the CPU cache (larger chunks format more slowly).
+CHUNK_VALUES = 1 << 12
+
+#: Values gathered from the columns of a run at once (8 MB of doubles).
+GATHER_VALUES = 1 << 20
 
 #: Values in one Parquet row group (about 64 MB of doubles: fewer, larger groups write
 #: faster and read better; the group is held in memory while it is written).
@@ -105,6 +109,7 @@ class _Columns:
         kinds = [_kind(a) for a in arrays]
         self.arrays = [_exact(a, k) for a, k in zip(arrays, kinds, strict=True)]
         self.rows, self.width = len(frame), len(arrays)
+        self._gathered: dict[int, tuple[int, int, np.ndarray]] = {}
         self.runs: list[tuple[int, int, str]] = []  # (first column, end, kind)
         for j, kind in enumerate(kinds):
             if self.runs and self.runs[-1][2] == kind:
@@ -118,9 +123,20 @@ class _Columns:
             yield start, min(start + step, self.rows)
 
     def block(self, run: tuple[int, int, str], start: int, stop: int) -> np.ndarray:
-        """Rows ``start:stop`` of a run as one C-ordered array, shape (rows, columns)."""
+        """Rows ``start:stop`` of a run as one C-ordered array, shape (rows, columns).
+
+        The columns are gathered for many chunks at once (about GATHER_VALUES values, a
+        few MB): gathering a wide table chunk by chunk would cost more than formatting it.
+        """
         first, end, _ = run
-        return np.stack([a[start:stop] for a in self.arrays[first:end]], axis=1)
+        cached = self._gathered.get(first)
+        if cached is None or not cached[0] <= start < stop <= cached[1]:
+            rows = max(stop - start, GATHER_VALUES // (end - first))
+            top = min(self.rows, start + rows)
+            cached = (start, top, np.stack([a[start:top] for a in self.arrays[first:end]],
+                                           axis=1))
+            self._gathered[first] = cached
+        return cached[2][start - cached[0]:stop - cached[0]]
 
 
 def _dump(block: np.ndarray) -> bytes:
@@ -196,10 +212,16 @@ def _json_tokens(columns: _Columns, start: int, stop: int) -> list[bytes]:
                                             for v in columns.arrays[j][start:stop]]
             continue
         found = _dump(columns.block(run, start, stop))[2:-2].replace(b"],[", b",").split(b",")
-        if end - first == columns.width:
+        size = end - first
+        if size == columns.width:
             return found
-        for j in range(first, end):
-            tokens[j::columns.width] = found[j - first::end - first]
+        if rows < size:  # few long rows: copy row by row
+            for i in range(rows):
+                at = i * columns.width + first
+                tokens[at:at + size] = found[i * size:(i + 1) * size]
+        else:  # many short rows: column by column
+            for j in range(first, end):
+                tokens[j::columns.width] = found[j - first::size]
     return tokens
 
 
