@@ -44,8 +44,10 @@ def _frame(rows: int = 53) -> pd.DataFrame:
 
 @pytest.fixture(autouse=True)
 def small_chunks(monkeypatch):
-    """Chunks of a few rows, so that every test crosses chunk boundaries."""
+    """Chunks of a few rows and gathers of a few chunks (not a whole number of them), so
+    that every test crosses chunk and gather boundaries."""
     monkeypatch.setattr(tables, "CHUNK_VALUES", 20)
+    monkeypatch.setattr(tables, "GATHER_VALUES", 45)
     monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
 
 
