@@ -153,11 +153,11 @@ class _Stage:
         global _ANONYMOUS
         _ANONYMOUS = False
         anonymous = self.fd
-        self.fd = self._named()
-        os.lseek(anonymous, 0, os.SEEK_SET)
-        size = os.fstat(anonymous).st_size
         with _signals_raise():
             try:
+                self.fd = -1
+                self.fd = self._named()
+                size = os.fstat(anonymous).st_size
                 copied = 0
                 while copied < size:
                     done = os.sendfile(self.fd, anonymous, copied, size - copied)
