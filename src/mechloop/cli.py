@@ -2,6 +2,11 @@
 
 Every error a user can cause prints the :class:`~mechloop.errors.MechloopError` message and
 exits with code 2, without a traceback.
+
+Start-up is kept short (``mechloop --help`` loads no NumPy, pandas, SciPy, pint or
+matplotlib): the library is imported inside the commands that use it. Help texts are
+Markdown: docstrings are written as paragraphs (re-flowed to the terminal's width), examples
+as indented code lines.
 """
 
 from __future__ import annotations
@@ -11,21 +16,38 @@ import sys
 from collections.abc import Callable
 from functools import wraps
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
-import numpy as np
 import typer
 from rich.console import Console
 from rich.table import Table
 from rich.text import Text
+from typer.core import TyperCommand, TyperGroup
 
-from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.errors import MechloopError, ModelError, Problem
-from mechloop.model.formula import describe_structure
-from mechloop.model.load import atomic_write_bytes, atomic_write_text, load_model, locate
-from mechloop.model.schema import model_json_schema
-from mechloop.solve.kinematics import solve as solve_model
-from mechloop.solve.results import compress_positions
+
+if TYPE_CHECKING:
+    from mechloop.dynamics.analysis import DynamicResults
+
+
+class _NoFlagType:
+    """Help without a ``<bool>`` type beside an on/off flag (``--polar``, ``--help``)."""
+
+    def get_params(self, ctx: Any) -> list[Any]:
+        params = super().get_params(ctx)  # type: ignore[misc]
+        for param in params:
+            if getattr(param, "is_flag", False):
+                param.metavar = ""
+        return params
+
+
+class _Command(_NoFlagType, TyperCommand):
+    pass
+
+
+class _Group(_NoFlagType, TyperGroup):
+    pass
+
 
 app = typer.Typer(
     name="mechloop",
@@ -33,6 +55,8 @@ app = typer.Typer(
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode="markdown",
+    cls=_Group,
 )
 out = Console(highlight=False, soft_wrap=True)
 err = Console(stderr=True, highlight=False, soft_wrap=True)
@@ -55,13 +79,15 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     return wrapper
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def check(model: ModelPath) -> None:
     """Validate a model file; every problem is listed with its line and the fix.
 
     Example: mechloop check examples/crank_slider.yaml
     """
+    from mechloop.model.load import load_model
+
     m = load_model(model)
     n_vec = len(m.vectors)
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
@@ -75,13 +101,16 @@ def check(model: ModelPath) -> None:
 
 def _dynamics(m, path: Path) -> DynamicResults:
     """Solve the dynamics of a loaded model; model problems name the file and line."""
+    from mechloop.dynamics.analysis import solve_dynamics
+    from mechloop.model.load import locate
+
     try:
         return solve_dynamics(m)
     except ModelError as exc:
         raise locate(exc, path) from None
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def info(model: ModelPath) -> None:
     """Print the structure and parametric formula of every contour (KDAM's "structure of
@@ -89,6 +118,9 @@ def info(model: ModelPath) -> None:
 
     Example: mechloop info examples/four_bar.yaml
     """
+    from mechloop.model.formula import describe_structure
+    from mechloop.model.load import load_model
+
     m = load_model(model)
     out.print(describe_structure(m))
 
@@ -96,7 +128,7 @@ def info(model: ModelPath) -> None:
 SUFFIXES = (".csv", ".json", ".xlsx")
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def solve(
     model: ModelPath,
@@ -110,6 +142,12 @@ def solve(
 
     Example: mechloop solve examples/crank_slider.yaml -o results.csv
     """
+    import numpy as np
+
+    from mechloop.model.load import load_model
+    from mechloop.solve.kinematics import solve as solve_model
+    from mechloop.solve.results import compress_positions
+
     if output is not None and output.suffix.lower() not in SUFFIXES:
         err.print(f"[bold red]error:[/] {output}: unknown output format "
                   f"'{output.suffix}'\n    fix: use a file name ending in .csv, .json or .xlsx")
@@ -142,6 +180,8 @@ def solve(
 
 
 def _write_frame(frame, output: Path) -> None:
+    from mechloop.model.load import atomic_write_bytes, atomic_write_text
+
     suffix = output.suffix.lower()
     if suffix == ".csv":
         atomic_write_text(output, frame.to_csv(index=False))
@@ -156,7 +196,7 @@ def _write_frame(frame, output: Path) -> None:
         atomic_write_bytes(output, buffer.getvalue())
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def energy(model: ModelPath) -> None:
     """Print the summary characteristics of a cycle: work and power of every load and of
@@ -165,6 +205,10 @@ def energy(model: ModelPath) -> None:
 
     Example: mechloop energy examples/crank_slider_dynamics.yaml
     """
+    import numpy as np
+
+    from mechloop.model.load import load_model
+
     m = load_model(model)
     if not m.bodies:
         raise ModelError([Problem(("bodies",), "the model has no bodies, so no loads",
@@ -228,7 +272,7 @@ def _point(text: str) -> Any:
     return text
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def plot(
     model: ModelPath,
@@ -261,6 +305,8 @@ def plot(
       mechloop plot examples/crank_slider.yaml parameters -n r3,dr3 --against arg1 -o s.png
       mechloop plot examples/crank_slider_dynamics.yaml hodograph --joint A -o hod.svg
     """
+    from mechloop.model.load import load_model
+    from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
     from mechloop.views import plan as plans
     from mechloop.views.display import Display
@@ -338,7 +384,7 @@ def _progress(description: str):
                     transient=True)
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def animate(
     model: ModelPath,
@@ -351,6 +397,8 @@ def animate(
 
     Example: mechloop animate examples/four_bar.yaml -o cycle.gif
     """
+    from mechloop.model.load import load_model
+    from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views.animation import animate as make_animation
 
     m = load_model(model)
@@ -363,7 +411,7 @@ def animate(
     out.print(f"wrote {output} ({m.positions + 1} frames)")
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def report(
     model: ModelPath,
@@ -379,6 +427,7 @@ def report(
 
     Example: mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
     """
+    from mechloop.model.load import load_model, locate
     from mechloop.views.report import write_report
 
     m = load_model(model)
@@ -395,7 +444,7 @@ def report(
 
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def structure(model: ModelPath) -> None:
     """Structural analysis: links, pairs, mobility by Chebyshev, the input groups and Assur
@@ -404,6 +453,7 @@ def structure(model: ModelPath) -> None:
 
     Example: mechloop structure examples/crank_slider_dynamics.yaml
     """
+    from mechloop.model.load import load_model, locate
     from mechloop.structure import analyze, identification_table
     from mechloop.structure.assur import ROMAN
 
@@ -428,7 +478,7 @@ def structure(model: ModelPath) -> None:
     out.print(identification_table(dec).to_string())
 
 
-@app.command()
+@app.command(cls=_Command)
 def schema(
     output: Annotated[Path | None, typer.Option("-o", "--output",
                                                 help="write the schema to this file "
@@ -441,11 +491,15 @@ def schema(
 
     Example: mechloop schema -o model.schema.json
     """
+    from mechloop.model.load import atomic_write_text
+
     if groups:
         from mechloop.model.groups import group_json_schema
 
         found = group_json_schema()
     else:
+        from mechloop.model.schema import model_json_schema
+
         found = model_json_schema()
     text = json.dumps(found, indent=2, ensure_ascii=False) + "\n"
     if output is None:
@@ -454,7 +508,7 @@ def schema(
         atomic_write_text(output, text)
 
 
-@app.command(name="sweep")
+@app.command(name="sweep", cls=_Command)
 @user_errors
 def sweep_command(
     model: ModelPath,
@@ -493,6 +547,9 @@ def sweep_command(
     Add -o speed.csv to write the table and --plot speed.png to draw it;
     a second --vary (e.g. --vary vectors.2.r=120:160:5) gives the grid.
     """
+    import numpy as np
+
+    from mechloop.model.load import load_model, locate
     from mechloop.synthesis.parallel import check_scheduler
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
@@ -549,7 +606,7 @@ def _table(title: str, headers: list[str]) -> Table:
 
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def synthesize(
     model: ModelPath,
@@ -583,6 +640,7 @@ def synthesize(
     """
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
+    from mechloop.model.load import load_model, locate
     from mechloop.synthesis.output import write_model, write_table
     from mechloop.synthesis.search import synthesize as run
     from mechloop.views.figure import save_figure
