@@ -84,7 +84,11 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 def check(model: ModelPath) -> None:
     """Validate a model file; every problem is listed with its line and the fix.
 
-    Example: mechloop check examples/crank_slider.yaml
+    Example:
+
+    ```
+    mechloop check examples/crank_slider.yaml
+    ```
     """
     from mechloop.model.load import load_model
 
@@ -116,7 +120,11 @@ def info(model: ModelPath) -> None:
     """Print the structure and parametric formula of every contour (KDAM's "structure of
     the vector model" panel).
 
-    Example: mechloop info examples/four_bar.yaml
+    Example:
+
+    ```
+    mechloop info examples/four_bar.yaml
+    ```
     """
     from mechloop.model.formula import describe_structure
     from mechloop.model.load import load_model
@@ -140,7 +148,11 @@ def solve(
     bodies also the balancing load, reduced characteristics, centres of mass and the
     reaction in every joint.
 
-    Example: mechloop solve examples/crank_slider.yaml -o results.csv
+    Values are in SI units (m, s, N) and degrees, one row per position. Example:
+
+    ```
+    mechloop solve examples/crank_slider.yaml -o results.csv
+    ```
     """
     import numpy as np
 
@@ -203,7 +215,13 @@ def energy(model: ModelPath) -> None:
     friction, the mechanical loss coefficient and the efficiency; and the machine motion
     and flywheel when the model has a machine: section.
 
-    Example: mechloop energy examples/crank_slider_dynamics.yaml
+    The efficiency is defined when a load does net positive (driving) work over the cycle
+    and there is friction to lose; without friction it is 100 %. Example (friction 0.1 in
+    every pair):
+
+    ```
+    mechloop energy examples/crank_slider_friction.yaml
+    ```
     """
     import numpy as np
 
@@ -279,31 +297,41 @@ def plot(
     kind: Annotated[str, typer.Argument(help=f"what to draw: {', '.join(PLOTS)}",
                                         show_default=False)],
     output: Annotated[Path, typer.Option("-o", "--output", help="image file: .png, .svg "
-                                         "or .pdf")],
-    position: Annotated[int | None, typer.Option("-p", "--position", help="position for "
-                        "plan, trajectories (default: 0) and increment (reference, default "
-                        "0)")] = None,
-    names: Annotated[str | None, typer.Option("-n", "--names", help="comma-separated: "
-                     "parameters (r3,dr3,M_bal) for parameters/increment; two for "
-                     "combination; two vectors (2,3) for angle")] = None,
-    against: Annotated[str, typer.Option(help="x axis: position, time, arg1, ...")
-                       ] = "position",
+                                         "or .pdf (no default)")],
+    position: Annotated[int | None, typer.Option("-p", "--position", help="position "
+                        "number drawn by plan and trajectories, and the reference of "
+                        "increment (default: 0)")] = None,
+    names: Annotated[str | None, typer.Option("-n", "--names", help="comma-separated "
+                     "names: parameters (r3,dr3,M_bal) for parameters and increment; two "
+                     "for combination; two vector numbers (2,3) for angle (no default)")
+                     ] = None,
+    against: Annotated[str, typer.Option(help="x axis: position, time, arg1, ... "
+                                         "(drawn in its own unit)")] = "position",
     op: Annotated[str, typer.Option(help="combination: sum, difference, product, ratio, "
                                     "power")] = "ratio",
-    points: Annotated[str | None, typer.Option(help="trajectories: head:6, tail:2, "
-                      "vector:2:0.3 (a share of vector 2), S2 (centre of mass of body 2)")
-                      ] = None,
-    joint: Annotated[str | None, typer.Option(help="hodograph: the joint name")] = None,
-    polar: Annotated[bool, typer.Option(help="hodograph in polar form")] = False,
-    units: Annotated[str | None, typer.Option(help="display units, e.g. "
-                     "length=mm,angle=deg,force=kN,power=kW (default SI and deg)")] = None,
+    points: Annotated[str | None, typer.Option(help="trajectories: comma-separated "
+                      "points, e.g. head:6, tail:2, vector:2:0.3 (0.3 of vector 2 from its "
+                      "tail), S2 (centre of mass of body 2); default: none")] = None,
+    joint: Annotated[str | None, typer.Option(help="hodograph: the joint name, e.g. A "
+                                              "(no default)")] = None,
+    polar: Annotated[bool, typer.Option(help="hodograph in polar form (magnitude and "
+                                        "angle) instead of x-y")] = False,
+    units: Annotated[str | None, typer.Option(help="display units as KIND=UNIT pairs, "
+                     "e.g. length=mm,force=kN; kinds: length, angle, force, moment, power, "
+                     "mass, inertia, time, energy (default: SI units and degrees)")
+                     ] = None,
 ) -> None:
     """Draw one view of a model to an image file.
 
     Examples:
-      mechloop plot examples/four_bar.yaml plan -p 12 -o plan.png
-      mechloop plot examples/crank_slider.yaml parameters -n r3,dr3 --against arg1 -o s.png
-      mechloop plot examples/crank_slider_dynamics.yaml hodograph --joint A -o hod.svg
+
+    ```
+    mechloop plot examples/four_bar.yaml plan -p 12 -o plan.png
+    mechloop plot examples/crank_slider.yaml parameters -n r3,dr3 \\
+        --against arg1 -o s.png
+    mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
+        --joint A -o hod.svg
+    ```
     """
     from mechloop.model.load import load_model
     from mechloop.solve.kinematics import solve as solve_model
@@ -389,13 +417,18 @@ def _progress(description: str):
 def animate(
     model: ModelPath,
     output: Annotated[Path, typer.Option("-o", "--output", help="animation file: .gif, "
-                                         ".mp4 or .html")],
-    fps: Annotated[float | None, typer.Option(help="frames per second (default: from the "
-                                              "model time, at least 20 ms a frame)")] = None,
+                                         ".mp4 or .html (no default)")],
+    fps: Annotated[float | None, typer.Option(help="frames per second, 1/s (default: "
+                                              "from the model time, at least 20 ms a "
+                                              "frame)")] = None,
 ) -> None:
     """Animate a cycle ("cinema"): one frame per position.
 
-    Example: mechloop animate examples/four_bar.yaml -o cycle.gif
+    Example:
+
+    ```
+    mechloop animate examples/four_bar.yaml -o cycle.gif
+    ```
     """
     from mechloop.model.load import load_model
     from mechloop.solve.kinematics import solve as solve_model
@@ -415,7 +448,8 @@ def animate(
 @user_errors
 def report(
     model: ModelPath,
-    output: Annotated[Path, typer.Option("-o", "--output", help="the report, .pdf")],
+    output: Annotated[Path, typer.Option("-o", "--output", help="the report, .pdf (no "
+                                         "default)")],
     lang: Annotated[str, typer.Option(help="language: en or ru")] = "en",
     parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
                          "the first contour's length function, else its last angle)")
@@ -425,7 +459,11 @@ def report(
     link, angle differences, dynamics, reactions, centres of mass, conclusion, and the
     values at every position.
 
-    Example: mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
+    Example:
+
+    ```
+    mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
+    ```
     """
     from mechloop.model.load import load_model, locate
     from mechloop.views.report import write_report
@@ -451,7 +489,11 @@ def structure(model: ModelPath) -> None:
     groups with their pairs and assembly variants, the structure formula, the class of the
     mechanism, and the identification table.
 
-    Example: mechloop structure examples/crank_slider_dynamics.yaml
+    Example:
+
+    ```
+    mechloop structure examples/crank_slider_dynamics.yaml
+    ```
     """
     from mechloop.model.load import load_model, locate
     from mechloop.structure import analyze, identification_table
@@ -484,12 +526,17 @@ def schema(
                                                 help="write the schema to this file "
                                                 "(default: print it)")] = None,
     groups: Annotated[bool, typer.Option("--groups", help="the schema of files built from "
-                                         "Assur groups (groups:) instead")] = False,
+                                         "Assur groups (groups:) instead (default: the "
+                                         "schema of vector models)")] = False,
 ) -> None:
     """Print the JSON Schema of model files (generated from the code): vector models, or
     with --groups models built from an input and Assur groups.
 
-    Example: mechloop schema -o model.schema.json
+    Example:
+
+    ```
+    mechloop schema -o model.schema.json
+    ```
     """
     from mechloop.model.load import atomic_write_text
 
@@ -512,15 +559,17 @@ def schema(
 @user_errors
 def sweep_command(
     model: ModelPath,
-    vary: Annotated[list[str], typer.Option("--vary", help="PATH=VALUES, once or twice (two: "
+    vary: Annotated[list[str], typer.Option("--vary", metavar="PATH=VALUES",
+                    help="once or twice (two: "
                     "the full grid): a path in the model data (vectors.2.r, time.rpm, "
                     "bodies.2.mass, forces.0.value, machine.delta) and a range "
                     "start:stop:count or a list v1,v2,... in the model's units (or with "
-                    "a unit: '30 mm:60 mm:4')", show_default=False)],
-    collect: Annotated[list[str], typer.Option("--collect", help="COLUMN:REDUCTION, "
-                       "repeatable: a column of the results table (r3, da2, M_bal, RA, "
+                    "a unit: '30 mm:60 mm:4'); no default", show_default=False)],
+    collect: Annotated[list[str], typer.Option("--collect", metavar="COLUMN:REDUCTION",
+                       help="repeatable: a column of the results table (r3, da2, M_bal, RA, "
                        "J_red, ...) and max, min, mean, rms, range, absmax or at=K "
-                       "(position K)", show_default=False)],
+                       "(position K); values in the unit of the column; no default",
+                       show_default=False)],
     output: Annotated[Path | None, typer.Option("-o", "--output", help="write the table "
                       "here: .csv, .json or .xlsx (default: print it only)")] = None,
     plot_file: Annotated[Path | None, typer.Option("--plot", help="draw the quantities "
@@ -533,19 +582,22 @@ def sweep_command(
     contour: Annotated[bool | None, typer.Option("--contour/--lines", help="two "
                        "parameters: a contour map or one line per value of the second "
                        "(default: a map above 6 values)", show_default=False)] = None,
-    units: Annotated[str | None, typer.Option(help="display units of the plot, e.g. "
-                     "force=kN,moment=kN*m (default SI and deg)")] = None,
+    units: Annotated[str | None, typer.Option(help="display units of the plot as "
+                     "KIND=UNIT pairs, e.g. force=kN,moment=kN*m (default: SI units and "
+                     "degrees)")] = None,
 ) -> None:
     """Parametric analysis: solve the model for every value of one or two parameters and
     tabulate reductions of result columns (KDAM's "parametric analysis" panel).
 
-    Example (peak and rms balancing moment of the engine against its speed):
+    Example, the peak and rms balancing moment of the engine against its speed:
 
-    mechloop sweep examples/single_cylinder_engine.yaml
-    --vary time.rpm=1000:4000:7 --collect M_bal:max --collect M_bal:rms
+    ```
+    mechloop sweep examples/single_cylinder_engine.yaml \\
+        --vary time.rpm=1000:4000:7 --collect M_bal:max --collect M_bal:rms
+    ```
 
-    Add -o speed.csv to write the table and --plot speed.png to draw it;
-    a second --vary (e.g. --vary vectors.2.r=120:160:5) gives the grid.
+    Add -o speed.csv to write the table and --plot speed.png to draw it; a second --vary
+    (e.g. --vary vectors.2.r=120:160:5) gives the grid.
     """
     import numpy as np
 
@@ -623,9 +675,10 @@ def synthesize(
                       "model's search.method, else de)")] = None,
     seed: Annotated[int | None, typer.Option(help="random seed (default: the model's "
                     "search.seed)")] = None,
-    iterations: Annotated[int | None, typer.Option(help="generations at most (default: "
-                          "the model's search.iterations)")] = None,
-    time_budget: Annotated[float | None, typer.Option("--time", help="time budget, s "
+    iterations: Annotated[int | None, typer.Option(help="number of generations at most "
+                          "(default: the model's search.iterations)")] = None,
+    time_budget: Annotated[float | None, typer.Option("--time", help="time budget in "
+                           "seconds; a run stopped by time depends on the machine's speed "
                            "(default: the model's search.time, else none)")] = None,
     scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
                          "or a dask scheduler address tcp://host:8786 (default: chosen by "
@@ -633,10 +686,14 @@ def synthesize(
 ) -> None:
     """Synthesis by optimization: vary the dimensions listed in the model's synthesis:
     section to reach its target (a path, a function, poses) under its conditions.
-    Ctrl-C stops the search and keeps the best design found so far.
 
-    Example: mechloop synthesize examples/four_bar_path_synthesis.yaml -o best.yaml
-    --table best.csv --plot convergence.png
+    Ctrl-C stops the search and keeps the best design found so far. The summary prints the
+    minimized total and each of its terms. Example:
+
+    ```
+    mechloop synthesize examples/four_bar_path_synthesis.yaml -o best.yaml \\
+        --table best.csv --plot convergence.png
+    ```
     """
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
