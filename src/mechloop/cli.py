@@ -650,6 +650,54 @@ def sweep_command(
         out.print(f"wrote {plot_file}")
 
 
+OBJECTIVES = {"max": "max |deviation|", "rms": "rms deviation",
+              "ssq": "sum of squared deviations"}
+
+
+def _print_objective(result: Any, objective: str) -> None:
+    """The minimized total of the best design and its terms, then the measured quantities.
+
+    With a target the total is Q (the main condition: the deviation from the target) plus
+    every penalty; without one it is the sum of the criteria terms (each its weighted value
+    plus its penalty). The printed terms add up to the printed total.
+    """
+    ev = result.evaluation
+    has_target = bool(result.problem.target_kind)
+    if not result.feasible:
+        out.print("no feasible design found: every design tried breaks the chain or changes "
+                  "its assembly variant; widen the bounds")
+    else:
+        table = _table("Minimized total and its terms", ["term", "value", "unit"])
+        if has_target:
+            table.add_row(f"Q: main condition, {OBJECTIVES[objective]}",
+                          f"{result.q:.6g}", result.problem.q_shown_unit)
+        for name, value in ev.terms.items():
+            label = f"criterion {name}" if not has_target else f"penalty {name}"
+            table.add_row(label, f"{float(value[0]):.6g}", "")
+        table.add_row("total (minimized)", f"{float(ev.total[0]):.6g}", "")
+        out.print(table)
+    measured = _table("Conditions and measured quantities", ["quantity", "value"])
+    measured.add_row("share of positions with a chain break", f"{float(ev.broken_share[0]):.6g}")
+    measured.add_row("assembly variant kept", "yes" if bool(ev.keeps_variant[0]) else "no")
+    for name, value in ev.measures.items():
+        measured.add_row(name, f"{float(value[0]):.6g}")
+    out.print(measured)
+    if result.feasible:
+        parts = [f"minimized total {float(ev.total[0]):.6g}"]
+        if has_target:
+            penalty = sum(float(v[0]) for v in ev.terms.values())
+            parts.append(f"= Q + penalties: Q = {result.q:.6g} {result.problem.q_shown_unit} "
+                         f"({OBJECTIVES[objective]}), penalties {penalty:.6g}")
+        else:
+            parts.append("= the sum of the criteria terms (no target)")
+        verdict = " ".join(parts)
+    else:
+        verdict = "no feasible design"
+    out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
+              f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
+              f"{result.method})")
+
+
 def _table(title: str, headers: list[str]) -> Table:
     table = Table(title=title)
     for h in headers:
@@ -732,23 +780,12 @@ def synthesize(
                          time_budget=time_budget, progress=report, scheduler=scheduler)
         except ModelError as exc:
             raise locate(exc, model) from None
-    unit = result.problem.q_shown_unit
     rows = _table("Best design", ["variable", "value", "unit"])
     for name, value in result.values().items():
         rows.add_row(name, f"{value:.6g}", result.problem.variables.units[
             result.problem.variables.names.index(name)])
     out.print(rows)
-    terms = _table("Terms of the objective", ["term", "value"])
-    for name, value in result.terms().items():
-        terms.add_row(name, f"{value:.6g}")
-    out.print(terms)
-    how = m.synthesis.objective if result.problem.target_kind else "criteria"
-    verdict = (f"Q = {result.q:.6g} {unit} ({how})" if result.feasible
-               else "no feasible design found: every design tried breaks the chain or "
-               "changes its assembly variant; widen the bounds")
-    out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
-              f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
-              f"{result.method})")
+    _print_objective(result, m.synthesis.objective)
     if output is not None:
         if not result.feasible:
             raise ModelError([Problem((), "no feasible design to write",
