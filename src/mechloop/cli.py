@@ -728,6 +728,9 @@ def synthesize(
     time_budget: Annotated[float | None, typer.Option("--time", help="time budget in "
                            "seconds; a run stopped by time depends on the machine's speed "
                            "(default: the model's search.time, else none)")] = None,
+    polish: Annotated[bool | None, typer.Option("--polish/--no-polish", help="polish the "
+                      "best design by least squares and Nelder–Mead at the end (default: "
+                      "the model's search.polish, else yes)", show_default=False)] = None,
     scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
                          "or a dask scheduler address tcp://host:8786 (default: chosen by "
                          "the work's size)")] = None,
@@ -777,7 +780,8 @@ def synthesize(
 
         try:
             result = run(m, method=method, seed=seed, iterations=iterations,
-                         time_budget=time_budget, progress=report, scheduler=scheduler)
+                         time_budget=time_budget, polish=polish, progress=report,
+                         scheduler=scheduler)
         except ModelError as exc:
             raise locate(exc, model) from None
     rows = _table("Best design", ["variable", "value", "unit"])
