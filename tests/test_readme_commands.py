@@ -195,3 +195,14 @@ def test_energy_example_prints_a_meaningful_efficiency(scratch, monkeypatch):
     assert efficiency == pytest.approx(useful / (useful + lost), rel=1e-3)
     assert 0.05 < efficiency < 0.95
     assert round(100 * efficiency) == 28  # the README's comment beside the command
+
+
+def test_shown_output_is_what_the_command_prints(scratch, monkeypatch):
+    """The README's ```text block is the output of the command named just above it."""
+    shown = re.findall(r"`(mechloop [^`]+)` prints:\s*```text\n(.*?)```", README, flags=re.S)
+    assert shown
+    monkeypatch.chdir(scratch)
+    for command, text in shown:
+        result = CliRunner().invoke(app, _args(command))
+        assert result.exit_code == 0, result.output
+        assert result.output.strip() == text.strip()
