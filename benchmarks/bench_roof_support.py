@@ -90,7 +90,9 @@ def main() -> None:
     band = terms["range x(head 11)"]
     print(f"  band {band * 1e3:.2f} mm, stroke {terms['range y(head 11)']:.3f} m, leg "
           f"force {terms['max F_bal'] / 1e3:.0f} kN; {result.evaluations} designs in "
-          f"{result.elapsed:.1f} s ({result.stopped})")
+          f"{result.elapsed:.1f} s ({result.stopped}; the time depends on the machine)")
+    dims = ", ".join(f"{name} = {value:.3f}" for name, value in result.values().items())
+    print(f"  Q = {result.q * 1e3:.2f} mm; dimensions (m): {dims}")
     seed_tabulation("synthesized design", result.model)
 
     print("3. brute-force grid over the six dimensions, exact kinematics")

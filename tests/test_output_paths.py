@@ -62,7 +62,7 @@ def _forbid(monkeypatch, module: str, name: str) -> None:
 ])
 def test_a_missing_folder_is_an_error_before_the_run(tmp_path, monkeypatch, command):
     model = _model(tmp_path)
-    _forbid(monkeypatch, "mechloop.cli", "load_model")
+    _forbid(monkeypatch, "mechloop.model.load", "load_model")
     out = tmp_path / "no" / "such" / "folder" / "x"
     args = [a.format(model=model, out=out) for a in command]
     result = runner.invoke(app, args)
@@ -75,7 +75,7 @@ def test_a_missing_folder_is_an_error_before_the_run(tmp_path, monkeypatch, comm
 def test_a_folder_as_the_output_file_is_an_error(tmp_path, monkeypatch):
     model = _model(tmp_path)
     (tmp_path / "results.csv").mkdir()
-    _forbid(monkeypatch, "mechloop.cli", "load_model")
+    _forbid(monkeypatch, "mechloop.model.load", "load_model")
     for out in (tmp_path, tmp_path / "results.csv"):
         result = runner.invoke(app, ["solve", str(model), "-o", str(out)])
         assert result.exit_code == 2
@@ -159,7 +159,7 @@ def test_synthesize_does_not_overwrite_its_model(tmp_path, monkeypatch):
 
 def test_plot_does_not_overwrite_its_model(tmp_path, monkeypatch):
     model = _model(tmp_path, "m.png")  # a model file may have any name
-    _forbid(monkeypatch, "mechloop.cli", "load_model")
+    _forbid(monkeypatch, "mechloop.model.load", "load_model")
     result = runner.invoke(app, ["plot", str(model), "plan", "-o", str(model)])
     assert result.exit_code == 2 and "is the input model" in result.output
 
@@ -314,7 +314,7 @@ def test_solve_does_not_overwrite_a_csv_table_its_model_reads(tmp_path, monkeypa
     model.write_text((EXAMPLES / "four_bar.yaml").read_text().replace(
         "1: {table: {0: 0, 72: 360}}", "1: {csv: crank.csv}"))
     assert runner.invoke(app, ["check", str(model)]).exit_code == 0
-    _forbid(monkeypatch, "mechloop.cli", "load_model")
+    _forbid(monkeypatch, "mechloop.model.load", "load_model")
     result = runner.invoke(app, ["solve", str(model), "-o", str(table)])
     assert result.exit_code == 2
     assert f"is a table the model reads, {table}" in result.output

@@ -148,7 +148,10 @@ def test_solve_refuses_xlsx_for_too_many_positions_before_solving(tmp_path, monk
     def no_solve(*args, **kwargs):
         raise AssertionError("solved before the table size was checked")
 
-    monkeypatch.setattr("mechloop.cli.solve_model", no_solve)
+    import importlib
+
+    kinematics = importlib.import_module("mechloop.solve.kinematics")
+    monkeypatch.setattr(kinematics, "solve", no_solve)
     result = CliRunner().invoke(app, ["solve", str(model), "-o", str(tmp_path / "r.xlsx")])
     assert result.exit_code == 2, result.output
     assert "do not fit an Excel sheet" in result.output and ".parquet" in result.output

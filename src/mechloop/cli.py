@@ -2,6 +2,11 @@
 
 Every error a user can cause prints the :class:`~mechloop.errors.MechloopError` message and
 exits with code 2, without a traceback.
+
+Start-up is kept short (``mechloop --help`` loads no NumPy, pandas, SciPy, pint or
+matplotlib): the library is imported inside the commands that use it. Help texts are
+Markdown: docstrings are written as paragraphs (re-flowed to the terminal's width), examples
+as indented code lines.
 """
 
 from __future__ import annotations
@@ -11,21 +16,38 @@ import sys
 from collections.abc import Callable
 from functools import wraps
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
-import numpy as np
 import typer
 from rich.console import Console
 from rich.table import Table
 from rich.text import Text
+from typer.core import TyperCommand, TyperGroup
 
-from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.errors import MechloopError, ModelError, Problem
-from mechloop.model.formula import describe_structure
-from mechloop.model.load import load_model, locate
-from mechloop.model.schema import model_json_schema
-from mechloop.solve.kinematics import solve as solve_model
-from mechloop.solve.results import compress_positions
+
+if TYPE_CHECKING:
+    from mechloop.dynamics.analysis import DynamicResults
+
+
+class _NoFlagType:
+    """Help without a ``<bool>`` type beside an on/off flag (``--polar``, ``--help``)."""
+
+    def get_params(self, ctx: Any) -> list[Any]:
+        params = super().get_params(ctx)  # type: ignore[misc]
+        for param in params:
+            if getattr(param, "is_flag", False):
+                param.metavar = ""
+        return params
+
+
+class _Command(_NoFlagType, TyperCommand):
+    pass
+
+
+class _Group(_NoFlagType, TyperGroup):
+    pass
+
 
 app = typer.Typer(
     name="mechloop",
@@ -33,6 +55,8 @@ app = typer.Typer(
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode="markdown",
+    cls=_Group,
 )
 out = Console(highlight=False, soft_wrap=True)
 err = Console(stderr=True, highlight=False, soft_wrap=True)
@@ -55,13 +79,19 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     return wrapper
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def check(model: ModelPath) -> None:
     """Validate a model file; every problem is listed with its line and the fix.
 
-    Example: mechloop check examples/crank_slider.yaml
+    Example:
+
+    ```
+    mechloop check examples/crank_slider.yaml
+    ```
     """
+    from mechloop.model.load import load_model
+
     m = load_model(model)
     n_vec = len(m.vectors)
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
@@ -75,20 +105,30 @@ def check(model: ModelPath) -> None:
 
 def _dynamics(m, path: Path) -> DynamicResults:
     """Solve the dynamics of a loaded model; model problems name the file and line."""
+    from mechloop.dynamics.analysis import solve_dynamics
+    from mechloop.model.load import locate
+
     try:
         return solve_dynamics(m)
     except ModelError as exc:
         raise locate(exc, path) from None
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def info(model: ModelPath) -> None:
     """Print the structure and parametric formula of every contour (KDAM's "structure of
     the vector model" panel).
 
-    Example: mechloop info examples/four_bar.yaml
+    Example:
+
+    ```
+    mechloop info examples/four_bar.yaml
+    ```
     """
+    from mechloop.model.formula import describe_structure
+    from mechloop.model.load import load_model
+
     m = load_model(model)
     out.print(describe_structure(m))
 
@@ -111,7 +151,7 @@ def _outputs(model: Path | None, force: bool, *pairs: tuple[Path | None, tuple[s
             check_output(path, suffixes=suffixes, inputs=inputs, force=force)
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def solve(
     model: ModelPath,
@@ -124,9 +164,18 @@ def solve(
     bodies also the balancing load, reduced characteristics, centres of mass and the
     reaction in every joint.
 
-    Example: mechloop solve examples/crank_slider.yaml -o results.csv
+    Values are in SI units (m, s, N) and degrees, one row per position. Example:
+
+    ```
+    mechloop solve examples/crank_slider.yaml -o results.csv
+    ```
     """
+    import numpy as np
+
+    from mechloop.model.load import load_model
     from mechloop.output.tables import check_table_size
+    from mechloop.solve.kinematics import solve as solve_model
+    from mechloop.solve.results import compress_positions
 
     _outputs(model, force, (output, SUFFIXES))
     m = load_model(model)
@@ -164,15 +213,25 @@ def _write_frame(frame, output: Path) -> None:
     write_frame(frame, output)
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def energy(model: ModelPath) -> None:
     """Print the summary characteristics of a cycle: work and power of every load and of
     friction, the mechanical loss coefficient and the efficiency; and the machine motion
     and flywheel when the model has a machine: section.
 
-    Example: mechloop energy examples/crank_slider_dynamics.yaml
+    The efficiency is defined when a load does net positive (driving) work over the cycle
+    and there is friction to lose; without friction it is 100 %. Example (friction 0.1 in
+    every pair):
+
+    ```
+    mechloop energy examples/crank_slider_friction.yaml
+    ```
     """
+    import numpy as np
+
+    from mechloop.model.load import load_model
+
     m = load_model(model)
     if not m.bodies:
         raise ModelError([Problem(("bodies",), "the model has no bodies, so no loads",
@@ -236,40 +295,52 @@ def _point(text: str) -> Any:
     return text
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def plot(
     model: ModelPath,
     kind: Annotated[str, typer.Argument(help=f"what to draw: {', '.join(PLOTS)}",
                                         show_default=False)],
     output: Annotated[Path, typer.Option("-o", "--output", help="image file: .png, .svg "
-                                         "or .pdf")],
-    position: Annotated[int | None, typer.Option("-p", "--position", help="position for "
-                        "plan, trajectories (default: 0) and increment (reference, default "
-                        "0)")] = None,
-    names: Annotated[str | None, typer.Option("-n", "--names", help="comma-separated: "
-                     "parameters (r3,dr3,M_bal) for parameters/increment; two for "
-                     "combination; two vectors (2,3) for angle")] = None,
-    against: Annotated[str, typer.Option(help="x axis: position, time, arg1, ...")
-                       ] = "position",
+                                         "or .pdf (no default)")],
+    position: Annotated[int | None, typer.Option("-p", "--position", help="position "
+                        "number drawn by plan and trajectories, and the reference of "
+                        "increment (default: 0)")] = None,
+    names: Annotated[str | None, typer.Option("-n", "--names", help="comma-separated "
+                     "names: parameters (r3,dr3,M_bal) for parameters and increment; two "
+                     "for combination; two vector numbers (2,3) for angle (no default)")
+                     ] = None,
+    against: Annotated[str, typer.Option(help="x axis: position, time, arg1, ... "
+                                         "(drawn in its own unit)")] = "position",
     op: Annotated[str, typer.Option(help="combination: sum, difference, product, ratio, "
                                     "power")] = "ratio",
-    points: Annotated[str | None, typer.Option(help="trajectories: head:6, tail:2, "
-                      "vector:2:0.3 (a share of vector 2), S2 (centre of mass of body 2)")
-                      ] = None,
-    joint: Annotated[str | None, typer.Option(help="hodograph: the joint name")] = None,
-    polar: Annotated[bool, typer.Option(help="hodograph in polar form")] = False,
-    units: Annotated[str | None, typer.Option(help="display units, e.g. "
-                     "length=mm,angle=deg,force=kN,power=kW (default SI and deg)")] = None,
+    points: Annotated[str | None, typer.Option(help="trajectories: comma-separated "
+                      "points, e.g. head:6, tail:2, vector:2:0.3 (0.3 of vector 2 from its "
+                      "tail), S2 (centre of mass of body 2); default: none")] = None,
+    joint: Annotated[str | None, typer.Option(help="hodograph: the joint name, e.g. A "
+                                              "(no default)")] = None,
+    polar: Annotated[bool, typer.Option(help="hodograph in polar form (magnitude and "
+                                        "angle) instead of x-y")] = False,
+    units: Annotated[str | None, typer.Option(help="display units as KIND=UNIT pairs, "
+                     "e.g. length=mm,force=kN; kinds: length, angle, force, moment, power, "
+                     "mass, inertia, time, energy (default: SI units and degrees)")
+                     ] = None,
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
 
     Examples:
-      mechloop plot examples/four_bar.yaml plan -p 12 -o plan.png
-      mechloop plot examples/crank_slider.yaml parameters -n r3,dr3 --against arg1 -o s.png
-      mechloop plot examples/crank_slider_dynamics.yaml hodograph --joint A -o hod.svg
+
+    ```
+    mechloop plot examples/four_bar.yaml plan -p 12 -o plan.png
+    mechloop plot examples/crank_slider.yaml parameters -n r3,dr3 \\
+        --against arg1 -o s.png
+    mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
+        --joint A -o hod.svg
+    ```
     """
+    from mechloop.model.load import load_model
+    from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
     from mechloop.views import plan as plans
     from mechloop.views.display import Display
@@ -348,20 +419,27 @@ def _progress(description: str):
                     transient=True)
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def animate(
     model: ModelPath,
     output: Annotated[Path, typer.Option("-o", "--output", help="animation file: .gif, "
-                                         ".mp4 or .html")],
-    fps: Annotated[float | None, typer.Option(help="frames per second (default: from the "
-                                              "model time, at least 20 ms a frame)")] = None,
+                                         ".mp4 or .html (no default)")],
+    fps: Annotated[float | None, typer.Option(help="frames per second, 1/s (default: "
+                                              "from the model time, at least 20 ms a "
+                                              "frame)")] = None,
     force: Force = False,
 ) -> None:
     """Animate a cycle ("cinema"): one frame per position.
 
-    Example: mechloop animate examples/four_bar.yaml -o cycle.gif
+    Example:
+
+    ```
+    mechloop animate examples/four_bar.yaml -o cycle.gif
+    ```
     """
+    from mechloop.model.load import load_model
+    from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views.animation import ANIMATION_SUFFIXES
     from mechloop.views.animation import animate as make_animation
 
@@ -376,11 +454,12 @@ def animate(
     out.print(f"wrote {output} ({m.positions + 1} frames)")
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def report(
     model: ModelPath,
-    output: Annotated[Path, typer.Option("-o", "--output", help="the report, .pdf")],
+    output: Annotated[Path, typer.Option("-o", "--output", help="the report, .pdf (no "
+                                         "default)")],
     lang: Annotated[str, typer.Option(help="language: en or ru")] = "en",
     parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
                          "the first contour's length function, else its last angle)")
@@ -391,8 +470,13 @@ def report(
     link, angle differences, dynamics, reactions, centres of mass, conclusion, and the
     values at every position.
 
-    Example: mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
+    Example:
+
+    ```
+    mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
+    ```
     """
+    from mechloop.model.load import load_model, locate
     from mechloop.views.report import write_report
 
     _outputs(model, force, (output, (".pdf",)))
@@ -410,15 +494,20 @@ def report(
 
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def structure(model: ModelPath) -> None:
     """Structural analysis: links, pairs, mobility by Chebyshev, the input groups and Assur
     groups with their pairs and assembly variants, the structure formula, the class of the
     mechanism, and the identification table.
 
-    Example: mechloop structure examples/crank_slider_dynamics.yaml
+    Example:
+
+    ```
+    mechloop structure examples/crank_slider_dynamics.yaml
+    ```
     """
+    from mechloop.model.load import load_model, locate
     from mechloop.structure import analyze, identification_table
     from mechloop.structure.assur import ROMAN
 
@@ -443,14 +532,15 @@ def structure(model: ModelPath) -> None:
     out.print(identification_table(dec).to_string())
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def schema(
     output: Annotated[Path | None, typer.Option("-o", "--output",
                                                 help="write the schema to this file "
                                                 "(default: print it)")] = None,
     groups: Annotated[bool, typer.Option("--groups", help="the schema of files built from "
-                                         "Assur groups (groups:) instead")] = False,
+                                         "Assur groups (groups:) instead (default: the "
+                                         "schema of vector models)")] = False,
     force: Annotated[bool, typer.Option("--force", help="replace the output file even when "
                                         "it holds something other than a schema (a model)")
                      ] = False,
@@ -458,7 +548,11 @@ def schema(
     """Print the JSON Schema of model files (generated from the code): vector models, or
     with --groups models built from an input and Assur groups.
 
-    Example: mechloop schema -o model.schema.json
+    Example:
+
+    ```
+    mechloop schema -o model.schema.json
+    ```
     """
     if output is not None:
         from mechloop.output.paths import check_output, check_replaces_schema
@@ -471,6 +565,8 @@ def schema(
 
         found = group_json_schema()
     else:
+        from mechloop.model.schema import model_json_schema
+
         found = model_json_schema()
     text = json.dumps(found, indent=2, ensure_ascii=False) + "\n"
     if output is None:
@@ -482,19 +578,21 @@ def schema(
         out.print(f"wrote {output}")
 
 
-@app.command(name="sweep")
+@app.command(name="sweep", cls=_Command)
 @user_errors
 def sweep_command(
     model: ModelPath,
-    vary: Annotated[list[str], typer.Option("--vary", help="PATH=VALUES, once or twice (two: "
+    vary: Annotated[list[str], typer.Option("--vary", metavar="PATH=VALUES",
+                    help="once or twice (two: "
                     "the full grid): a path in the model data (vectors.2.r, time.rpm, "
                     "bodies.2.mass, forces.0.value, machine.delta) and a range "
                     "start:stop:count or a list v1,v2,... in the model's units (or with "
-                    "a unit: '30 mm:60 mm:4')", show_default=False)],
-    collect: Annotated[list[str], typer.Option("--collect", help="COLUMN:REDUCTION, "
-                       "repeatable: a column of the results table (r3, da2, M_bal, RA, "
+                    "a unit: '30 mm:60 mm:4'); no default", show_default=False)],
+    collect: Annotated[list[str], typer.Option("--collect", metavar="COLUMN:REDUCTION",
+                       help="repeatable: a column of the results table (r3, da2, M_bal, RA, "
                        "J_red, ...) and max, min, mean, rms, range, absmax or at=K "
-                       "(position K)", show_default=False)],
+                       "(position K); values in the unit of the column; no default",
+                       show_default=False)],
     output: Annotated[Path | None, typer.Option("-o", "--output", help="write the table "
                       "here: .csv, .json, .parquet or .xlsx (default: print it only)")
                       ] = None,
@@ -508,21 +606,27 @@ def sweep_command(
     contour: Annotated[bool | None, typer.Option("--contour/--lines", help="two "
                        "parameters: a contour map or one line per value of the second "
                        "(default: a map above 6 values)", show_default=False)] = None,
-    units: Annotated[str | None, typer.Option(help="display units of the plot, e.g. "
-                     "force=kN,moment=kN*m (default SI and deg)")] = None,
+    units: Annotated[str | None, typer.Option(help="display units of the plot as "
+                     "KIND=UNIT pairs, e.g. force=kN,moment=kN*m (default: SI units and "
+                     "degrees)")] = None,
     force: Force = False,
 ) -> None:
     """Parametric analysis: solve the model for every value of one or two parameters and
     tabulate reductions of result columns (KDAM's "parametric analysis" panel).
 
-    Example (peak and rms balancing moment of the engine against its speed):
+    Example, the peak and rms balancing moment of the engine against its speed:
 
-    mechloop sweep examples/single_cylinder_engine.yaml
-    --vary time.rpm=1000:4000:7 --collect M_bal:max --collect M_bal:rms
+    ```
+    mechloop sweep examples/single_cylinder_engine.yaml \\
+        --vary time.rpm=1000:4000:7 --collect M_bal:max --collect M_bal:rms
+    ```
 
-    Add -o speed.csv to write the table and --plot speed.png to draw it;
-    a second --vary (e.g. --vary vectors.2.r=120:160:5) gives the grid.
+    Add -o speed.csv to write the table and --plot speed.png to draw it; a second --vary
+    (e.g. --vary vectors.2.r=120:160:5) gives the grid.
     """
+    import numpy as np
+
+    from mechloop.model.load import load_model, locate
     from mechloop.synthesis.parallel import check_scheduler
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
@@ -566,6 +670,54 @@ def sweep_command(
         out.print(f"wrote {plot_file}")
 
 
+OBJECTIVES = {"max": "max |deviation|", "rms": "rms deviation",
+              "ssq": "sum of squared deviations"}
+
+
+def _print_objective(result: Any, objective: str) -> None:
+    """The minimized total of the best design and its terms, then the measured quantities.
+
+    With a target the total is Q (the main condition: the deviation from the target) plus
+    every penalty; without one it is the sum of the criteria terms (each its weighted value
+    plus its penalty). The printed terms add up to the printed total.
+    """
+    ev = result.evaluation
+    has_target = bool(result.problem.target_kind)
+    if not result.feasible:
+        out.print("no feasible design found: every design tried breaks the chain or changes "
+                  "its assembly variant; widen the bounds")
+    else:
+        table = _table("Minimized total and its terms", ["term", "value", "unit"])
+        if has_target:
+            table.add_row(f"Q: main condition, {OBJECTIVES[objective]}",
+                          f"{result.q:.6g}", result.problem.q_shown_unit)
+        for name, value in ev.terms.items():
+            label = f"criterion {name}" if not has_target else f"penalty {name}"
+            table.add_row(label, f"{float(value[0]):.6g}", "")
+        table.add_row("total (minimized)", f"{float(ev.total[0]):.6g}", "")
+        out.print(table)
+    measured = _table("Conditions and measured quantities", ["quantity", "value"])
+    measured.add_row("share of positions with a chain break", f"{float(ev.broken_share[0]):.6g}")
+    measured.add_row("assembly variant kept", "yes" if bool(ev.keeps_variant[0]) else "no")
+    for name, value in ev.measures.items():
+        measured.add_row(name, f"{float(value[0]):.6g}")
+    out.print(measured)
+    if result.feasible:
+        parts = [f"minimized total {float(ev.total[0]):.6g}"]
+        if has_target:
+            penalty = sum(float(v[0]) for v in ev.terms.values())
+            parts.append(f"= Q + penalties: Q = {result.q:.6g} {result.problem.q_shown_unit} "
+                         f"({OBJECTIVES[objective]}), penalties {penalty:.6g}")
+        else:
+            parts.append("= the sum of the criteria terms (no target)")
+        verdict = " ".join(parts)
+    else:
+        verdict = "no feasible design"
+    out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
+              f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
+              f"{result.method})")
+
+
 def _table(title: str, headers: list[str]) -> Table:
     table = Table(title=title)
     for h in headers:
@@ -574,7 +726,7 @@ def _table(title: str, headers: list[str]) -> Table:
 
 
 
-@app.command()
+@app.command(cls=_Command)
 @user_errors
 def synthesize(
     model: ModelPath,
@@ -592,10 +744,14 @@ def synthesize(
                       "model's search.method, else de)")] = None,
     seed: Annotated[int | None, typer.Option(help="random seed (default: the model's "
                     "search.seed)")] = None,
-    iterations: Annotated[int | None, typer.Option(help="generations at most (default: "
-                          "the model's search.iterations)")] = None,
-    time_budget: Annotated[float | None, typer.Option("--time", help="time budget, s "
+    iterations: Annotated[int | None, typer.Option(help="number of generations at most "
+                          "(default: the model's search.iterations)")] = None,
+    time_budget: Annotated[float | None, typer.Option("--time", help="time budget in "
+                           "seconds; a run stopped by time depends on the machine's speed "
                            "(default: the model's search.time, else none)")] = None,
+    polish: Annotated[bool | None, typer.Option("--polish/--no-polish", help="polish the "
+                      "best design by least squares and Nelder–Mead at the end (default: "
+                      "the model's search.polish, else yes)", show_default=False)] = None,
     scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
                          "or a dask scheduler address tcp://host:8786 (default: chosen by "
                          "the work's size)")] = None,
@@ -605,13 +761,18 @@ def synthesize(
 ) -> None:
     """Synthesis by optimization: vary the dimensions listed in the model's synthesis:
     section to reach its target (a path, a function, poses) under its conditions.
-    Ctrl-C stops the search and keeps the best design found so far.
 
-    Example: mechloop synthesize examples/four_bar_path_synthesis.yaml -o best.yaml
-    --table best.csv --plot convergence.png
+    Ctrl-C stops the search and keeps the best design found so far. The summary prints the
+    minimized total and each of its terms. Example:
+
+    ```
+    mechloop synthesize examples/four_bar_path_synthesis.yaml -o best.yaml \\
+        --table best.csv --plot convergence.png
+    ```
     """
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
+    from mechloop.model.load import load_model, locate
     from mechloop.synthesis.output import write_model, write_table
     from mechloop.synthesis.search import synthesize as run
     from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
@@ -641,26 +802,16 @@ def synthesize(
 
         try:
             result = run(m, method=method, seed=seed, iterations=iterations,
-                         time_budget=time_budget, progress=report, scheduler=scheduler)
+                         time_budget=time_budget, polish=polish, progress=report,
+                         scheduler=scheduler)
         except ModelError as exc:
             raise locate(exc, model) from None
-    unit = result.problem.q_shown_unit
     rows = _table("Best design", ["variable", "value", "unit"])
     for name, value in result.values().items():
         rows.add_row(name, f"{value:.6g}", result.problem.variables.units[
             result.problem.variables.names.index(name)])
     out.print(rows)
-    terms = _table("Terms of the objective", ["term", "value"])
-    for name, value in result.terms().items():
-        terms.add_row(name, f"{value:.6g}")
-    out.print(terms)
-    how = m.synthesis.objective if result.problem.target_kind else "criteria"
-    verdict = (f"Q = {result.q:.6g} {unit} ({how})" if result.feasible
-               else "no feasible design found: every design tried breaks the chain or "
-               "changes its assembly variant; widen the bounds")
-    out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
-              f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
-              f"{result.method})")
+    _print_objective(result, m.synthesis.objective)
     if output is not None:
         if not result.feasible:
             raise ModelError([Problem((), "no feasible design to write",

@@ -1,0 +1,493 @@
+"""Every number in README.md and in the examples' headers is accounted for.
+
+The text (outside code blocks; inline code only where a figure entry covers it) is split
+into paragraphs, and every number in it must be one of:
+
+* a **figure** of FIGURES: a result, with how it is reproduced — a test that pins it (its
+  source holds the number to the precision printed in the docs), a value computed here
+  (cheap: a solve, a closed form), or a benchmark the docs name in the same section (a
+  machine-dependent figure must be said to be, in its section);
+* an **input or a reference** of INPUTS (a phrase, with why it is not a result);
+* a small count (an integer up to 12 without a unit of time or a percent sign), or a
+  number that appears in the data of an example or in a code block of the README (the
+  example's own inputs, as its header describes them).
+
+A number that is none of these — a new figure nobody checks — fails
+`test_every_number_is_accounted_for`; an entry that no longer matches anything fails
+`test_no_entry_is_stale`.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+import math
+import re
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import mechloop
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "examples"
+SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+NUMBER = re.compile(r"(?<![\w.\-/])(\d+(?:,\d{3})*(?:\.\d+)?(?:e[-+]?\d+|·10[⁻⁰-⁹¹²³]+)?)"
+                    r"(?![a-zA-Z_\d])")
+TIMEY = re.compile(r"\s?(s\b|ms\b|%|GB\b|designs/s)")
+
+
+# ------------------------------------------------------------------------------ the text
+def _paragraphs_of_readme() -> list[tuple[str, str, str]]:
+    """(document, section, paragraph) of the README outside fenced code blocks; a table row
+    is a paragraph of its own."""
+    out: list[tuple[str, str, str]] = []
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    for block in re.findall(r"```bash\n(.*?)```", readme, flags=re.S):
+        out += [("README.md", readme, line.split(" #", 1)[1].strip())
+                for line in block.splitlines() if " #" in line]
+    text = re.sub(r"```.*?```", "\n\n", (ROOT / "README.md").read_text(encoding="utf-8"),
+                  flags=re.S)
+    for section in re.split(r"\n(?=#{1,4} )", text):
+        for block in re.split(r"\n\s*\n", section):
+            rows = block.splitlines()
+            if rows and all(r.startswith("|") for r in rows):
+                out += [("README.md", section, r) for r in rows]
+            elif block.strip():
+                out.append(("README.md", section, " ".join(r.strip() for r in rows)))
+    return out
+
+
+def _header(path: Path) -> str:
+    text = path.read_text(encoding="utf-8")
+    if path.suffix == ".py":
+        found = re.match(r'\s*"""(.*?)"""', text, flags=re.S)
+        return found.group(1) if found else ""
+    lines = []
+    for line in text.splitlines():
+        if not line.startswith("#"):
+            break
+        lines.append(line[1:].strip() if line.strip() != "#" else "")
+    return "\n".join(lines)
+
+
+def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
+    out = []
+    for path in sorted(EXAMPLES.iterdir()):
+        header = _header(path)
+        for block in re.split(r"\n\s*\n", header):
+            if block.strip():
+                out.append((path.name, header, " ".join(block.split())))
+    return out
+
+
+PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
+
+
+def _pool() -> set[float]:
+    """Numbers of the examples' data (outside comments) and of the README's code blocks."""
+    texts = [line.split("#")[0] for p in EXAMPLES.iterdir()
+             for line in p.read_text(encoding="utf-8").splitlines()]
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
+                                                         readme, flags=re.S)
+              for line in block.splitlines()]
+    return {float(m) for t in texts for m in re.findall(r"\d+(?:\.\d+)?(?:e[-+]?\d+)?", t)}
+
+
+POOL = _pool()
+
+
+def _value(token: str) -> float:
+    token = token.replace(",", "")
+    if "·10" in token:
+        mantissa, exponent = token.split("·10")
+        return float(mantissa) * 10.0 ** int(exponent.translate(SUPERSCRIPT))
+    return float(token)
+
+
+def _digits(token: str) -> int:
+    """Significant digits as printed: '1.83e-6' -> 3, '0.0012' -> 2, '1.40000' -> 6."""
+    mantissa = re.split(r"e|·10", token.replace(",", ""))[0]
+    return max(len(mantissa.replace(".", "").lstrip("0")), 1)
+
+
+def _same(value: float, token: str) -> bool:
+    """``value`` printed to the precision of ``token`` reads as ``token``."""
+    return math.isclose(float(f"{value:.{_digits(token)}g}"), _value(token), rel_tol=1e-12)
+
+
+# ---------------------------------------------------------------- figures computed here
+@functools.cache
+def _roof() -> dict[str, float]:
+    model = mechloop.load_model(EXAMPLES / "roof_support.yaml")
+    dyn = mechloop.solve_dynamics(model)
+    k = dyn.kinematics
+    force = dyn.to_frame()["F_bal [N]"].to_numpy()
+    least = int(np.argmin(force))
+    ox, oy = k.point([1, 2])  # O2 from D; D is 0.15 m above the floor
+    ex = ox - k.values["r12"] * np.cos(k.values["a12"])
+    ey = oy - k.values["r12"] * np.sin(k.values["a12"]) + 0.15
+    return {"F low MN": force[0] / 1e6, "F least MN": force[least] / 1e6,
+            "leg at least": k.value("r7")[least], "F top MN": force[-1] / 1e6,
+            "F low kN": force[0] / 1e3, "E low": ey[0], "E high": ey[-1],
+            "band mm": np.ptp(ex) * 1e3, "rise": np.ptp(ey)}
+
+
+@functools.cache
+def _swings() -> dict[str, float]:
+    def solved(name):
+        return mechloop.solve(mechloop.load_model(EXAMPLES / name))
+
+    six = solved("six_bar.yaml")
+    rocker = np.degrees(np.ptp(np.unwrap(six.value("a3"))))
+    output = np.degrees(np.ptp(np.unwrap(six.value("a7"))))
+    from mechloop.model.groups import build, mechanism_of
+
+    built = build(mechanism_of(EXAMPLES / "six_bar_groups.yaml"))
+    res = mechloop.solve(built.model)
+    x, _ = built.points["E"].xy(res)
+    bell = np.degrees(np.ptp(np.unwrap(res.value(_bell_crank_angle(built)))))
+    leg = solved("hydraulic_rocker.yaml")
+    return {"six rocker": rocker, "six output": output, "ram mm": np.ptp(x) * 1e3,
+            "bell": bell, "leg swing": np.degrees(np.ptp(np.unwrap(leg.value("a1"))))}
+
+
+def _bell_crank_angle(built) -> str:
+    """The parameter carrying the bell crank C-B's direction in the generated model."""
+    return str(built.dimensions["groups[0].lengths[1]"][0]).replace("r", "a", 1)
+
+
+@functools.cache
+def _published() -> dict[str, float]:
+    from test_benchmark_problems import (
+        PUBLISHED_DESIGNS,
+        SIX,
+        SIX_POINT_DESIGNS,
+        papers_objective,
+    )
+
+    from mechloop.synthesis.problem import SynthesisProblem
+
+    out = {f"five {k}": papers_objective(v) for k, v in PUBLISHED_DESIGNS.items()}
+    problem = SynthesisProblem(mechloop.load_model(ROOT / SIX))
+    for name, (r1, r2, r3, r4, rcx, rcy, x0, y0, theta0) in SIX_POINT_DESIGNS.items():
+        values = {"r1": r2, "r2": r3, "r3": r4, "r4": r1,
+                  "a4": np.degrees(theta0) % 360 + 180, "r6": np.hypot(rcx, rcy),
+                  "a6": np.degrees(np.arctan2(rcy, rcx)), "start1.x": x0, "start1.y": y0}
+        row = np.array([values[n] * (np.pi / 180 if n[0] == "a" else 1e-3)
+                        for n in problem.variables.names])
+        out[f"six {name}"] = float(problem.evaluate(row[None, :]).q[0])
+    return out
+
+
+@functools.cache
+def _slider_crank() -> dict[str, float]:
+    from scipy.optimize import minimize_scalar
+
+    from mechloop.synthesis.classical import slider_crank_from_stroke
+
+    start = slider_crank_from_stroke(200.0, 1.4, offset=100.0)
+
+    def pressure(e: float) -> float:  # the largest pressure angle of the family's member, deg
+        member = slider_crank_from_stroke(200.0, 1.4, offset=e)
+        return float(np.degrees(np.arcsin((member.crank + e) / member.rod)))
+
+    best = minimize_scalar(pressure, bounds=(1e-3, 200.0 / math.tan(math.radians(30.0))),
+                           method="bounded", options={"xatol": 1e-10}).x
+    member = slider_crank_from_stroke(200.0, 1.4, offset=best)
+    return {"start crank": float(start.crank), "start rod": float(start.rod),
+            "start far": abs(float(np.degrees(start.crank_angle_far))),
+            "best e": best, "best crank": float(member.crank), "best rod": float(member.rod)}
+
+
+def _sparse(position: int) -> Callable[[], float]:
+    def value() -> float:
+        res = mechloop.solve(mechloop.load_model(EXAMPLES / "sparse_argument.yaml"))
+        return float(res.to_frame()["arg1 [m]"].iloc[position])
+    return value
+
+
+COMPUTED: dict[str, Callable[[], float]] = {
+    **{key: (lambda key=key: _roof()[key]) for key in (
+        "F low MN", "F least MN", "leg at least", "F top MN", "F low kN", "E low", "E high",
+        "band mm", "rise")},
+    **{key: (lambda key=key: _swings()[key]) for key in (
+        "six rocker", "six output", "ram mm", "bell", "leg swing")},
+    **{key: (lambda key=key: _published()[key]) for key in (
+        "five Cabrera", "five MUMSA", "five IOA", "five HCDJ", "six Cabrera", "six column 7",
+        "six column 8")},
+    **{key: (lambda key=key: _slider_crank()[key]) for key in (
+        "start crank", "start rod", "start far", "best e", "best crank", "best rod")},
+    "sparse 4": _sparse(4), "sparse 5": _sparse(5), "sparse 7": _sparse(7),
+}
+
+# ------------------------------------------------------------------------ the figures
+# (document, pattern with the figure in group "fig", how): how is ("test", "file::name"),
+# ("computed", key of COMPUTED) or ("bench", "benchmarks/x.py", machine-dependent?)
+R = "README.md"
+SCRIPTS = "tests/test_docs_and_cli.py::test_example_scripts_run"
+SLIDER = "tests/test_classical_start.py::test_slider_crank_example_has_its_stroke_and_time_ratio"
+BEATS = "tests/test_benchmark_problems.py::test_the_example_beats_every_published_design"
+FIGURES: list[tuple[str, str, tuple]] = [
+    # energy example (the compressor)
+    (R, r"efficiency \((?P<fig>28) %\)",
+     ("test", "tests/test_readme_commands.py::test_energy_example_prints_a_meaningful_efficiency")),
+    # roof support table and text
+    (R, r"41, exact \| (?P<fig>9\.4) mm \| 4658 kN", ("computed", "band mm")),
+    (R, r"9\.4 mm \| (?P<fig>4658) kN", ("computed", "F low kN")),
+    (R, r"\| 1 \| (?P<fig>17) found", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"(?P<fig>10\.5) mm \(E off", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"up to (?P<fig>3\.1) mm\)", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"(?P<fig>0\.5) ms in NumPy", ("bench", "benchmarks/bench_roof_support.py", True)),
+    (R, r"(?P<fig>4096) \| 41", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"(?P<fig>13\.9) mm \| 4180", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"13\.9 mm \| (?P<fig>4180) kN", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"4180 kN \| (?P<fig>1\.3) s", ("bench", "benchmarks/bench_roof_support.py", True)),
+    (R, r"(?P<fig>15625) \| 41", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"(?P<fig>11\.9) mm \| 3743", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"11\.9 mm \| (?P<fig>3743) kN", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"3743 kN \| (?P<fig>8\.9) s", ("bench", "benchmarks/bench_roof_support.py", True)),
+    (R, r"\| (?P<fig>5948) \| 41", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"\*\*(?P<fig>3\.39) mm\*\*", ("bench", "benchmarks/bench_roof_support.py", False)),
+    (R, r"4300 kN \| (?P<fig>8\.9) s", ("bench", "benchmarks/bench_roof_support.py", True)),
+    (R, r"\((?P<fig>17) of the 41 positions", ("bench", "benchmarks/bench_roof_support.py",
+                                               False)),
+    (R, r"here, (?P<fig>8) for the synthesized", ("bench", "benchmarks/bench_roof_support.py",
+                                                   False)),
+    (R, r"synthesis took (?P<fig>20) s", ("bench", "benchmarks/bench_roof_support.py", True)),
+    (R, r"5-level grid (?P<fig>17) s", ("bench", "benchmarks/bench_roof_support.py", True)),
+    # classical starts
+    (R, r"own Q \((?P<fig>0\.754)°", ("test", SCRIPTS)),
+    (R, r"from it \(Q = (?P<fig>0\.598)°", ("test", SCRIPTS)),
+    (R, r"without it \(Q = (?P<fig>0\.625)°", ("test", SCRIPTS)),
+    (R, r"K = 1\.4 to (?P<fig>1e-5)", ("test", SLIDER)),
+    (R, r"H = 200 mm to (?P<fig>1e-3) mm", ("test", SLIDER)),
+    (R, r"within (?P<fig>0\.01)° of the best member", ("test", SLIDER)),
+    (R, r"family \((?P<fig>57\.368)°", ("test", SLIDER)),
+    # published benchmark problems
+    (R, r"Cabrera GA (?P<fig>1\.83e-6)", ("computed", "five Cabrera")),
+    (R, r"MUMSA (?P<fig>1\.28e-6)", ("computed", "five MUMSA")),
+    (R, r"IOA (?P<fig>4\.27e-6)", ("computed", "five IOA")),
+    (R, r"HCDJ (?P<fig>1\.92e-6)", ("computed", "five HCDJ")),
+    (R, r"\*\*(?P<fig>7\.42e-7)\*\*", ("test", BEATS)),
+    (R, r"Cabrera GA (?P<fig>0\.0258)", ("computed", "six Cabrera")),
+    (R, r"uncertain\) (?P<fig>1\.5e-10)", ("computed", "six column 7")),
+    (R, r"uncertain\) 1\.5e-10 and (?P<fig>3\.1e-11)", ("computed", "six column 8")),
+    (R, r"score (?P<fig>1\.5e-10)", ("computed", "six column 7")),
+    (R, r"score 1\.5e-10 and (?P<fig>3\.1e-11)", ("computed", "six column 8")),
+    (R, r"(?P<fig>7\.1e-6) or 3\.6e-6", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"7\.1e-6 or (?P<fig>3\.6e-6)", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"rounding\): (?P<fig>7\.1e-6)", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"machine, (?P<fig>3\.6e-6) on another", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"reaches only (?P<fig>2\.45e-3)", ("bench", "benchmarks/bench_synthesis.py", False)),
+    # performance
+    (R, r"speedup vs pylinkage: (?P<fig>4\.1)", ("bench", "benchmarks/bench_fourbar.py", True)),
+    (R, r"elsewhere (?P<fig>3\.0)", ("bench", "benchmarks/bench_fourbar.py", True)),
+    (R, r"printed (?P<fig>2\.08)–2\.52", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"2\.08–(?P<fig>2\.52)", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"mechloop (?P<fig>12,900)–", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"12,900–(?P<fig>14,900) designs/s", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"Q = (?P<fig>0\.0012) mm", ("bench", "benchmarks/bench_synthesis.py", False)),
+    (R, r"squares of (?P<fig>7\.1·10⁻⁶) mm²", ("bench", "benchmarks/bench_synthesis.py", True)),
+    (R, r"timing (?P<fig>7\.4·10⁻⁷) mm²", ("bench", "benchmarks/bench_synthesis.py", False)),
+    (R, r"generator (?P<fig>0\.71)° over", ("bench", "benchmarks/bench_synthesis.py", False)),
+    (R, r"it printed (?P<fig>0\.26) s", ("bench", "benchmarks/bench_startup.py", True)),
+    # example headers
+    ("roof_support.yaml", r"E from (?P<fig>1\.434) m", ("computed", "E low")),
+    ("roof_support.yaml", r"to (?P<fig>2\.557) m", ("computed", "E high")),
+    ("roof_support.yaml", r"wanders (?P<fig>9\.4) mm", ("computed", "band mm")),
+    ("roof_support.yaml", r"F_bal = (?P<fig>4\.66) MN", ("computed", "F low MN")),
+    ("roof_support.yaml", r"(?P<fig>3\.55) MN at its least", ("computed", "F least MN")),
+    ("roof_support.yaml", r"\(leg (?P<fig>1\.45) m\)", ("computed", "leg at least")),
+    ("roof_support.yaml", r"(?P<fig>3\.72) MN at the top", ("computed", "F top MN")),
+    ("roof_support_synthesis.yaml", r"design has (?P<fig>1\.12) m", ("computed", "rise")),
+    ("roof_support_synthesis.yaml", r"needs (?P<fig>4658) kN", ("computed", "F low kN")),
+    ("roof_support_synthesis.yaml", r"(?P<fig>5948) designs",
+     ("bench", "benchmarks/bench_roof_support.py", False)),
+    *[("roof_support_synthesis.yaml", p, ("bench", "benchmarks/bench_roof_support.py", False))
+      for p in (r"Q = (?P<fig>1\.69) mm", r"within a (?P<fig>3\.39) mm", r"rises (?P<fig>1\.128)",
+                r"r9 = (?P<fig>0\.915)", r"\((?P<fig>1\.763), 0\.608\)",
+                r"1\.763, (?P<fig>0\.608)\)", r"\((?P<fig>0\.166), 0\.157\)",
+                r"0\.166, (?P<fig>0\.157)\)")],
+    ("roof_support_synthesis.yaml", r"starting design: (?P<fig>9\.4) mm", ("computed", "band mm")),
+    ("six_points_free_timing_synthesis.yaml", r"Q = (?P<fig>2\.45e-3)",
+     ("bench", "benchmarks/bench_synthesis.py", False)),
+    ("six_points_free_timing_synthesis.yaml", r"\((?P<fig>7\.1e-6) or",
+     ("bench", "benchmarks/bench_synthesis.py", True)),
+    ("six_points_free_timing_synthesis.yaml", r"or (?P<fig>3\.6e-6),",
+     ("bench", "benchmarks/bench_synthesis.py", True)),
+    ("six_points_free_timing_synthesis.yaml", r"below (?P<fig>2e-11)",
+     ("test", "tests/test_free_timing.py::test_published_designs_score_as_in_the_papers")),
+    ("slider_crank_stroke_synthesis.yaml", r"crank (?P<fig>85\.5600)", ("computed", "start crank")),
+    ("slider_crank_stroke_synthesis.yaml", r"rod (?P<fig>217\.5328)", ("computed", "start rod")),
+    ("slider_crank_stroke_synthesis.yaml", r"angle (?P<fig>19\.2646)°", ("computed", "start far")),
+    ("slider_crank_stroke_synthesis.yaml", r"20° − (?P<fig>19\.2646)°", ("computed", "start far")),
+    ("slider_crank_stroke_synthesis.yaml", r"Q below (?P<fig>1e-4)°",
+     ("test", SLIDER)),
+    ("slider_crank_stroke_synthesis.yaml", r"200 mm to (?P<fig>1e-3) mm",
+     ("test", SLIDER)),
+    ("slider_crank_stroke_synthesis.yaml", r"K = 1\.4 to (?P<fig>1e-5)",
+     ("test", SLIDER)),
+    ("slider_crank_stroke_synthesis.yaml", r"offset to (?P<fig>1e-3) mm",
+     ("test", SLIDER)),
+    ("slider_crank_stroke_synthesis.yaml", r"within (?P<fig>0\.01)° of the family",
+     ("test", SLIDER)),
+    ("slider_crank_stroke_synthesis.yaml", r"smallest, (?P<fig>57\.368)°",
+     ("test", SLIDER)),
+    ("slider_crank_stroke_synthesis.yaml", r"e = (?P<fig>64\.199)", ("computed", "best e")),
+    ("slider_crank_stroke_synthesis.yaml", r"crank (?P<fig>90\.993)", ("computed", "best crank")),
+    ("slider_crank_stroke_synthesis.yaml", r"rod (?P<fig>184\.280)", ("computed", "best rod")),
+    ("slider_crank_stroke_synthesis.yaml", r"within (?P<fig>0\.01)° of that",
+     ("test", SLIDER)),
+    ("six_bar.yaml", r"(?P<fig>47) deg swing of the first", ("computed", "six rocker")),
+    ("six_bar.yaml", r"a (?P<fig>62) deg swing", ("computed", "six output")),
+    ("six_bar_groups.yaml", r"the (?P<fig>47) deg swing of the bell", ("computed", "bell")),
+    ("six_bar_groups.yaml", r"a (?P<fig>155) mm stroke", ("computed", "ram mm")),
+    ("hydraulic_rocker.yaml", r"about (?P<fig>81) deg", ("computed", "leg swing")),
+    ("sparse_argument.yaml", r"(?P<fig>0\.1667) 0\.2133", ("computed", "sparse 4")),
+    ("sparse_argument.yaml", r"0\.1667 (?P<fig>0\.2133)", ("computed", "sparse 5")),
+    ("sparse_argument.yaml", r"0\.26 (?P<fig>0\.24) 0\.22", ("computed", "sparse 7")),
+    ("sparse_argument.yaml", r"at (?P<fig>81\.6) deg",
+     ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
+    ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
+     ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
+]
+
+# (document or None for any, pattern, why it is not a result)
+INPUTS: list[tuple[str | None, str, str]] = [
+    (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
+           r"|part \d|table [\d.]+))*", "a section of the course's seed documents"),
+    (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
+    (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
+    (R, r"\d+ positions per design", "the benchmark's setting"),
+    (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
+    (R, r"port 8786", "dask's default port"),
+    (R, r"0666 less the umask|1,048,575 rows|16,384 columns",
+     "the POSIX default file mode and Excel's sheet limits (constants of mechloop.output)"),
+    (R, r"blocks \(8192", "the block size in mechloop.solve"),
+    (R, r"\d+ unknowns, \d+ equations", "counts of the source's formulation"),
+    (R, r"41, exact|of the 41 positions", "the example's positions 0..40"),
+    (R, r"\d+ × \d+ lever angles at \d°, kept where 0\.72 ≤ L² ≤ 0\.73 m²|"
+        r"\d+ levels × \d+ dimensions|8100 pairs", "the seed's tabulation and the grids"),
+    (R, r"\d+ generations", "a search setting of the example"),
+    (R, r"10⁶|1st|2nd", "an order of magnitude or an ordinal"),
+    (R, r"\d+°\)|over 720°|in \[0°, 360°\)|at \d+°|over 60°", "an angle of a definition"),
+    (R, r"K = 1\.4", "the task's time ratio"),
+    ("crank_slider_friction.yaml", r"pins of 15 mm", "the friction radius, 0.015 m"),
+    ("roof_support.yaml", r"leg 1\.30 m", "where the drawing is"),
+    ("roof_support.yaml", r"0\.725\)", "O2's height: 0.15 + 0.575 m, the base vectors"),
+    (None, r"0\.72 ?(<=|\.\.)( L\^2 <=)? ?0\.73 m\^2(, and 0\.85\^2 = 0\.7225)?",
+     "the seed's tabulation window"),
+    (None, r"8100 combinations|41 positions", "the seed's grid; the example's positions"),
+    ("hydraulic_rocker.yaml", r"law in 4 s", "the argument's law ends at 4 s"),
+    ("single_cylinder_engine.yaml", r"0\.09 MPa|n = 1\.35|5\.5 MPa at 370 deg|n = 1\.25|"
+     r"0\.11 MPa from 540 deg", "the assumed indicator diagram behind the gas-force table"),
+    ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
+    ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
+]
+
+
+# ------------------------------------------------------------------------------ checks
+def _in_code(paragraph: str, start: int) -> bool:
+    return paragraph[:start].count("`") % 2 == 1
+
+
+def _entries(document: str, table: list) -> list:
+    return [e for e in table if e[0] is None or e[0] == document]
+
+
+def _spans(document: str, paragraph: str) -> tuple[list, list]:
+    figures = [(m.span("fig"), entry) for entry in _entries(document, FIGURES)
+               for m in re.finditer(entry[1], paragraph)]
+    inputs = [m.span() for entry in _entries(document, INPUTS)
+              for m in re.finditer(entry[1], paragraph)]
+    return figures, inputs
+
+
+def test_every_number_is_accounted_for():
+    unaccounted = []
+    for document, _, paragraph in PARAGRAPHS:
+        figures, inputs = _spans(document, paragraph)
+        for m in NUMBER.finditer(paragraph):
+            a, b = m.span(1)
+            if any(fa <= a and b <= fb for (fa, fb), _ in figures):
+                continue
+            if _in_code(paragraph, a) or any(ia <= a and b <= ib for ia, ib in inputs):
+                continue
+            token, value = m.group(1), _value(m.group(1))
+            timey = TIMEY.match(paragraph, b)
+            if not timey and ((value == int(value) and value <= 12) or value in POOL):
+                continue
+            unaccounted.append(f"{document}: {token!r} in …{paragraph[max(0, a - 50):b + 20]}…")
+    assert not unaccounted, "numbers nobody checks (add to FIGURES or INPUTS):\n" + \
+        "\n".join(unaccounted)
+
+
+def test_no_entry_is_stale():
+    for table in (FIGURES, INPUTS):
+        for entry in table:
+            assert any(re.search(entry[1], p) for d, _, p in PARAGRAPHS
+                       if entry[0] is None or entry[0] == d), f"matches nothing: {entry[:2]}"
+
+
+def _found_figures() -> list[tuple[str, str, str, tuple]]:
+    out = []
+    for document, section, paragraph in PARAGRAPHS:
+        for entry in _entries(document, FIGURES):
+            for m in re.finditer(entry[1], paragraph):
+                out.append((document, section, m.group("fig"), entry[2]))
+    return out
+
+
+FOUND = _found_figures()
+
+
+def _numbers_in_source(source: str) -> list[float]:
+    numbers = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Constant) and isinstance(node.value, int | float):
+            numbers.append(float(node.value))
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str):
+            numbers += [float(t) for t in re.findall(r"\d+\.\d+|\d+e-\d+", node.value)]
+    return numbers
+
+
+@pytest.mark.parametrize(("document", "section", "figure", "how"),
+                         [f for f in FOUND if f[3][0] == "test"],
+                         ids=lambda v: v if isinstance(v, str) and len(v) < 20 else "")
+def test_figure_is_pinned_by_its_test(document, section, figure, how):
+    path, name = how[1].split("::")
+    tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
+    func = next((n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)
+                 and n.name == name), None)
+    assert func is not None, f"{how[1]} does not exist"
+    used = {n.id for n in ast.walk(func) if isinstance(n, ast.Name)}
+    constants = [node for node in tree.body if isinstance(node, ast.Assign | ast.AnnAssign)
+                 and any(isinstance(t, ast.Name) and t.id in used for t in (
+                     node.targets if isinstance(node, ast.Assign) else [node.target]))]
+    source = "\n".join(ast.unparse(n) for n in [func, *constants])  # with its module's tables
+    assert any(_same(v, figure) for v in _numbers_in_source(source)), (
+        f"{how[1]} does not pin {figure}")
+
+
+@pytest.mark.parametrize(("document", "section", "figure", "how"),
+                         [f for f in FOUND if f[3][0] == "computed"],
+                         ids=lambda v: v if isinstance(v, str) and len(v) < 20 else "")
+def test_figure_is_what_the_model_gives(document, section, figure, how):
+    value = COMPUTED[how[1]]()
+    assert _same(value, figure), f"{document}: {figure} is {value:.6g} ({how[1]})"
+
+
+@pytest.mark.parametrize(("document", "section", "figure", "how"),
+                         [f for f in FOUND if f[3][0] == "bench"],
+                         ids=lambda v: v if isinstance(v, str) and len(v) < 20 else "")
+def test_figure_is_printed_by_a_named_benchmark(document, section, figure, how):
+    script = ROOT / how[1]
+    assert script.exists()
+    assert "print(" in script.read_text(encoding="utf-8")
+    assert script.name in section, f"{document} does not name {script.name} with {figure}"
+    if how[2]:
+        assert "machine" in section, f"{document}: {figure} is machine-dependent; say so"
