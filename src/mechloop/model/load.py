@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -21,7 +21,8 @@ from pydantic import ValidationError
 
 from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
-from mechloop.model.schema import Model
+from mechloop.model.limits import check_events, read_text
+from mechloop.model.schema import MAX_POSITIONS, Model
 from mechloop.model.signals import read_csv_table
 
 T = TypeVar("T")
@@ -37,6 +38,12 @@ def _construct_mapping(loader: _Loader, node: yaml.MappingNode, deep: bool = Fal
     mapping: dict[Any, Any] = {}
     for key_node, value_node in node.value:
         key = loader.construct_object(key_node, deep=deep)
+        if not isinstance(key, Hashable):
+            error = yaml.constructor.ConstructorError(
+                "while reading a mapping", node.start_mark,
+                "found a list or mapping as a key", key_node.start_mark)
+            error.hint = "a key is a name or a number: write 'key: value'"  # type: ignore[attr-defined]
+            raise error
         if key in mapping:
             raise yaml.constructor.ConstructorError(
                 "while reading a mapping", node.start_mark,
@@ -83,14 +90,15 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
     """Parse a YAML/JSON file into plain data and a map of lines; errors name the line."""
     file = str(path)
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        text = read_text(path)
     except FileNotFoundError:
         raise ModelFileError([Problem((), "file not found",
                                       "check the path (mechloop check examples/... )")],
                              file) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ModelFileError([Problem((), f"cannot read the file: {exc}",
-                                      "save it as UTF-8 text")], file) from None
+    except OSError as exc:
+        raise ModelFileError([Problem((), f"cannot read the file: {exc.strerror or exc}",
+                                      "check the path and its permissions")], file) from None
+    check_events(text, file)
     try:
         loader = _Loader(text)
         try:
@@ -108,9 +116,9 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
         if context and context_mark is not None and context_mark is not mark:
             context += f" that starts at line {context_mark.line + 1}"
         message = f"YAML syntax error: {what}" + (f" ({context})" if context else "")
-        raise ModelFileError([Problem((), message, "fix the YAML syntax at that line "
-                                      "(indentation, a missing ':' or an unclosed bracket)",
-                                      line)], file) from None
+        hint = getattr(exc, "hint", None) or ("fix the YAML syntax at that line (indentation, "
+                                              "a missing ':' or an unclosed bracket)")
+        raise ModelFileError([Problem((), message, hint, line)], file) from None
     if not isinstance(data, dict):
         raise ModelFileError([Problem((), "the file does not hold a model mapping",
                                       "start with keys like 'positions:', 'vectors:' and "
@@ -154,6 +162,10 @@ _HINTS = {
     "greater_than_equal": "use a larger value",
     "greater_than": "use a larger value",
     "too_short": "add more items",
+    "less_than_equal": "use a smaller value",
+    "less_than": "use a smaller value",
+    "number_range": "write a finite number of a physical size (model units)",
+    "quantity_length": "write a number and a unit, e.g. '50 mm'",
     "string_pattern_mismatch": "write the parameter as 'a' or 'r' and a vector number, "
                                "e.g. 'a2'",
 }
@@ -179,6 +191,9 @@ def _describe(error: dict[str, Any]) -> tuple[str, str]:
     elif kind == "int_parsing" and loc and loc[-1] == "[key]":
         message = "a table position must be a whole number"
         hint = "write positions as 0, 1, 2, ..."
+    elif kind == "less_than_equal" and tuple(loc) == ("positions",):
+        message = f"{error['input']} positions; a model has at most {MAX_POSITIONS:,}"
+        hint = "use fewer positions (a smooth curve needs a few hundred to a few thousand)"
     elif kind == "time_form":
         hint = "e.g. time: {rpm: 3000} or time: {table: {0: 0, 36: 0.03}}"
     return message, hint
