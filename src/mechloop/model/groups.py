@@ -91,7 +91,7 @@ from mechloop.model.dynamic import (
     VectorPoint,
 )
 from mechloop.model.schema import Model, Units
-from mechloop.model.signals import Argument, Scalar, Time, _Frozen
+from mechloop.model.signals import Argument, Number, Scalar, Time, _Frozen
 from mechloop.model.synthesis import (
     Dimension,
     MotionTask,
@@ -270,7 +270,7 @@ class Share(_Frozen):
     """A point on the link's line: ``share`` of the way from its first to its second
     point."""
 
-    share: float = Field(description="0 = the first point of the line, 1 = the second")
+    share: Number = Field(description="0 = the first point of the line, 1 = the second")
 
 
 Place = Annotated[
@@ -771,9 +771,10 @@ class _Builder:
         it cannot be read."""
         unit = getattr(self.units, kind)
         try:
+            si = to_si(value, kind, unit)  # refuses unreadable, non-finite, absurd values
             out = _plain(value)
             if out is None:  # a quantity with its own unit: to SI, then to the model's
-                out = to_si(value, kind, unit) / unit_factor(unit, kind)
+                out = si / unit_factor(unit, kind)
         except UnitProblem as exc:
             self.problems.append(Problem(path, exc.message, exc.hint))
             return 0.0
@@ -1807,12 +1808,10 @@ def _plain(value: Scalar) -> float | None:
 
 
 def _tidy(angle: float, half: float) -> float:
-    """An angle folded into (−half, half] (half a turn in model units) by whole turns."""
-    while angle > half:
-        angle -= 2 * half
-    while angle <= -half:
-        angle += 2 * half
-    return angle
+    """An angle folded into (−half, half] (half a turn in model units) by whole turns
+    (exactly, in one step: :func:`math.remainder`)."""
+    folded = math.remainder(angle, 2 * half)
+    return half if folded == -half else folded
 
 
 def _choose(name: str, options: list[str], what: str | None = None) -> str:

@@ -32,9 +32,12 @@ from mechloop.model.dynamic import (
     TailPoint,
 )
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
+    MAX_POSITIONS,
     Argument,
     LawArgument,
     LawName,
+    Number,
+    QuantityText,
     RpmTime,
     Scalar,
     TableArgument,
@@ -92,9 +95,9 @@ def _param_tag(value: Any) -> str | None:
 
 
 Param = Annotated[
-    Annotated[float, Tag("constant")]
+    Annotated[Number, Tag("constant")]
     | Annotated[Literal["function"], Tag("function")]
-    | Annotated[str, Tag("quantity"), WithJsonSchema({
+    | Annotated[QuantityText, Tag("quantity"), WithJsonSchema({
         "type": "string", "pattern": r"^(?!\s*function\s*$)",
         "description": "a number with its unit, e.g. '50 mm' or '90 deg'"})]
     | Annotated[ArgumentRole, Tag("argument")]
@@ -157,7 +160,8 @@ class Model(_Frozen):
     name: str = ""
     description: str = ""
     units: Units = Units()
-    positions: int = Field(ge=1, description="N: calculation positions are 0..N")
+    positions: int = Field(ge=1, le=MAX_POSITIONS, description="N: calculation positions "
+                           "are 0..N (at most 10⁸)")
     time: Time | None = Field(
         None, description="model time; without it derivatives are analogs with respect to "
         "argument 1"

@@ -9,8 +9,17 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
-#: A constant: a number in the model's units, or a string with its own unit ("50 mm").
-Scalar = float | str
+from mechloop.model.numbers import (  # noqa: F401  (QuantityText, Scalar: re-exported)
+    RANGE,
+    Number,
+    QuantityText,
+    Scalar,
+    usable,
+)
+
+#: Largest ``positions`` (N) of a model: 10⁸ positions; what a solve needs in memory is
+#: checked against the machine before solving (:func:`mechloop.solve.memory.require_memory`).
+MAX_POSITIONS = 100_000_000
 
 
 class _Frozen(BaseModel):
@@ -112,15 +121,16 @@ class RpmTime(_Frozen):
     """Model time from a speed: ``turns`` full turns (default one) over positions ``0..N``,
     ``t = 60·turns/n · k/N``."""
 
-    rpm: float = Field(gt=0, description="speed of the input, revolutions per minute")
-    turns: float = Field(1.0, gt=0, description="turns of the input over positions 0..N "
+    rpm: Number = Field(gt=0, le=1e6, description="speed of the input, revolutions per "
+                        "minute (at most 10⁶)")
+    turns: Number = Field(1.0, gt=0, le=1e6, description="turns of the input over positions 0..N "
                          "(2 for a four-stroke cycle over 720 degrees)")
 
 
 class TableTime(_Frozen):
     """Model time as a table ``{position: seconds}`` filled like an argument table."""
 
-    table: _table_of(float)
+    table: _table_of(Number)
     derivatives: TableDerivatives = Field(
         "linear", description="how dt/dposition is taken: 'linear' or 'spline' (as for "
         "argument tables)")
@@ -179,6 +189,12 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
         row = int(bad.to_numpy().nonzero()[0][0]) + 2  # 1-based, after the header
         raise ValueError(f"{path}, line {row}: not a position number and a value",
                          "every row is an integer position and a number")
+    wild = ~values.map(lambda v: usable(float(v)))
+    if wild.any():
+        row = int(wild.to_numpy().nonzero()[0][0])
+        raise ValueError(f"{path}, line {row + 2}: {values.iloc[row]} is outside the range of "
+                         f"a model value ({RANGE})",
+                         "write a finite number of a physical size (model units)")
     table = {int(k): float(v) for k, v in zip(positions, values, strict=True)}
     out: dict[str, Any] = {"table": table, "derivatives": spec.get("derivatives", "linear")}
     if spec.get("unit") is not None:

@@ -6,9 +6,12 @@ The core never sees a unit: lengths are metres and angles radians once a model i
 from __future__ import annotations
 
 import functools
+import math
 from typing import Literal
 
 import pint
+
+from mechloop.model.numbers import MAX_QUANTITY_CHARS, RANGE, usable
 
 Kind = Literal["length", "angle", "mass", "inertia", "force", "moment", "acceleration"]
 
@@ -69,15 +72,22 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
     """Convert a model-file value to SI.
 
     ``value`` is a number in ``default_unit`` or a string with its own unit ("50 mm").
-    Raises :class:`UnitProblem` for an unreadable string or a unit of the wrong kind.
+    Raises :class:`UnitProblem` for an unreadable string, a unit of the wrong kind, or a
+    value that is not finite or larger than :data:`~mechloop.model.numbers.MAX_MAGNITUDE`
+    (in the file's units or in SI).
     """
     if not isinstance(value, str):
-        return float(value) * unit_factor(default_unit, kind)
+        return _usable(float(value), value, kind, unit_factor(default_unit, kind))
     text = value.strip()
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise UnitProblem(f"a quantity of {len(text)} characters",
+                          f"write a number and a unit like '{SAMPLE[kind]}'")
     try:
-        return float(text) * unit_factor(default_unit, kind)
+        number = float(text)
     except ValueError:
         pass
+    else:
+        return _usable(number, value, kind, unit_factor(default_unit, kind))
     try:
         qty = registry().Quantity(text)
     except Exception as exc:  # pint raises many types for unreadable text
@@ -93,4 +103,17 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
     if not _is_kind(qty.units, kind):
         raise UnitProblem(f"{value!r} is not {_a(kind)}",
                           f"use a {kind} unit: {EXAMPLES[kind]}")
-    return float(qty.to(SI_UNIT[kind]).magnitude)
+    return _usable(float(qty.magnitude), value, kind,
+                   float(qty.to(SI_UNIT[kind]).magnitude) / float(qty.magnitude)
+                   if usable(float(qty.magnitude)) and qty.magnitude != 0 else 1.0)
+
+
+def _usable(number: float, value: float | str, kind: Kind, factor: float) -> float:
+    """``number · factor`` (SI), or a :class:`UnitProblem` when ``number`` or the result is
+    not finite or larger than :data:`~mechloop.model.numbers.MAX_MAGNITUDE`."""
+    si = number * factor if usable(number) else math.inf
+    if not usable(si):
+        raise UnitProblem(f"{value!r} is outside the range of {_a(kind)} ({RANGE}, in the "
+                          f"file's units and in {SI_UNIT[kind]})",
+                          f"write {_a(kind)} like '{SAMPLE[kind]}'")
+    return si

@@ -1,0 +1,60 @@
+"""The numbers a model file may hold: finite, of a sane size, and short quantity strings.
+
+Every numeric field of the schema uses :data:`Number` (a plain number) or
+:data:`Scalar` (a number, or a string with its unit such as ``"50 mm"``), so a ``.inf``,
+a ``.nan`` or a ``1e200`` is refused where it enters, with its place in the file:
+
+* a number is finite and at most :data:`MAX_MAGNITUDE` (1e12) in size, in the model's
+  units — a kilometre in micrometres is 1e9, so real models stay far inside, while the
+  squares and products the solvers form stay finite;
+* a quantity string is at most :data:`MAX_QUANTITY_CHARS` (100) characters (pint's parser
+  is slow on long unreadable text); its value is checked the same way once converted
+  (:func:`mechloop.model.units.to_si`).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated
+
+from pydantic import AfterValidator
+from pydantic_core import PydanticCustomError
+
+#: Largest magnitude of a number in a model file (in the model's units) and in SI.
+MAX_MAGNITUDE = 1e12
+#: Longest quantity string such as ``"50 mm"``, characters.
+MAX_QUANTITY_CHARS = 100
+
+RANGE = "a finite number between -1e12 and 1e12"  # MAX_MAGNITUDE
+
+
+def usable(value: float) -> bool:
+    """Whether ``value`` is finite and at most :data:`MAX_MAGNITUDE` in size."""
+    return math.isfinite(value) and abs(value) <= MAX_MAGNITUDE
+
+
+def _number(value: float) -> float:
+    if not usable(value):
+        raise PydanticCustomError("number_range", "{value} is outside the range of a model "
+                                  "value (" + RANGE + ")", {"value": value})
+    return value
+
+
+def _scalar(value: float | str) -> float | str:
+    if isinstance(value, str):
+        if len(value) > MAX_QUANTITY_CHARS:
+            raise PydanticCustomError(
+                "quantity_length", "a quantity of {length} characters (a number and a unit "
+                "are at most " + str(MAX_QUANTITY_CHARS) + ")", {"length": len(value)})
+        return value
+    return _number(value)
+
+
+#: A plain number: finite, at most 1e12 in size.
+Number = Annotated[float, AfterValidator(_number)]
+
+#: A constant: a number in the model's units, or a string with its own unit ("50 mm").
+Scalar = Annotated[float | str, AfterValidator(_scalar)]
+
+#: A quantity string alone (the string branch of a tagged union).
+QuantityText = Annotated[str, AfterValidator(_scalar)]

@@ -1,0 +1,88 @@
+"""Non-finite and absurd numbers are refused where they enter the model, with the file,
+line, key and the range a value must lie in (issue 10, part 1)."""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+
+import pytest
+
+from mechloop import ModelError, load_model
+from mechloop.model.groups import _tidy
+from mechloop.model.numbers import MAX_MAGNITUDE
+from mechloop.model.units import UnitProblem, to_si
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+CRANK = (EXAMPLES / "crank_slider.yaml").read_text()
+DYN = (EXAMPLES / "crank_slider_dynamics.yaml").read_text()
+GROUPS = (EXAMPLES / "four_bar_groups.yaml").read_text()
+
+
+def _line(text: str, fragment: str) -> int:
+    return text[:text.index(fragment)].count("\n") + 1
+
+
+# name, base text, what to replace, by what, path of the problem, words in the message
+CASES = [
+    ("rpm_inf", CRANK, "rpm: 3000", "rpm: .inf", ("time", "rpm"), "less than or equal"),
+    ("rpm_huge", CRANK, "rpm: 3000", "rpm: 1.0e9", ("time", "rpm"), "1000000"),
+    ("gravity_nan", DYN, "g: 9.81", "g: .nan", ("gravity", "g"), "finite number"),
+    ("mass_inf", DYN, "mass: 2,", "mass: .inf,", ("bodies", 1, "mass"), "finite number"),
+    ("table_nan", CRANK, "72: 360}", "72: .nan}", ("arguments", 1, "table", 72),
+     "finite number"),
+    ("force_table_inf", DYN, "value: 1000,", "value: {table: {0: 1, 72: .inf}},",
+     ("forces", 0, "value", "table", 72), "finite number"),
+    ("length_1e200", CRANK, "r: 0.05,", "r: 1e200,", ("vectors", 1, "r"), "range of a length"),
+    ("length_float_1e200", CRANK, "r: 0.05,", "r: 1.0e+200,", ("vectors", 1, "r"),
+     "finite number"),
+    ("quantity_overflow", CRANK, "r: 0.05,", "r: 5e400 mm,", ("vectors", 1, "r"),
+     "range of a length"),
+    ("quantity_too_long", CRANK, "r: 0.05,", f"r: '{'1' * 200} mm',", ("vectors", 1, "r"),
+     "203 characters"),
+    ("group_angle_huge", GROUPS, "angle: 30}", "angle: 1e20}", ("points", "P", "angle"),
+     "range of an angle"),
+    ("group_angle_big_int", GROUPS, "angle: 30}", "angle: 100000000000000000000}",
+     ("points", "P", "angle"), "finite number"),
+]
+
+
+@pytest.mark.parametrize(("base", "old", "new", "path", "words"),
+                         [c[1:] for c in CASES], ids=[c[0] for c in CASES])
+def test_value_refused_where_it_enters(tmp_path, base, old, new, path, words):
+    file = tmp_path / "m.yaml"
+    file.write_text(base.replace(old, new, 1))
+    start = time.perf_counter()
+    with pytest.raises(ModelError) as info:
+        load_model(file)
+    assert time.perf_counter() - start < 3.0
+    problem = next(p for p in info.value.problems if p.path == path)
+    assert words in problem.message
+    assert problem.line == _line(base, old) and problem.hint
+
+
+def test_csv_inf_is_refused_with_the_csv_line(tmp_path):
+    (tmp_path / "arg.csv").write_text("position,angle\n0,0\n36,inf\n72,360\n")
+    file = tmp_path / "m.yaml"
+    file.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: arg.csv}"))
+    with pytest.raises(ModelError) as info:
+        load_model(file)
+    (problem,) = info.value.problems
+    assert problem.path == ("arguments", 1) and problem.line == _line(CRANK, "1: {table")
+    assert "arg.csv, line 3: inf" in problem.message and "finite" in problem.message
+
+
+def test_to_si_refuses_values_out_of_range_in_file_units_or_si():
+    assert to_si("1e12", "length", "m") == MAX_MAGNITUDE
+    for value, unit in (("1e11 km", "m"), ("nan", "mm"), (math.inf, "m"), ("-1e13", "m")):
+        with pytest.raises(UnitProblem, match="outside the range"):
+            to_si(value, "length", unit)
+
+
+@pytest.mark.parametrize("angle", [1e20, -1e20, 7230.0, -180.0, 180.0, 540.0, 0.0])
+def test_tidy_folds_any_angle_in_one_step(angle):
+    folded = _tidy(angle, 180.0)
+    assert -180.0 < folded <= 180.0
+    assert math.isclose(math.remainder(folded - angle, 360.0), 0.0, abs_tol=1e-9 * abs(angle)
+                        + 1e-12)
