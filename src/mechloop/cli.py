@@ -49,6 +49,9 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         try:
             return func(*args, **kwargs)
         except MechloopError as exc:
+            if isinstance(exc, ModelError) and exc.file is None and isinstance(
+                    kwargs.get("model"), Path):  # raised by a solver: name file and line
+                exc = locate(exc, kwargs["model"])
             err.print(f"[bold red]error:[/] {exc}", markup=True, soft_wrap=True)
             raise typer.Exit(code=2) from None
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 from difflib import get_close_matches
 
 from mechloop.errors import ModelError, Problem
+from mechloop.model.dynamic import VectorPoint
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument
 from mechloop.model.structure import Structure, analyze
 from mechloop.model.synthesis import check_synthesis
@@ -40,6 +41,7 @@ def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     problems = _check_units(model) + problems
     problems += _check_arguments(model)
     problems += _check_time(model)
+    problems += _check_loads(model)
     problems += check_synthesis(model)
     return structure, problems
 
@@ -113,25 +115,90 @@ def _check_arguments(model: Model) -> list[Problem]:
         except UnitProblem as exc:
             problems.append(_unit_problem((*path, "unit"), exc))
             continue
-        if isinstance(arg, TableArgument):
-            problems += _check_table(arg.table, n, (*path, "table"), kind, unit)
-        elif isinstance(arg, LawArgument):
-            (k0, v0), (k1, v1) = arg.start, arg.end
-            for key, k in (("start", k0), ("end", k1)):
-                if not 0 <= k <= n:
-                    problems.append(Problem((*path, key, 0), f"{key} position {k} is outside "
-                                            f"the calculation positions 0..{n}",
-                                            f"use a position between 0 and {n}"))
-            if k1 <= k0:
-                problems.append(Problem((*path, "end", 0), f"the law ends at position {k1}, "
-                                        f"not after its start {k0}",
-                                        "make the end position larger than the start"))
-            for key, v in (("start", v0), ("end", v1)):
-                try:
-                    to_si(v, kind, unit)
-                except UnitProblem as exc:
-                    problems.append(_unit_problem((*path, key, 1), exc))
+        problems += _check_signal(arg, n, path, kind, unit)
     return problems
+
+
+def _check_signal(arg, n: int, path: tuple, kind: Kind, unit: str) -> list[Problem]:
+    """The problems of a table or a law (of an argument or a load) over positions 0..n."""
+    problems: list[Problem] = []
+    if isinstance(arg, TableArgument):
+        problems += _check_table(arg.table, n, (*path, "table"), kind, unit)
+    elif isinstance(arg, LawArgument):
+        (k0, v0), (k1, v1) = arg.start, arg.end
+        for key, k in (("start", k0), ("end", k1)):
+            if not 0 <= k <= n:
+                problems.append(Problem((*path, key, 0), f"{key} position {k} is outside "
+                                        f"the calculation positions 0..{n}",
+                                        f"use a position between 0 and {n}"))
+        if k1 <= k0:
+            problems.append(Problem((*path, "end", 0), f"the law ends at position {k1}, "
+                                    f"not after its start {k0}",
+                                    "make the end position larger than the start"))
+        for key, v in (("start", v0), ("end", v1)):
+            try:
+                to_si(v, kind, unit)
+            except UnitProblem as exc:
+                problems.append(_unit_problem((*path, key, 1), exc))
+    return problems
+
+
+def _check_loads(model: Model) -> list[Problem]:
+    """Units, tables and laws of the forces, moments and gravity; every point given on a
+    vector (in bodies, joints and forces) with a readable length."""
+    problems: list[Problem] = []
+    units = model.units
+    for key, kind in (("forces", "force"), ("moments", "moment")):
+        for i, load in enumerate(getattr(model, key)):
+            path = (key, i, "value")
+            value = load.value
+            try:
+                if isinstance(value, TableArgument | LawArgument):
+                    unit = value.unit or getattr(units, kind)
+                    unit_factor(unit, kind)
+                    problems += _check_signal(value, model.positions, path, kind, unit)
+                elif isinstance(value, int | float | str):
+                    to_si(value, kind, getattr(units, kind))
+            except UnitProblem as exc:
+                problems.append(_unit_problem(path, exc))
+            if kind == "force":
+                problems += _check_values([((key, i, "angle"), load.angle, "angle")], units)
+    if model.gravity is not None:
+        problems += _check_values([(("gravity", "g"), model.gravity.g, "acceleration"),
+                                   (("gravity", "angle"), model.gravity.angle, "angle")],
+                                  units)
+    for path, point in _points(model):
+        if isinstance(point, VectorPoint):
+            values = [((*path, "across"), point.across, "length")]
+            if point.along is not None:
+                values.append(((*path, "along"), point.along, "length"))
+            problems += _check_values(values, units)
+    return problems
+
+
+def _check_values(values: list[tuple[tuple, float | str, Kind]], units) -> list[Problem]:
+    problems = []
+    for path, value, kind in values:
+        try:
+            to_si(value, kind, getattr(units, kind))
+        except UnitProblem as exc:
+            problems.append(_unit_problem(path, exc))
+    return problems
+
+
+def _points(model: Model) -> list[tuple[tuple, object]]:
+    """Every point of the dynamic part with its path: centres, pins, points of forces."""
+    out: list[tuple[tuple, object]] = []
+    for number, body in model.bodies.items():
+        if body.center is not None:
+            out.append((("bodies", number, "center"), body.center))
+        out += [(("bodies", number, "parts", i, "center"), part.center)
+                for i, part in enumerate(body.parts)]
+    for name, joint in (model.joints or {}).items():
+        if joint.at is not None:
+            out.append((("joints", name, "at"), joint.at))
+    out += [(("forces", i, "at"), force.at) for i, force in enumerate(model.forces)]
+    return out
 
 
 def _check_table(table, n: int, path: tuple, kind: Kind | None, unit: str | None

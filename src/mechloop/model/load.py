@@ -22,6 +22,7 @@ from pydantic import ValidationError
 from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
 from mechloop.model.limits import check_events, read_text
+from mechloop.model.salvage import salvage
 from mechloop.model.schema import MAX_POSITIONS, Model
 from mechloop.model.signals import read_csv_table
 
@@ -139,6 +140,9 @@ def _data_path(loc: tuple, data: Any) -> tuple:
     for i, key in enumerate(loc):
         if isinstance(current, dict):
             match = next((k for k in current if k == key or str(k) == str(key)), _MISSING)
+            if match is not _MISSING and i < len(loc) - 1 and loc[i + 1] in current \
+                    and not isinstance(current[match], dict | list | tuple):
+                continue  # a union tag that is also a key (time: {rpm: ...}): not a step
             if match is not _MISSING:
                 path.append(match)
                 current = current[match]
@@ -233,6 +237,12 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
         return model_from_group_data(data, file=file, lines=lines)
     model, problems = validate_data(Model, data, file)
     if problems:
+        base = Path(file).resolve().parent if file else Path.cwd()
+        tables, unread = _import_csv_tables(data, base)
+        partial, dropped = salvage(tables, problems) if not unread else (None, frozenset())
+        if partial is not None:  # what else is wrong, in the parts that validated
+            problems += [p for p in check_model(partial)[1]
+                         if not (p.path and str(p.path[0]) in dropped)]
         raise located_error(problems, file, lines)
     _, problems = check_model(model)
     if problems:
