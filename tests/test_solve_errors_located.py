@@ -160,3 +160,14 @@ def test_structure_is_not_checked_on_a_broken_core(tmp_path):
     with pytest.raises(ModelError) as info:
         load_model(file)
     assert [p.path for p in info.value.problems] == [("vectors", 1, "a")]
+
+
+def test_design_batches_are_checked_against_memory(monkeypatch):
+    from mechloop.solve.designs import solve_designs
+
+    model = load_model(EXAMPLES / "crank_slider.yaml")
+    per_design = memory.estimate_bytes(model, dynamics=False)
+    monkeypatch.setattr(memory, "available_memory", lambda: 100 * per_design)
+    assert solve_designs(model, {"r1": [0.05] * 10}).values["a2"].shape == (10, 73)
+    with pytest.raises(ModelSolveError, match="of 1,000 designs"):
+        solve_designs(model, {"r1": [0.05] * 1000})

@@ -49,28 +49,33 @@ def bytes_per_position(model, *, dynamics: bool) -> int:
     return size
 
 
-def estimate_bytes(model, *, dynamics: bool) -> int:
-    """Estimated peak bytes of solving ``model`` (its kinematics, and with ``dynamics``
-    its force analysis) over positions 0..N."""
-    return (model.positions + 1) * bytes_per_position(model, dynamics=dynamics)
+def estimate_bytes(model, *, dynamics: bool, designs: int = 1) -> int:
+    """Estimated peak bytes of solving ``designs`` designs of ``model`` (its kinematics,
+    and with ``dynamics`` its force analysis) over positions 0..N."""
+    return designs * (model.positions + 1) * bytes_per_position(model, dynamics=dynamics)
 
 
-def require_memory(model, *, dynamics: bool = False, available: int | None = None) -> None:
+def require_memory(model, *, dynamics: bool = False, designs: int = 1,
+                   available: int | None = None) -> None:
     """Raise a :class:`~mechloop.errors.ModelSolveError` at ``positions`` when solving
-    ``model`` would need more memory than the machine has available (``available``
-    bytes; read from the system when None)."""
+    ``designs`` designs of ``model`` would need more memory than the machine has
+    available (``available`` bytes; read from the system when None)."""
     available = available_memory() if available is None else available
     if available is None:
         return
-    need = estimate_bytes(model, dynamics=dynamics)
+    need = estimate_bytes(model, dynamics=dynamics, designs=designs)
     budget = USABLE_SHARE * available
     if need <= budget:
         return
-    most = max(int(budget // bytes_per_position(model, dynamics=dynamics)) - 1, 1)
+    per_design = bytes_per_position(model, dynamics=dynamics) * max(designs, 1)
+    most = max(int(budget // per_design) - 1, 1)
+    what = f"{model.positions + 1:,} positions" + (f" of {designs:,} designs"
+                                                   if designs > 1 else "")
     raise ModelSolveError([Problem(
-        ("positions",), f"solving {model.positions + 1:,} positions needs about "
-        f"{_gib(need)} of memory; this machine has {_gib(available)} available",
-        f"use fewer positions (at most about {most:,} here)")])
+        ("positions",), f"solving {what} needs about {_gib(need)} of memory; this "
+        f"machine has {_gib(available)} available",
+        f"use fewer positions (at most about {most:,} here)"
+        + (" or fewer designs" if designs > 1 else ""))])
 
 
 def _gib(size: float) -> str:
