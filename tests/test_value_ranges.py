@@ -86,3 +86,15 @@ def test_tidy_folds_any_angle_in_one_step(angle):
     assert -180.0 < folded <= 180.0
     assert math.isclose(math.remainder(folded - angle, 360.0), 0.0, abs_tol=1e-9 * abs(angle)
                         + 1e-12)
+
+
+def test_fixed_contour_start_is_checked_when_loading(tmp_path):
+    text = (EXAMPLES / "roof_support.yaml").read_text()
+    old = "start: [0.0, 0.15]"
+    file = tmp_path / "m.yaml"
+    file.write_text(text.replace(old, "start: [0.0, 1e400]"))
+    with pytest.raises(ModelError) as info:
+        load_model(file)
+    (problem,) = info.value.problems
+    assert problem.path[0] == "contours" and problem.path[2:] == ("start", 1)
+    assert "range of a length" in problem.message and problem.line == _line(text, old)

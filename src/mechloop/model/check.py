@@ -145,7 +145,8 @@ def _check_signal(arg, n: int, path: tuple, kind: Kind, unit: str) -> list[Probl
 
 def _check_loads(model: Model) -> list[Problem]:
     """Units, tables and laws of the forces, moments and gravity; every point given on a
-    vector (in bodies, joints and forces) with a readable length."""
+    vector (in bodies, joints and forces) and every fixed contour start with a readable
+    length."""
     problems: list[Problem] = []
     units = model.units
     for key, kind in (("forces", "force"), ("moments", "moment")):
@@ -163,6 +164,10 @@ def _check_loads(model: Model) -> list[Problem]:
                 problems.append(_unit_problem(path, exc))
             if kind == "force":
                 problems += _check_values([((key, i, "angle"), load.angle, "angle")], units)
+    for i, contour in enumerate(model.contours):
+        if isinstance(contour.start, tuple):
+            problems += _check_values([(("contours", i, "start", j), c, "length")
+                                       for j, c in enumerate(contour.start)], units)
     if model.gravity is not None:
         problems += _check_values([(("gravity", "g"), model.gravity.g, "acceleration"),
                                    (("gravity", "angle"), model.gravity.angle, "angle")],
