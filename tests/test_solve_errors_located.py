@@ -171,3 +171,15 @@ def test_design_batches_are_checked_against_memory(monkeypatch):
     assert solve_designs(model, {"r1": [0.05] * 10}).values["a2"].shape == (10, 73)
     with pytest.raises(ModelSolveError, match="of 1,000 designs"):
         solve_designs(model, {"r1": [0.05] * 1000})
+
+
+def test_group_file_lists_schema_and_structural_problems_together(tmp_path):
+    text = (EXAMPLES / "four_bar_groups.yaml").read_text()
+    bad = text.replace("time: {rpm: 120}", "time: {rpm: 120, turn: 1}").replace(
+        "at: [A, C]", "at: [A, Z]")
+    file = _write(tmp_path, bad)
+    with pytest.raises(ModelError) as info:
+        load_model(file)
+    found = {(p.path, p.line) for p in info.value.problems}
+    assert found == {(("time", "turn"), _line(text, "time:")),
+                     (("groups", 0, "at", 1), _line(text, "at: [A, C]"))}
