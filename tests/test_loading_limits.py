@@ -8,6 +8,7 @@ import time
 from pathlib import Path
 
 import pytest
+import yaml
 from typer.testing import CliRunner
 
 from mechloop import load_model
@@ -109,3 +110,16 @@ def test_cli_refuses_quickly_with_exit_2(tmp_path, text):
     assert time.perf_counter() - start < 3.0
     assert result.exit_code == 2 and "Traceback" not in result.output
     assert f"{path}:" in result.output and "fix:" in result.output
+
+
+class _Refusing(yaml.SafeLoader):
+    """A parser that stops at once, as libyaml does on what PyYAML accepts."""
+
+    def check_event(self, *choices):
+        raise yaml.parser.ParserError("refused")
+
+
+def test_scan_falls_back_to_pyyaml_when_the_fast_parser_stops(tmp_path, monkeypatch):
+    monkeypatch.setattr(limits, "_Parser", _Refusing)
+    error = _refused(tmp_path, BOMB)
+    assert "expands to more than" in error.problems[0].message

@@ -65,13 +65,23 @@ def check_events(text: str, file: str | None = None) -> None:
     """Refuse a document that nests too deep, holds a too long value or expands (through
     aliases) to too many items, before it is composed.  A YAML syntax error is left for the
     full parse to report.
+
+    The events come from libyaml when it is installed (fast); where libyaml stops on
+    something PyYAML's own parser accepts, the scan is repeated with that parser, so the
+    rest of the document is not left unchecked.
     """
+    if not _scan(text, _Parser, file) and _Parser is not yaml.SafeLoader:
+        _scan(text, yaml.SafeLoader, file)
+
+
+def _scan(text: str, parser: type, file: str | None) -> bool:
+    """Check the events of ``text`` from ``parser``; False when it met a syntax error."""
     depth = 0
     counts: list[tuple[str | None, int]] = []  # open collections: (anchor, items so far)
     sizes: dict[str, int] = {}  # anchor -> expanded size
     total = 0
     try:
-        for event in yaml.parse(text, Loader=_Parser):
+        for event in yaml.parse(text, Loader=parser):
             line = event.start_mark.line + 1 if event.start_mark is not None else None
             if isinstance(event, yaml.CollectionStartEvent):
                 depth += 1
@@ -104,7 +114,8 @@ def check_events(text: str, file: str | None = None) -> None:
                         "count each time they are used)", "write the values out instead of "
                         "repeating anchors (&name / *name) inside each other", line, file)
     except yaml.YAMLError:
-        return
+        return False
+    return True
 
 
 def _refuse(message: str, hint: str, line: int | None, file: str | None) -> None:
