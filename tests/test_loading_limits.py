@@ -11,7 +11,7 @@ import pytest
 import yaml
 from typer.testing import CliRunner
 
-from mechloop import load_model
+from mechloop import ModelError, load_model
 from mechloop.cli import app
 from mechloop.errors import ModelFileError
 from mechloop.model import limits
@@ -123,3 +123,24 @@ def test_scan_falls_back_to_pyyaml_when_the_fast_parser_stops(tmp_path, monkeypa
     monkeypatch.setattr(limits, "_Parser", _Refusing)
     error = _refused(tmp_path, BOMB)
     assert "expands to more than" in error.problems[0].message
+
+
+def test_many_bad_table_entries_give_a_bounded_report(tmp_path):
+    wide = "{" + ", ".join(f"{k}: {k}" for k in range(0, 5000)) + "}"
+    text = CRANK.replace("{0: 0, 72: 360}", wide)
+    path = tmp_path / "m.yaml"
+    path.write_text(text)
+    with pytest.raises(ModelError) as info:
+        load_model(path)
+    (problem,) = info.value.problems
+    assert problem.path == ("arguments", 1, "table", 73)
+    assert "(and 4,926 more)" in problem.message
+
+    junk = "[" + ", ".join(["[1, 2]"] * 5000) + "]"
+    path.write_text(CRANK.replace("{0: 0, 72: 360}", junk))
+    start = time.perf_counter()
+    with pytest.raises(ModelError) as info:
+        load_model(path)
+    assert time.perf_counter() - start < 5.0
+    problems = info.value.problems
+    assert len(problems) == 51 and "more problems not listed" in problems[-1].message

@@ -16,6 +16,8 @@ from mechloop.model.synthesis import check_synthesis
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
 KIND_OF = {"r": "length", "a": "angle"}
+#: Values of one table reported one by one; the rest are counted.
+MAX_TABLE_PROBLEMS = 5
 
 
 def argument_kinds(model: Model) -> dict[int, set[str]]:
@@ -213,24 +215,32 @@ def _check_table(table, n: int, path: tuple, kind: Kind | None, unit: str | None
         if not table:
             problems.append(Problem(path, "the table is empty",
                                     "give at least one 'position: value' pair"))
-        items = table.items()
+        items = list(table.items())
     else:
         if len(table) != n + 1:
             problems.append(Problem(path, f"the table lists {len(table)} values, but the "
                                     f"model has {n + 1} positions (0..{n})",
                                     f"give {n + 1} values, or a sparse mapping "
                                     "{position: value}"))
-        items = enumerate(table)
-    for k, value in items:
-        if not 0 <= k <= n:
-            problems.append(Problem((*path, k), f"position {k} is outside the calculation "
-                                    f"positions 0..{n}",
-                                    f"use positions between 0 and {n}, or raise 'positions'"))
-        if kind is not None and unit is not None:
-            try:
-                to_si(value, kind, unit)
-            except UnitProblem as exc:
+        items = list(enumerate(table))
+    outside = [k for k, _ in items if not 0 <= k <= n] if isinstance(table, dict) else []
+    if outside:  # one problem for the table, however many positions it lists
+        more = f" (and {len(outside) - 1:,} more)" if len(outside) > 1 else ""
+        problems.append(Problem((*path, outside[0]), f"position {outside[0]} is outside the "
+                                f"calculation positions 0..{n}{more}",
+                                f"use positions between 0 and {n}, or raise 'positions'"))
+    unreadable = 0
+    for k, value in items if kind is not None and unit is not None else ():
+        try:
+            to_si(value, kind, unit)
+        except UnitProblem as exc:
+            unreadable += 1
+            if unreadable <= MAX_TABLE_PROBLEMS:
                 problems.append(_unit_problem((*path, k), exc))
+    if unreadable > MAX_TABLE_PROBLEMS:
+        problems.append(Problem(path, f"{unreadable - MAX_TABLE_PROBLEMS:,} more values of "
+                                "this table cannot be read", "fix the values above the "
+                                "same way"))
     return problems
 
 

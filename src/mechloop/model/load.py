@@ -250,10 +250,20 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     return model
 
 
+#: Problems listed one by one in an error; the rest are counted.
+MAX_PROBLEMS = 50
+
+
 def located_error(problems: list[Problem], file: str | None, lines: LineMap) -> ModelError:
-    """The problems, each with its line in ``file`` (when it has none yet), as one error."""
-    return ModelError([Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
-                       for p in _dedupe(problems)], file)
+    """The problems, each with its line in ``file`` (when it has none yet), as one error
+    (the first :data:`MAX_PROBLEMS` of them, and how many more there are)."""
+    unique = _dedupe(problems)
+    shown = [Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
+             for p in unique[:MAX_PROBLEMS]]
+    if len(unique) > MAX_PROBLEMS:
+        shown.append(Problem((), f"{len(unique) - MAX_PROBLEMS:,} more problems not listed",
+                             "fix the ones above, then check the file again"))
+    return ModelError(shown, file)
 
 
 def _import_csv_tables(data: dict[str, Any], base: Path
