@@ -144,3 +144,24 @@ def test_many_bad_table_entries_give_a_bounded_report(tmp_path):
     assert time.perf_counter() - start < 5.0
     problems = info.value.problems
     assert len(problems) == 51 and "more problems not listed" in problems[-1].message
+
+
+@pytest.mark.parametrize("target", ["/dev/zero", "."])
+def test_csv_that_is_not_a_file_is_never_read(tmp_path, target):
+    path = tmp_path / "m.yaml"
+    path.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: '" + target + "'}"))
+    with pytest.raises(ModelError) as info:
+        load_model(path)
+    (problem,) = info.value.problems
+    assert "is not a CSV file" in problem.message and problem.path == ("arguments", 1)
+
+
+def test_csv_size_is_capped(tmp_path, monkeypatch):
+    from mechloop.model import signals
+
+    monkeypatch.setattr(signals, "MAX_CSV_BYTES", 100)
+    (tmp_path / "t.csv").write_text("k,v\n" + "".join(f"{k},{k}\n" for k in range(73)))
+    path = tmp_path / "m.yaml"
+    path.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: t.csv}"))
+    with pytest.raises(ModelError, match="larger than"):
+        load_model(path)

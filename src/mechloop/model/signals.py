@@ -154,6 +154,10 @@ Time = Annotated[
 ]
 
 
+#: Largest CSV table read, bytes (10⁶ rows of a position and a value take about 20 MB).
+MAX_CSV_BYTES = 256 * 2**20
+
+
 def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
     """The table form of a ``{csv: ...}`` spec (``{table: {position: value}, ...}``).
 
@@ -163,11 +167,21 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
 
     path = Path(str(spec["csv"]))
     path = path if path.is_absolute() else base / path
+    if path.exists() and not path.is_file():  # a folder, a device, a pipe: never read
+        raise ValueError(f"{path} is not a CSV file", "give the path of a CSV file, "
+                         "relative to the model file")
     try:
+        if path.stat().st_size > MAX_CSV_BYTES:
+            raise ValueError(f"{path} is larger than {MAX_CSV_BYTES // 2**20} MiB, the limit "
+                             "for a table", "give fewer rows (one per calculation position "
+                             "at most)")
         frame = pd.read_csv(path)
     except FileNotFoundError:
         raise ValueError(f"CSV file {path} not found",
                          "give the path relative to the model file") from None
+    except OSError as exc:
+        raise ValueError(f"cannot read {path} ({exc.strerror or exc})",
+                         "check the path and its permissions") from None
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         raise ValueError(f"cannot read {path} as CSV ({exc})",
                          "write a header line, then position,value rows") from None
