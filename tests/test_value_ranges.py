@@ -28,6 +28,9 @@ def _line(text: str, fragment: str) -> int:
 CASES = [
     ("rpm_inf", CRANK, "rpm: 3000", "rpm: .inf", ("time", "rpm"), "less than or equal"),
     ("rpm_huge", CRANK, "rpm: 3000", "rpm: 1.0e9", ("time", "rpm"), "1000000"),
+    ("rpm_tiny", DYN, "rpm: 3000", "rpm: 1.0e-200", ("time", "rpm"), "greater than or equal"),
+    ("time_step_tiny", DYN, "time: {rpm: 3000}", "time: {table: {0: 0, 72: 1.0e-300}}",
+     ("time", "table"), "the shortest step is 1e-15 s"),
     ("gravity_nan", DYN, "g: 9.81", "g: .nan", ("gravity", "g"), "finite number"),
     ("mass_inf", DYN, "mass: 2,", "mass: .inf,", ("bodies", 1, "mass"), "finite number"),
     ("table_nan", CRANK, "72: 360}", "72: .nan}", ("arguments", 1, "table", 72),

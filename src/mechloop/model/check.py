@@ -8,9 +8,12 @@ from __future__ import annotations
 
 from difflib import get_close_matches
 
+import numpy as np
+
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import VectorPoint
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument
+from mechloop.model.signals import MIN_TIME_STEP
 from mechloop.model.structure import Structure, analyze
 from mechloop.model.synthesis import check_synthesis
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
@@ -255,8 +258,14 @@ def _check_time(model: Model) -> list[Problem]:
     from mechloop.model.tables import fill_table
 
     t = fill_table(time.table, model.positions)
-    if len(time.table) < 2 or not (t[1:] > t[:-1]).all():
+    step = np.diff(t)
+    if len(time.table) < 2 or not (step > 0).all():
         problems.append(Problem(path, "model time must increase from position to position",
                                 "give at least the first and the last position with "
                                 "increasing times, e.g. {0: 0, N: 0.03}"))
+    elif not (step >= MIN_TIME_STEP).all():
+        k = int(np.flatnonzero(step < MIN_TIME_STEP)[0])
+        problems.append(Problem(path, f"model time advances by {step[k]:.3g} s from position "
+                                f"{k} to {k + 1}; the shortest step is {MIN_TIME_STEP:g} s",
+                                "give times in seconds, spread over the positions"))
     return problems

@@ -121,14 +121,20 @@ class RpmTime(_Frozen):
     """Model time from a speed: ``turns`` full turns (default one) over positions ``0..N``,
     ``t = 60·turns/n · k/N``."""
 
-    rpm: Number = Field(gt=0, le=1e6, description="speed of the input, revolutions per "
-                        "minute (at most 10⁶)")
-    turns: Number = Field(1.0, gt=0, le=1e6, description="turns of the input over positions 0..N "
-                         "(2 for a four-stroke cycle over 720 degrees)")
+    rpm: Number = Field(ge=1e-6, le=1e6, description="speed of the input, revolutions per "
+                        "minute (10⁻⁶ to 10⁶)")
+    turns: Number = Field(1.0, ge=1e-6, le=1e6, description="turns of the input over "
+                          "positions 0..N (2 for a four-stroke cycle over 720 degrees)")
+
+
+#: Shortest time between two positions, s (a speed of 10⁶ rpm over 10⁷ positions steps
+#: 6·10⁻¹²; shorter steps only square velocities towards overflow).
+MIN_TIME_STEP = 1e-15
 
 
 class TableTime(_Frozen):
-    """Model time as a table ``{position: seconds}`` filled like an argument table."""
+    """Model time as a table ``{position: seconds}`` filled like an argument table; it
+    increases by at least :data:`MIN_TIME_STEP` from position to position."""
 
     table: _table_of(Number)
     derivatives: TableDerivatives = Field(
