@@ -149,9 +149,9 @@ def _check_signal(arg, n: int, path: tuple, kind: Kind, unit: str) -> list[Probl
 
 
 def _check_loads(model: Model) -> list[Problem]:
-    """Units, tables and laws of the forces, moments and gravity; every point given on a
-    vector (in bodies, joints and forces) and every fixed contour start with a readable
-    length."""
+    """Units, tables and laws of the forces, moments and gravity; masses, moments of
+    inertia, pin radii and slider lengths; every point given on a vector (in bodies,
+    joints and forces) and every fixed contour start with a readable length."""
     problems: list[Problem] = []
     units = model.units
     for key, kind in (("forces", "force"), ("moments", "moment")):
@@ -177,6 +177,7 @@ def _check_loads(model: Model) -> list[Problem]:
         problems += _check_values([(("gravity", "g"), model.gravity.g, "acceleration"),
                                    (("gravity", "angle"), model.gravity.angle, "angle")],
                                   units)
+    problems += _check_values(_quantities(model), units)
     for path, point in _points(model):
         if isinstance(point, VectorPoint):
             values = [((*path, "across"), point.across, "length")]
@@ -194,6 +195,24 @@ def _check_values(values: list[tuple[tuple, float | str, Kind]], units) -> list[
         except UnitProblem as exc:
             problems.append(_unit_problem(path, exc))
     return problems
+
+
+def _quantities(model: Model) -> list[tuple[tuple, float | str, Kind]]:
+    """Every mass, moment of inertia, pin radius and slider length with its path."""
+    out: list[tuple[tuple, float | str, Kind]] = []
+    masses = [(("bodies", n), body) for n, body in model.bodies.items()]
+    masses += [(("bodies", n, "parts", i), part) for n, body in model.bodies.items()
+               for i, part in enumerate(body.parts)]
+    for path, item in masses:
+        out.append(((*path, "mass"), item.mass, "mass"))
+        if item.inertia != "rod":
+            out.append(((*path, "inertia"), item.inertia, "inertia"))
+    holders = [(("joints", name), joint) for name, joint in (model.joints or {}).items()]
+    holders.append((("friction",), model.friction))
+    for path, item in holders:
+        out += [((*path, key), getattr(item, key), "length") for key in ("radius", "length")
+                if getattr(item, key) is not None]
+    return out
 
 
 def _points(model: Model) -> list[tuple[tuple, object]]:

@@ -6,7 +6,9 @@ a ``.nan`` or a ``1e200`` is refused where it enters, with its place in the file
 
 * a number is finite and at most :data:`MAX_MAGNITUDE` (1e12) in size, in the model's
   units — a kilometre in micrometres is 1e9, so real models stay far inside, while the
-  squares and products the solvers form stay finite;
+  squares and products the solvers form stay finite; a number smaller than
+  :data:`MIN_MAGNITUDE` (1e-100) in size counts as 0 (subnormal numbers such as 5e-324
+  overflow once divided, and no physical value is that close to 0 in any unit);
 * a quantity string is at most :data:`MAX_QUANTITY_CHARS` (100) characters (pint's parser
   is slow on long unreadable text); its value is checked the same way once converted
   (:func:`mechloop.model.units.to_si`).
@@ -22,6 +24,8 @@ from pydantic_core import PydanticCustomError
 
 #: Largest magnitude of a number in a model file (in the model's units) and in SI.
 MAX_MAGNITUDE = 1e12
+#: Numbers smaller than this in size count as 0, likewise.
+MIN_MAGNITUDE = 1e-100
 #: Longest quantity string such as ``"50 mm"``, characters.
 MAX_QUANTITY_CHARS = 100
 
@@ -33,11 +37,16 @@ def usable(value: float) -> bool:
     return math.isfinite(value) and abs(value) <= MAX_MAGNITUDE
 
 
+def flush(value: float) -> float:
+    """``value``, or 0.0 when it is smaller than :data:`MIN_MAGNITUDE` in size."""
+    return 0.0 if abs(value) < MIN_MAGNITUDE else value
+
+
 def _number(value: float) -> float:
     if not usable(value):
         raise PydanticCustomError("number_range", "{value} is outside the range of a model "
                                   "value (" + RANGE + ")", {"value": value})
-    return value
+    return flush(value)
 
 
 def _scalar(value: float | str) -> float | str:
@@ -50,7 +59,7 @@ def _scalar(value: float | str) -> float | str:
     return _number(value)
 
 
-#: A plain number: finite, at most 1e12 in size.
+#: A plain number: finite, at most 1e12 in size (below 1e-100 it counts as 0).
 Number = Annotated[float, AfterValidator(_number)]
 
 #: A constant: a number in the model's units, or a string with its own unit ("50 mm").

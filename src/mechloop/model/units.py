@@ -11,7 +11,7 @@ from typing import Literal
 
 import pint
 
-from mechloop.model.numbers import MAX_QUANTITY_CHARS, RANGE, usable
+from mechloop.model.numbers import MAX_QUANTITY_CHARS, RANGE, flush, usable
 
 Kind = Literal["length", "angle", "mass", "inertia", "force", "moment", "acceleration"]
 
@@ -109,9 +109,11 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
 
 
 def _usable(number: float, value: float | str, kind: Kind, factor: float) -> float:
-    """``number · factor`` (SI), or a :class:`UnitProblem` when ``number`` or the result is
-    not finite or larger than :data:`~mechloop.model.numbers.MAX_MAGNITUDE`."""
-    si = number * factor if usable(number) else math.inf
+    """``number · factor`` (SI; 0 when it is below
+    :data:`~mechloop.model.numbers.MIN_MAGNITUDE` in size), or a :class:`UnitProblem` when
+    ``number`` or the result is not finite or larger than
+    :data:`~mechloop.model.numbers.MAX_MAGNITUDE`."""
+    si = flush(number * factor) if usable(number) else math.inf
     if not usable(si):
         raise UnitProblem(f"{value!r} is outside the range of {_a(kind)} ({RANGE}, in the "
                           f"file's units and in {SI_UNIT[kind]})",
