@@ -77,7 +77,7 @@ def test_csv_inf_is_refused_with_the_csv_line(tmp_path):
         load_model(file)
     (problem,) = info.value.problems
     assert problem.path == ("arguments", 1) and problem.line == _line(CRANK, "1: {table")
-    assert "arg.csv, line 3: inf" in problem.message and "finite" in problem.message
+    assert "arg.csv, line 3: 36, inf" in problem.message and "finite" in problem.message
 
 
 def test_to_si_refuses_values_out_of_range_in_file_units_or_si():
@@ -121,3 +121,36 @@ def test_subnormal_values_count_as_zero_without_overflow(tmp_path, old, new):
         result = solve_dynamics(load_model(file))
     frame = result.to_frame()
     assert np.isfinite(frame[~frame["chain_break"]].select_dtypes("number")).all().all()
+
+
+@pytest.mark.parametrize("text", ["9**9**9 mm", "(9)**99 mm", "10**400 mm", "2 mm^999"])
+def test_powers_of_numbers_are_refused_before_pint_computes_them(text):
+    start = time.perf_counter()
+    with pytest.raises(UnitProblem, match="only units take powers"):
+        to_si(text, "length", "m")
+    assert time.perf_counter() - start < 1.0
+
+
+@pytest.mark.parametrize("text", ["5 kg*m^2", "2 g*cm**2", "9.81 m/s^2", "1 (m/s)^2 * s^2 / m"])
+def test_units_with_powers_still_read(text):
+    kind = "inertia" if "kg" in text or "g*cm" in text else (
+        "acceleration" if "/s^2" in text else "length")
+    assert to_si(text, kind, "m") > 0
+
+
+def test_long_unit_expression_is_refused_in_the_schema(tmp_path):
+    file = tmp_path / "m.yaml"
+    file.write_text(CRANK.replace("units: {length: m,", "units: {length: '" + "1 " * 1200
+                                  + "m',"))
+    with pytest.raises(ModelError) as info:
+        load_model(file)
+    (problem,) = info.value.problems
+    assert problem.path == ("units", "length") and "at most 100 characters" in problem.message
+
+
+def test_csv_position_that_is_not_finite_is_refused(tmp_path):
+    (tmp_path / "arg.csv").write_text("position,angle\ninf,0\n72,360\n")
+    file = tmp_path / "m.yaml"
+    file.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: arg.csv}"))
+    with pytest.raises(ModelError, match=r"arg\.csv, line 2: inf"):
+        load_model(file)

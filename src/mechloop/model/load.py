@@ -170,6 +170,7 @@ _HINTS = {
     "less_than": "use a smaller value",
     "number_range": "write a finite number of a physical size (model units)",
     "quantity_length": "write a number and a unit, e.g. '50 mm'",
+    "string_too_long": "shorten it: a unit is a short name like 'mm' or 'kN*m'",
     "string_pattern_mismatch": "write the parameter as 'a' or 'r' and a vector number, "
                                "e.g. 'a2'",
 }

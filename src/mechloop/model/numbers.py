@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from typing import Annotated
 
-from pydantic import AfterValidator
+from pydantic import AfterValidator, StringConstraints
 from pydantic_core import PydanticCustomError
 
 #: Largest magnitude of a number in a model file (in the model's units) and in SI.
@@ -64,6 +64,9 @@ Number = Annotated[float, AfterValidator(_number)]
 
 #: A constant: a number in the model's units, or a string with its own unit ("50 mm").
 Scalar = Annotated[float | str, AfterValidator(_scalar)]
+
+#: A unit such as ``"mm"`` or ``"kN*m"``: at most 100 characters.
+UnitName = Annotated[str, StringConstraints(max_length=MAX_QUANTITY_CHARS)]
 
 #: A quantity string alone (the string branch of a tagged union).
 QuantityText = Annotated[str, AfterValidator(_scalar)]

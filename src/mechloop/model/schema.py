@@ -44,6 +44,7 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
     TableDerivatives,
     TableTime,
     Time,
+    UnitName,
     _Frozen,
 )
 from mechloop.model.synthesis import SynthesisTask
@@ -142,13 +143,13 @@ class Contour(_Frozen):
 class Units(_Frozen):
     """Units of the numbers in the model file (any pint unit of the right kind)."""
 
-    length: str = Field("m", description="length unit: m, cm, mm, ...")
-    angle: str = Field("deg", description="angle unit: deg, rad, grad")
-    mass: str = Field("kg", description="mass unit: kg, g, t")
-    inertia: str = Field("kg*m^2", description="moment of inertia unit: kg*m^2, g*cm^2")
-    force: str = Field("N", description="force unit: N, kN, kgf")
-    moment: str = Field("N*m", description="moment unit: N*m, kN*m, kgf*m")
-    acceleration: str = Field("m/s^2", description="unit of the acceleration of gravity")
+    length: UnitName = Field("m", description="length unit: m, cm, mm, ...")
+    angle: UnitName = Field("deg", description="angle unit: deg, rad, grad")
+    mass: UnitName = Field("kg", description="mass unit: kg, g, t")
+    inertia: UnitName = Field("kg*m^2", description="moment of inertia unit: kg*m^2, g*cm^2")
+    force: UnitName = Field("N", description="force unit: N, kN, kgf")
+    moment: UnitName = Field("N*m", description="moment unit: N*m, kN*m, kgf*m")
+    acceleration: UnitName = Field("m/s^2", description="unit of the acceleration of gravity")
 
 
 class Model(_Frozen):

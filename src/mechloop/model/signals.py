@@ -14,6 +14,7 @@ from mechloop.model.numbers import (  # noqa: F401  (QuantityText, Scalar: re-ex
     Number,
     QuantityText,
     Scalar,
+    UnitName,
     usable,
 )
 
@@ -59,7 +60,7 @@ class TableArgument(_Frozen):
     """
 
     table: _table_of(Scalar)
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
     derivatives: TableDerivatives = Field(
         "linear", description="'linear': derivatives of the piecewise-linear fill (central "
         "differences: the slope inside a segment, zero while a value holds); 'spline': of "
@@ -80,7 +81,7 @@ class LawArgument(_Frozen):
     law: LawName
     start: tuple[int, Scalar]
     end: tuple[int, Scalar]
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
 
 
 class CsvTable(_Frozen):
@@ -91,7 +92,7 @@ class CsvTable(_Frozen):
 
     csv: str = Field(description="CSV file, relative to the model file")
     column: str | int = Field(1, description="column of the values: header or index")
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
     derivatives: TableDerivatives = Field("linear", description="as for a table")
 
 
@@ -209,12 +210,13 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
         row = int(bad.to_numpy().nonzero()[0][0]) + 2  # 1-based, after the header
         raise ValueError(f"{path}, line {row}: not a position number and a value",
                          "every row is an integer position and a number")
-    wild = ~values.map(lambda v: usable(float(v)))
+    wild = ~(values.map(lambda v: usable(float(v))) & positions.map(lambda k: usable(float(k))))
     if wild.any():
         row = int(wild.to_numpy().nonzero()[0][0])
-        raise ValueError(f"{path}, line {row + 2}: {values.iloc[row]} is outside the range of "
-                         f"a model value ({RANGE})",
-                         "write a finite number of a physical size (model units)")
+        raise ValueError(f"{path}, line {row + 2}: {positions.iloc[row]}, {values.iloc[row]} "
+                         f"is outside the range of a position and a model value ({RANGE})",
+                         "write a whole position number and a finite value of a physical "
+                         "size (model units)")
     table = {int(k): float(v) for k, v in zip(positions, values, strict=True)}
     out: dict[str, Any] = {"table": table, "derivatives": spec.get("derivatives", "linear")}
     if spec.get("unit") is not None:
