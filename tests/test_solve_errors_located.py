@@ -183,3 +183,9 @@ def test_group_file_lists_schema_and_structural_problems_together(tmp_path):
     found = {(p.path, p.line) for p in info.value.problems}
     assert found == {(("time", "turn"), _line(text, "time:")),
                      (("groups", 0, "at", 1), _line(text, "at: [A, C]"))}
+
+
+def test_check_reports_a_solve_that_would_not_fit_in_memory(tmp_path, monkeypatch):
+    file = _write(tmp_path, CRANK.replace("positions: 72", "positions: 2000000"))
+    monkeypatch.setattr(memory, "available_memory", lambda: 10**8)
+    assert f"{file}:{_line(CRANK, 'positions:')}, positions" in _cli(file, "check")

@@ -66,6 +66,9 @@ def check(model: ModelPath) -> None:
     Example: mechloop check examples/crank_slider.yaml
     """
     m = load_model(model)
+    from mechloop.solve.memory import require_memory
+
+    require_memory(m, dynamics=bool(m.bodies))  # what solve would need, on this machine
     n_vec = len(m.vectors)
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
             f"{len(m.arguments)} argument(s), positions 0..{m.positions}")
