@@ -189,3 +189,12 @@ def test_check_reports_a_solve_that_would_not_fit_in_memory(tmp_path, monkeypatc
     file = _write(tmp_path, CRANK.replace("positions: 72", "positions: 2000000"))
     monkeypatch.setattr(memory, "available_memory", lambda: 10**8)
     assert f"{file}:{_line(CRANK, 'positions:')}, positions" in _cli(file, "check")
+
+
+def test_cli_hint_for_a_named_point_says_what_to_change_in_the_file(tmp_path):
+    result = CliRunner().invoke(app, ["plot", str(EXAMPLES / "crank_slider.yaml"),
+                                      "trajectories", "--points", "S2", "-o",
+                                      str(tmp_path / "t.png")])
+    assert result.exit_code == 2
+    assert "add bodies and joints to the model file" in result.output
+    assert "head:K" in result.output
