@@ -256,11 +256,13 @@ MAX_PROBLEMS = 50
 
 
 def located_error(problems: list[Problem], file: str | None, lines: LineMap) -> ModelError:
-    """The problems, each with its line in ``file`` (when it has none yet), as one error
-    (the first :data:`MAX_PROBLEMS` of them, and how many more there are)."""
-    unique = _dedupe(problems)
-    shown = [Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
-             for p in unique[:MAX_PROBLEMS]]
+    """The problems, each with its line in ``file`` (when it has none yet), in the order of
+    the file, as one error (the first :data:`MAX_PROBLEMS` of them, and how many more
+    there are)."""
+    unique = [Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
+              for p in _dedupe(problems)]
+    unique.sort(key=lambda p: p.line or 0)  # in the order of the file
+    shown = unique[:MAX_PROBLEMS]
     if len(unique) > MAX_PROBLEMS:
         shown.append(Problem((), f"{len(unique) - MAX_PROBLEMS:,} more problems not listed",
                              "fix the ones above, then check the file again"))
