@@ -162,7 +162,7 @@ Time = Annotated[
 
 
 #: Largest CSV table read, bytes (10⁶ rows of a position and a value take about 20 MB).
-MAX_CSV_BYTES = 256 * 2**20
+MAX_CSV_BYTES = 64 * 2**20
 
 
 def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
