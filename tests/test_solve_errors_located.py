@@ -198,3 +198,14 @@ def test_cli_hint_for_a_named_point_says_what_to_change_in_the_file(tmp_path):
     assert result.exit_code == 2
     assert "add bodies and joints to the model file" in result.output
     assert "head:K" in result.output
+
+
+def test_unreadable_csv_table_does_not_hide_the_other_problems(tmp_path):
+    (tmp_path / "bad.csv").write_text("k,v\n0,0\n36,x\n72,360\n")
+    text = CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: bad.csv}").replace(
+        "r: 0.2, a: function", "r: 0.2, a: 10").replace("rpm: 3000}", "rpm: 3000, turn: 2}")
+    file = _write(tmp_path, text)
+    with pytest.raises(ModelError) as info:
+        load_model(file)
+    assert [p.path for p in info.value.problems] == [("time", "turn"), ("arguments", 1),
+                                                     ("contours", 0)]

@@ -211,11 +211,9 @@ def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
     relative to the file); or None and every problem, not yet located by line.  ``hint``
     may rewrite the message and fix of a validation error."""
     base = Path(file).resolve().parent if file else Path.cwd()
-    data, problems = _import_csv_tables(data, base)
-    if problems:
-        return None, problems
+    data, problems = _import_csv_tables(data, base)  # an unread table stays {csv: ...}
     try:
-        return cls.model_validate(data), []
+        value = cls.model_validate(data)
     except ValidationError as exc:
         for error in exc.errors():
             message, fix = _describe(error)
@@ -223,6 +221,7 @@ def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
                 message, fix = hint(error, message, fix)
             problems.append(Problem(_data_path(error["loc"], data), message, fix))
         return None, problems
+    return (None, problems) if problems else (value, [])
 
 
 def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None = None
@@ -239,8 +238,8 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     model, problems = validate_data(Model, data, file)
     if problems:
         base = Path(file).resolve().parent if file else Path.cwd()
-        tables, unread = _import_csv_tables(data, base)
-        partial, dropped = salvage(tables, problems) if not unread else (None, frozenset())
+        tables, unread = _import_csv_tables(data, base)  # an unread table validates as is
+        partial, dropped = salvage(tables, [p for p in problems if p not in unread])
         if partial is not None:  # what else is wrong, in the parts that validated
             problems += [p for p in check_model(partial)[1]
                          if not (p.path and str(p.path[0]) in dropped)]

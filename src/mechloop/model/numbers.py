@@ -11,8 +11,8 @@ a ``.nan`` or a ``1e200`` is refused where it enters, with its place in the file
   overflow once divided, and no physical value is that close to 0 in any unit);
 * a quantity string is at most :data:`MAX_QUANTITY_CHARS` (100) characters: pint takes
   time quadratic in the length of a name it does not know (8,000 characters: 0.9 s;
-  100,000: minutes), and recurses once per token of a unit expression; its value is checked the same way once converted
-  (:func:`mechloop.model.units.to_si`).
+  100,000: minutes), and recurses once per token of a unit expression; its value is
+  checked the same way once converted (:func:`mechloop.model.units.to_si`).
 """
 
 from __future__ import annotations
