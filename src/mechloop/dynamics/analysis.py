@@ -165,6 +165,8 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     try:
         forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static)
     except SolveError as exc:
+        if not exc.message.startswith("friction"):
+            raise
         raise exc.at(_friction_path(model), "lower the coefficient of friction there "
                      "(friction.coefficient, or a joint's friction) or check the pin radii "
                      "and slider lengths") from None
