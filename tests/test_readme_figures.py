@@ -365,6 +365,9 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"\d+ positions per design", "the benchmark's setting"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
+    (R, r"at most 64 MiB|at most 64 levels|longer than 10,000 characters|"
+        r"at most 1,000,000 items|at most 1e12 in size|below 1e-100",
+     "the loading limits, constants of the code (test_readme_states_the_loading_limits)"),
     (R, r"0666 less the umask|1,048,575 rows|16,384 columns",
      "the POSIX default file mode and Excel's sheet limits (constants of mechloop.output)"),
     (R, r"blocks \(8192", "the block size in mechloop.solve"),

@@ -73,6 +73,11 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         try:
             return func(*args, **kwargs)
         except MechloopError as exc:
+            if isinstance(exc, ModelError) and exc.file is None and isinstance(
+                    kwargs.get("model"), Path):  # raised by a solver: name file and line
+                from mechloop.model.load import locate
+
+                exc = locate(exc, kwargs["model"])
             err.print(f"[bold red]error:[/] {exc}", markup=True, soft_wrap=True)
             raise typer.Exit(code=2) from None
 
@@ -93,6 +98,9 @@ def check(model: ModelPath) -> None:
     from mechloop.model.load import load_model
 
     m = load_model(model)
+    from mechloop.solve.memory import require_memory
+
+    require_memory(m, dynamics=bool(m.bodies))  # what solve would need, on this machine
     n_vec = len(m.vectors)
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
             f"{len(m.arguments)} argument(s), positions 0..{m.positions}")

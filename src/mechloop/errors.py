@@ -96,6 +96,22 @@ class HintedError(ValueError, MechloopError):
     def __reduce__(self):
         return (type(self), (self.message, self.hint))
 
+    def at(self, path: tuple[str | int, ...], hint: str | None = None) -> ModelSolveError:
+        """This error told at ``path`` in the model (e.g. ``("machine",)``), with ``hint``
+        (a fix in terms of the model file) instead of its own when given."""
+        return ModelSolveError([Problem(path, self.message,
+                                        self.hint if hint is None else hint)])
+
 
 class SolveError(HintedError):
     """A model is valid but its data make a requested quantity undefined."""
+
+
+class ModelSolveError(ModelError, SolveError):
+    """A valid model that cannot be solved, told at the place in the model that causes it
+    (so the command line names the file, line and key); still a :class:`SolveError`."""
+
+    def __init__(self, problems: list[Problem] | tuple[Problem, ...], file: str | None = None):
+        ModelError.__init__(self, problems, file)
+        first = self.problems[0] if self.problems else Problem((), "")
+        self.message, self.hint = first.message, first.hint

@@ -20,10 +20,11 @@ from mechloop.dynamics.loads import Loads, build_loads
 from mechloop.dynamics.mechanism import Mechanism, build_mechanism
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.dynamics.reduced import Reduced, balancing_by_virtual_power, reduced
-from mechloop.errors import ModelError, Problem
+from mechloop.errors import ModelError, ModelSolveError, Problem, SolveError
 from mechloop.model.schema import Model
 from mechloop.solve.inputs import model_time
 from mechloop.solve.kinematics import solve
+from mechloop.solve.memory import require_memory
 from mechloop.solve.results import Results
 
 Array = NDArray[np.float64]
@@ -154,13 +155,21 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     problem) and :class:`~mechloop.errors.SolveError` when the force analysis cannot be
     done (friction that does not settle).
     """
+    require_memory(model, dynamics=True)
     kin = solve(model)
     time = model_time(model)
     static = time is None
     placement = Placement(kin)
     mechanism = build_mechanism(model, placement)
     loads = build_loads(model, mechanism, placement, time)
-    forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static)
+    try:
+        forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static)
+    except SolveError as exc:
+        if not exc.message.startswith("friction"):
+            raise
+        raise exc.at(_friction_path(model), "lower the coefficient of friction there "
+                     "(friction.coefficient, or a joint's friction) or check the pin radii "
+                     "and slider lengths") from None
 
     balancing_vp: dict[int, Array] = {}
     red: Reduced | None = None
@@ -189,10 +198,54 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     if model.machine is not None:
         check_machine(mechanism, red, time)
         k = mechanism.drives[0].argument
-        cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
-                             _argument_rate(kin, k), model.machine)
+        try:
+            cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
+                                 _argument_rate(kin, k), model.machine)
+        except SolveError as exc:
+            raise _machine_error(exc, k) from None
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
                           centers, center, kinetic, powers, summary, static, inertia, cycle)
+
+
+def _friction_path(model: Model) -> tuple[str | int, ...]:
+    """Where the friction of ``model`` is set: its first joint with a coefficient of its
+    own, else the defaults."""
+    for name, joint in (model.joints or {}).items():
+        if joint.friction:
+            return ("joints", name, "friction")
+    return ("friction", "coefficient")
+
+
+#: What to change in the model file when the machine motion cannot be found, by the
+#: start of the message of :mod:`mechloop.dynamics.machine` / :mod:`.cycle`.
+_MACHINE_FIXES = {
+    "machine motion needs the whole cycle": (
+        "machine", "remove the chain break first (mechloop solve lists the positions): "
+        "check the dimensions, the variant and the argument range"),
+    "machine motion needs the input to advance": (
+        "arguments", "make the argument's table or law increase from position 0 to N"),
+    "the machine stops": (
+        "time", "raise the speed (time: {rpm: ...}), lower the loads, or give the moving "
+        "bodies more inertia (a flywheel mass on the input link)"),
+    "j_red must be positive": (
+        "bodies", "the machine has no moving mass at some positions (its reduced moment of "
+        "inertia is zero there): give the moving bodies masses and moments of inertia "
+        "(bodies: mass:, inertia:)"),
+    "the motion is not steady": (
+        "machine", "check the loads over the cycle: positions 0..N must be one whole cycle "
+        "of the input"),
+}
+
+
+def _machine_error(exc: SolveError, argument: int) -> ModelSolveError:
+    """``exc`` from the machine motion told at the key of the model to change."""
+    for start, (key, hint) in _MACHINE_FIXES.items():
+        if exc.message.startswith(start):
+            path: tuple[str | int, ...] = ("arguments", argument) if key == "arguments" \
+                else (key,)
+            return exc.at(path, hint)
+    return exc.at(("machine",), "check the loads, masses and speed of the machine "
+                  "(forces, moments, bodies, time)")
 
 
 def check_machine(mechanism: Mechanism, red: Reduced | None, time) -> None:

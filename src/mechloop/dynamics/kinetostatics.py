@@ -256,45 +256,48 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
         scale = _segment_max(np.abs(rhs[good]).max(axis=1, initial=0.0), seg[good], n_seg)
         scale = np.maximum(scale, 1e-300)
         settling[:] = True
-        for iterations in range(1, FRICTION_MAX_ITER + 1):
-            moving = settling[seg]
-            extra = np.zeros((n, size))
-            c = 0
-            for pair in mechanism.pairs:
-                first, second = pair.bodies
-                z = points[pair.name].z
-                if pair.kind == "revolute":
-                    r = np.hypot(x[:, c], x[:, c + 1])
-                    rel = _omega(bodies, second) - _omega(bodies, first)
-                    m_f = -pair.friction * pair.radius * r * np.sign(rel)
-                    add_known(second, 0.0, None, m_f, extra)
-                    add_known(first, 0.0, None, -m_f, extra)
-                    fric[pair.name] = np.where(moving, m_f, fric[pair.name])
-                    losses[pair.name] = np.where(moving, -m_f * rel, losses[pair.name])
-                    c += 2
-                else:
-                    e = directions[pair.name]
-                    normal, moment = x[:, c], x[:, c + 1]
-                    load = np.maximum(np.abs(normal), 2.0 * np.abs(moment) / pair.length) \
-                        if pair.length > 0 else np.abs(normal)
-                    rel = (_velocity(bodies, second, z) - _velocity(bodies, first, z))
-                    slide = (np.conj(e) * rel).real
-                    f_f = -pair.friction * load * np.sign(slide)
-                    add_known(second, f_f * e, z, 0.0, extra)
-                    add_known(first, -f_f * e, z, 0.0, extra)
-                    fric[pair.name] = np.where(moving, f_f, fric[pair.name])
-                    losses[pair.name] = np.where(moving, -f_f * slide, losses[pair.name])
-                    c += 2
-            new = solve(rhs + extra)
-            with np.errstate(invalid="ignore"):  # a diverging segment may overflow
-                step = np.abs(new - x)[good].max(axis=1, initial=0.0)
-            change = _segment_max(step, seg[good], n_seg)
-            x = np.where(moving[:, None], new, x)
-            done = settling & (change <= FRICTION_RTOL * scale)
-            seg_iterations[done] = iterations
-            settling &= ~done
-            if not settling.any():
-                break
+        # a segment that diverges (self-locking) may overflow before it is stopped: its rows
+        # end NaN and marked unsettled, or the whole solve raises below
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            for iterations in range(1, FRICTION_MAX_ITER + 1):
+                moving = settling[seg]
+                extra = np.zeros((n, size))
+                c = 0
+                for pair in mechanism.pairs:
+                    first, second = pair.bodies
+                    z = points[pair.name].z
+                    if pair.kind == "revolute":
+                        r = np.hypot(x[:, c], x[:, c + 1])
+                        rel = _omega(bodies, second) - _omega(bodies, first)
+                        m_f = -pair.friction * pair.radius * r * np.sign(rel)
+                        add_known(second, 0.0, None, m_f, extra)
+                        add_known(first, 0.0, None, -m_f, extra)
+                        fric[pair.name] = np.where(moving, m_f, fric[pair.name])
+                        losses[pair.name] = np.where(moving, -m_f * rel, losses[pair.name])
+                        c += 2
+                    else:
+                        e = directions[pair.name]
+                        normal, moment = x[:, c], x[:, c + 1]
+                        load = np.maximum(np.abs(normal), 2.0 * np.abs(moment) / pair.length) \
+                            if pair.length > 0 else np.abs(normal)
+                        rel = (_velocity(bodies, second, z) - _velocity(bodies, first, z))
+                        slide = (np.conj(e) * rel).real
+                        f_f = -pair.friction * load * np.sign(slide)
+                        add_known(second, f_f * e, z, 0.0, extra)
+                        add_known(first, -f_f * e, z, 0.0, extra)
+                        fric[pair.name] = np.where(moving, f_f, fric[pair.name])
+                        losses[pair.name] = np.where(moving, -f_f * slide, losses[pair.name])
+                        c += 2
+                new = solve(rhs + extra)
+                with np.errstate(invalid="ignore"):  # a diverging segment may overflow
+                    step = np.abs(new - x)[good].max(axis=1, initial=0.0)
+                change = _segment_max(step, seg[good], n_seg)
+                x = np.where(moving[:, None], new, x)
+                done = settling & (change <= FRICTION_RTOL * scale)
+                seg_iterations[done] = iterations
+                settling &= ~done
+                if not settling.any():
+                    break
         seg_iterations[settling] = FRICTION_MAX_ITER
         if segments is None and settling.any():
             raise SolveError(

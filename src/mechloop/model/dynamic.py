@@ -17,7 +17,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, Discriminator, Field, Tag, model_validator
 
-from mechloop.model.signals import Argument, Scalar, _Frozen
+from mechloop.model.signals import Argument, Number, Scalar, _Frozen
 
 
 class TailPoint(_Frozen):
@@ -37,7 +37,7 @@ class VectorPoint(_Frozen):
     from the tail; ``across`` to its left (counter-clockwise side)."""
 
     vector: int = Field(ge=1, description="vector number")
-    share: float | None = Field(None, description="fraction of the vector's length from "
+    share: Number | None = Field(None, description="fraction of the vector's length from "
                                 "its tail (0 = tail, 1 = head)")
     along: Scalar | None = Field(None, description="distance from the tail along the "
                                  "vector (length units)")
@@ -121,7 +121,7 @@ class Joint(_Frozen):
                                "reference point of the normal force and moment")
     along: int | None = Field(None, description="prismatic: the vector along which the "
                               "bodies slide")
-    friction: float | None = Field(None, ge=0, description="coefficient of friction "
+    friction: Number | None = Field(None, ge=0, description="coefficient of friction "
                                    "(default: friction.coefficient, or none)")
     radius: Scalar | None = Field(None, description="revolute: pin radius for friction "
                                   "(length units; default friction.radius)")
@@ -132,7 +132,7 @@ class Joint(_Frozen):
 class Friction(_Frozen):
     """Defaults for every joint that does not set its own."""
 
-    coefficient: float = Field(0.0, ge=0, description="coefficient of friction")
+    coefficient: Number = Field(0.0, ge=0, description="coefficient of friction")
     radius: Scalar | None = Field(None, description="pin radius of revolute joints")
     length: Scalar | None = Field(None, description="slider length of prismatic joints")
 
@@ -196,7 +196,7 @@ class Machine(_Frozen):
     resistance of an engine's consumer, or the mean torque of a motor — and the flywheel
     for a coefficient of speed fluctuation ``delta``."""
 
-    delta: float | None = Field(None, gt=0, lt=2, description="wanted coefficient of speed "
+    delta: Number | None = Field(None, gt=0, lt=2, description="wanted coefficient of speed "
                                 "fluctuation (ω_max − ω_min)/ω_mean; the flywheel is sized "
                                 "for it")
     friction: bool = Field(True, description="include the friction losses found by the "

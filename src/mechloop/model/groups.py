@@ -91,7 +91,7 @@ from mechloop.model.dynamic import (
     VectorPoint,
 )
 from mechloop.model.schema import Model, Units
-from mechloop.model.signals import Argument, Scalar, Time, _Frozen
+from mechloop.model.signals import MAX_POSITIONS, Argument, Number, Scalar, Time, _Frozen
 from mechloop.model.synthesis import (
     Dimension,
     MotionTask,
@@ -270,7 +270,7 @@ class Share(_Frozen):
     """A point on the link's line: ``share`` of the way from its first to its second
     point."""
 
-    share: float = Field(description="0 = the first point of the line, 1 = the second")
+    share: Number = Field(description="0 = the first point of the line, 1 = the second")
 
 
 Place = Annotated[
@@ -367,7 +367,8 @@ class GroupMechanism(_Frozen):
     name: str = ""
     description: str = ""
     units: Units = Units()
-    positions: int = Field(ge=1, description="N: calculation positions are 0..N")
+    positions: int = Field(ge=1, le=MAX_POSITIONS, description="N: calculation positions "
+                           "are 0..N (at most 10⁸)")
     time: Time | None = Field(None, description="model time (as in a vector model)")
     arguments: dict[int, Argument] = Field(default_factory=dict)
     ground: dict[Name, tuple[Scalar, Scalar]] = Field(
@@ -548,6 +549,7 @@ def mechanism_of(path: str | Path) -> GroupMechanism | None:
 def _from_group_data(data: dict[str, Any], file: str | None,
                      lines: dict[tuple[Any, ...], int] | None, *, build_it: bool) -> Any:
     from mechloop.model.load import located_error, validate_data
+    from mechloop.model.salvage import GROUP_CORE, salvage
 
     lines = lines or {}
 
@@ -561,6 +563,13 @@ def _from_group_data(data: dict[str, Any], file: str | None,
                              for key in mixed], file, lines)
     mech, problems = validate_data(GroupMechanism, data, file, _group_hint)
     if problems:
+        partial, dropped = salvage(data, problems, GroupMechanism, GROUP_CORE)
+        if partial is not None:  # what else is wrong, in the parts that validated
+            try:
+                build_model(partial)
+            except ModelError as exc:
+                problems += [p for p in exc.problems if p.path and p.path[0] in data
+                             and str(p.path[0]) not in dropped]
         raise located_error(problems, file, lines)
     try:
         model = build_model(mech)
@@ -774,9 +783,10 @@ class _Builder:
         it cannot be read."""
         unit = getattr(self.units, kind)
         try:
+            si = to_si(value, kind, unit)  # refuses unreadable, non-finite, absurd values
             out = _plain(value)
             if out is None:  # a quantity with its own unit: to SI, then to the model's
-                out = to_si(value, kind, unit) / unit_factor(unit, kind)
+                out = si / unit_factor(unit, kind)
         except UnitProblem as exc:
             self.problems.append(Problem(path, exc.message, exc.hint))
             return 0.0
@@ -1810,12 +1820,10 @@ def _plain(value: Scalar) -> float | None:
 
 
 def _tidy(angle: float, half: float) -> float:
-    """An angle folded into (−half, half] (half a turn in model units) by whole turns."""
-    while angle > half:
-        angle -= 2 * half
-    while angle <= -half:
-        angle += 2 * half
-    return angle
+    """An angle folded into (−half, half] (half a turn in model units) by whole turns
+    (exactly, in one step: :func:`math.remainder`)."""
+    folded = math.remainder(angle, 2 * half)
+    return half if folded == -half else folded
 
 
 def _choose(name: str, options: list[str], what: str | None = None) -> str:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -20,7 +20,9 @@ from pydantic import ValidationError
 
 from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
-from mechloop.model.schema import Model
+from mechloop.model.limits import check_events, read_text
+from mechloop.model.salvage import salvage
+from mechloop.model.schema import MAX_POSITIONS, Model
 from mechloop.model.signals import read_csv_table
 from mechloop.output.atomic import atomic_write_bytes, atomic_write_text  # noqa: F401 (re-exported)
 
@@ -37,6 +39,12 @@ def _construct_mapping(loader: _Loader, node: yaml.MappingNode, deep: bool = Fal
     mapping: dict[Any, Any] = {}
     for key_node, value_node in node.value:
         key = loader.construct_object(key_node, deep=deep)
+        if not isinstance(key, Hashable):
+            error = yaml.constructor.ConstructorError(
+                "while reading a mapping", node.start_mark,
+                "found a list or mapping as a key", key_node.start_mark)
+            error.hint = "a key is a name or a number: write 'key: value'"  # type: ignore[attr-defined]
+            raise error
         if key in mapping:
             raise yaml.constructor.ConstructorError(
                 "while reading a mapping", node.start_mark,
@@ -83,14 +91,15 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
     """Parse a YAML/JSON file into plain data and a map of lines; errors name the line."""
     file = str(path)
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        text = read_text(path)
     except FileNotFoundError:
         raise ModelFileError([Problem((), "file not found",
                                       "check the path (mechloop check examples/... )")],
                              file) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ModelFileError([Problem((), f"cannot read the file: {exc}",
-                                      "save it as UTF-8 text")], file) from None
+    except OSError as exc:
+        raise ModelFileError([Problem((), f"cannot read the file: {exc.strerror or exc}",
+                                      "check the path and its permissions")], file) from None
+    check_events(text, file)
     try:
         loader = _Loader(text)
         try:
@@ -108,9 +117,9 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
         if context and context_mark is not None and context_mark is not mark:
             context += f" that starts at line {context_mark.line + 1}"
         message = f"YAML syntax error: {what}" + (f" ({context})" if context else "")
-        raise ModelFileError([Problem((), message, "fix the YAML syntax at that line "
-                                      "(indentation, a missing ':' or an unclosed bracket)",
-                                      line)], file) from None
+        hint = getattr(exc, "hint", None) or ("fix the YAML syntax at that line (indentation, "
+                                              "a missing ':' or an unclosed bracket)")
+        raise ModelFileError([Problem((), message, hint, line)], file) from None
     if not isinstance(data, dict):
         raise ModelFileError([Problem((), "the file does not hold a model mapping",
                                       "start with keys like 'positions:', 'vectors:' and "
@@ -131,6 +140,9 @@ def _data_path(loc: tuple, data: Any) -> tuple:
     for i, key in enumerate(loc):
         if isinstance(current, dict):
             match = next((k for k in current if k == key or str(k) == str(key)), _MISSING)
+            if match is not _MISSING and i < len(loc) - 1 and loc[i + 1] in current \
+                    and not isinstance(current[match], dict | list | tuple):
+                continue  # a union tag that is also a key (time: {rpm: ...}): not a step
             if match is not _MISSING:
                 path.append(match)
                 current = current[match]
@@ -154,6 +166,11 @@ _HINTS = {
     "greater_than_equal": "use a larger value",
     "greater_than": "use a larger value",
     "too_short": "add more items",
+    "less_than_equal": "use a smaller value",
+    "less_than": "use a smaller value",
+    "number_range": "write a finite number of a physical size (model units)",
+    "quantity_length": "write a number and a unit, e.g. '50 mm'",
+    "string_too_long": "shorten it: a unit is a short name like 'mm' or 'kN*m'",
     "string_pattern_mismatch": "write the parameter as 'a' or 'r' and a vector number, "
                                "e.g. 'a2'",
 }
@@ -179,6 +196,9 @@ def _describe(error: dict[str, Any]) -> tuple[str, str]:
     elif kind == "int_parsing" and loc and loc[-1] == "[key]":
         message = "a table position must be a whole number"
         hint = "write positions as 0, 1, 2, ..."
+    elif kind == "less_than_equal" and tuple(loc) == ("positions",):
+        message = f"{error['input']} positions; a model has at most {MAX_POSITIONS:,}"
+        hint = "use fewer positions (a smooth curve needs a few hundred to a few thousand)"
     elif kind == "time_form":
         hint = "e.g. time: {rpm: 3000} or time: {table: {0: 0, 36: 0.03}}"
     return message, hint
@@ -191,11 +211,9 @@ def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
     relative to the file); or None and every problem, not yet located by line.  ``hint``
     may rewrite the message and fix of a validation error."""
     base = Path(file).resolve().parent if file else Path.cwd()
-    data, problems = _import_csv_tables(data, base)
-    if problems:
-        return None, problems
+    data, problems = _import_csv_tables(data, base)  # an unread table stays {csv: ...}
     try:
-        return cls.model_validate(data), []
+        value = cls.model_validate(data)
     except ValidationError as exc:
         for error in exc.errors():
             message, fix = _describe(error)
@@ -203,6 +221,7 @@ def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
                 message, fix = hint(error, message, fix)
             problems.append(Problem(_data_path(error["loc"], data), message, fix))
         return None, problems
+    return (None, problems) if problems else (value, [])
 
 
 def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None = None
@@ -218,6 +237,12 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
         return model_from_group_data(data, file=file, lines=lines)
     model, problems = validate_data(Model, data, file)
     if problems:
+        base = Path(file).resolve().parent if file else Path.cwd()
+        tables, unread = _import_csv_tables(data, base)  # an unread table validates as is
+        partial, dropped = salvage(tables, [p for p in problems if p not in unread])
+        if partial is not None:  # what else is wrong, in the parts that validated
+            problems += [p for p in check_model(partial)[1]
+                         if not (p.path and str(p.path[0]) in dropped)]
         raise located_error(problems, file, lines)
     _, problems = check_model(model)
     if problems:
@@ -225,10 +250,22 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     return model
 
 
+#: Problems listed one by one in an error; the rest are counted.
+MAX_PROBLEMS = 50
+
+
 def located_error(problems: list[Problem], file: str | None, lines: LineMap) -> ModelError:
-    """The problems, each with its line in ``file`` (when it has none yet), as one error."""
-    return ModelError([Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
-                       for p in _dedupe(problems)], file)
+    """The problems, each with its line in ``file`` (when it has none yet), in the order of
+    the file, as one error (the first :data:`MAX_PROBLEMS` of them, and how many more
+    there are)."""
+    unique = [Problem(p.path, p.message, p.hint, p.line or _locate(p.path, lines))
+              for p in _dedupe(problems)]
+    unique.sort(key=lambda p: p.line or 0)  # in the order of the file
+    shown = unique[:MAX_PROBLEMS]
+    if len(unique) > MAX_PROBLEMS:
+        shown.append(Problem((), f"{len(unique) - MAX_PROBLEMS:,} more problems not listed",
+                             "fix the ones above, then check the file again"))
+    return ModelError(shown, file)
 
 
 def _import_csv_tables(data: dict[str, Any], base: Path

@@ -32,15 +32,19 @@ from mechloop.model.dynamic import (
     TailPoint,
 )
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
+    MAX_POSITIONS,
     Argument,
     LawArgument,
     LawName,
+    Number,
+    QuantityText,
     RpmTime,
     Scalar,
     TableArgument,
     TableDerivatives,
     TableTime,
     Time,
+    UnitName,
     _Frozen,
 )
 from mechloop.model.synthesis import SynthesisTask
@@ -92,9 +96,9 @@ def _param_tag(value: Any) -> str | None:
 
 
 Param = Annotated[
-    Annotated[float, Tag("constant")]
+    Annotated[Number, Tag("constant")]
     | Annotated[Literal["function"], Tag("function")]
-    | Annotated[str, Tag("quantity"), WithJsonSchema({
+    | Annotated[QuantityText, Tag("quantity"), WithJsonSchema({
         "type": "string", "pattern": r"^(?!\s*function\s*$)",
         "description": "a number with its unit, e.g. '50 mm' or '90 deg'"})]
     | Annotated[ArgumentRole, Tag("argument")]
@@ -139,13 +143,13 @@ class Contour(_Frozen):
 class Units(_Frozen):
     """Units of the numbers in the model file (any pint unit of the right kind)."""
 
-    length: str = Field("m", description="length unit: m, cm, mm, ...")
-    angle: str = Field("deg", description="angle unit: deg, rad, grad")
-    mass: str = Field("kg", description="mass unit: kg, g, t")
-    inertia: str = Field("kg*m^2", description="moment of inertia unit: kg*m^2, g*cm^2")
-    force: str = Field("N", description="force unit: N, kN, kgf")
-    moment: str = Field("N*m", description="moment unit: N*m, kN*m, kgf*m")
-    acceleration: str = Field("m/s^2", description="unit of the acceleration of gravity")
+    length: UnitName = Field("m", description="length unit: m, cm, mm, ...")
+    angle: UnitName = Field("deg", description="angle unit: deg, rad, grad")
+    mass: UnitName = Field("kg", description="mass unit: kg, g, t")
+    inertia: UnitName = Field("kg*m^2", description="moment of inertia unit: kg*m^2, g*cm^2")
+    force: UnitName = Field("N", description="force unit: N, kN, kgf")
+    moment: UnitName = Field("N*m", description="moment unit: N*m, kN*m, kgf*m")
+    acceleration: UnitName = Field("m/s^2", description="unit of the acceleration of gravity")
 
 
 class Model(_Frozen):
@@ -157,7 +161,8 @@ class Model(_Frozen):
     name: str = ""
     description: str = ""
     units: Units = Units()
-    positions: int = Field(ge=1, description="N: calculation positions are 0..N")
+    positions: int = Field(ge=1, le=MAX_POSITIONS, description="N: calculation positions "
+                           "are 0..N (at most 10⁸)")
     time: Time | None = Field(
         None, description="model time; without it derivatives are analogs with respect to "
         "argument 1"

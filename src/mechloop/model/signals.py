@@ -9,8 +9,18 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
-#: A constant: a number in the model's units, or a string with its own unit ("50 mm").
-Scalar = float | str
+from mechloop.model.numbers import (  # noqa: F401  (QuantityText, Scalar: re-exported)
+    RANGE,
+    Number,
+    QuantityText,
+    Scalar,
+    UnitName,
+    usable,
+)
+
+#: Largest ``positions`` (N) of a model: 10⁸ positions; what a solve needs in memory is
+#: checked against the machine before solving (:func:`mechloop.solve.memory.require_memory`).
+MAX_POSITIONS = 100_000_000
 
 
 class _Frozen(BaseModel):
@@ -50,7 +60,7 @@ class TableArgument(_Frozen):
     """
 
     table: _table_of(Scalar)
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
     derivatives: TableDerivatives = Field(
         "linear", description="'linear': derivatives of the piecewise-linear fill (central "
         "differences: the slope inside a segment, zero while a value holds); 'spline': of "
@@ -71,7 +81,7 @@ class LawArgument(_Frozen):
     law: LawName
     start: tuple[int, Scalar]
     end: tuple[int, Scalar]
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
 
 
 class CsvTable(_Frozen):
@@ -82,7 +92,7 @@ class CsvTable(_Frozen):
 
     csv: str = Field(description="CSV file, relative to the model file")
     column: str | int = Field(1, description="column of the values: header or index")
-    unit: str | None = Field(None, description="unit of the values (default: model unit)")
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
     derivatives: TableDerivatives = Field("linear", description="as for a table")
 
 
@@ -112,15 +122,22 @@ class RpmTime(_Frozen):
     """Model time from a speed: ``turns`` full turns (default one) over positions ``0..N``,
     ``t = 60·turns/n · k/N``."""
 
-    rpm: float = Field(gt=0, description="speed of the input, revolutions per minute")
-    turns: float = Field(1.0, gt=0, description="turns of the input over positions 0..N "
-                         "(2 for a four-stroke cycle over 720 degrees)")
+    rpm: Number = Field(ge=1e-6, le=1e6, description="speed of the input, revolutions per "
+                        "minute (10⁻⁶ to 10⁶)")
+    turns: Number = Field(1.0, ge=1e-6, le=1e6, description="turns of the input over "
+                          "positions 0..N (2 for a four-stroke cycle over 720 degrees)")
+
+
+#: Shortest time between two positions, s (a speed of 10⁶ rpm over 10⁷ positions steps
+#: 6·10⁻¹²; shorter steps only square velocities towards overflow).
+MIN_TIME_STEP = 1e-15
 
 
 class TableTime(_Frozen):
-    """Model time as a table ``{position: seconds}`` filled like an argument table."""
+    """Model time as a table ``{position: seconds}`` filled like an argument table; it
+    increases by at least :data:`MIN_TIME_STEP` from position to position."""
 
-    table: _table_of(float)
+    table: _table_of(Number)
     derivatives: TableDerivatives = Field(
         "linear", description="how dt/dposition is taken: 'linear' or 'spline' (as for "
         "argument tables)")
@@ -144,6 +161,10 @@ Time = Annotated[
 ]
 
 
+#: Largest CSV table read, bytes (10⁶ rows of a position and a value take about 20 MB).
+MAX_CSV_BYTES = 64 * 2**20
+
+
 def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
     """The table form of a ``{csv: ...}`` spec (``{table: {position: value}, ...}``).
 
@@ -153,11 +174,21 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
 
     path = Path(str(spec["csv"]))
     path = path if path.is_absolute() else base / path
+    if path.exists() and not path.is_file():  # a folder, a device, a pipe: never read
+        raise ValueError(f"{path} is not a CSV file", "give the path of a CSV file, "
+                         "relative to the model file")
     try:
+        if path.stat().st_size > MAX_CSV_BYTES:
+            raise ValueError(f"{path} is larger than {MAX_CSV_BYTES // 2**20} MiB, the limit "
+                             "for a table", "give fewer rows (one per calculation position "
+                             "at most)")
         frame = pd.read_csv(path)
     except FileNotFoundError:
         raise ValueError(f"CSV file {path} not found",
                          "give the path relative to the model file") from None
+    except OSError as exc:
+        raise ValueError(f"cannot read {path} ({exc.strerror or exc})",
+                         "check the path and its permissions") from None
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         raise ValueError(f"cannot read {path} as CSV ({exc})",
                          "write a header line, then position,value rows") from None
@@ -179,6 +210,13 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
         row = int(bad.to_numpy().nonzero()[0][0]) + 2  # 1-based, after the header
         raise ValueError(f"{path}, line {row}: not a position number and a value",
                          "every row is an integer position and a number")
+    wild = ~(values.map(lambda v: usable(float(v))) & positions.map(lambda k: usable(float(k))))
+    if wild.any():
+        row = int(wild.to_numpy().nonzero()[0][0])
+        raise ValueError(f"{path}, line {row + 2}: {positions.iloc[row]}, {values.iloc[row]} "
+                         f"is outside the range of a position and a model value ({RANGE})",
+                         "write a whole position number and a finite value of a physical "
+                         "size (model units)")
     table = {int(k): float(v) for k, v in zip(positions, values, strict=True)}
     out: dict[str, Any] = {"table": table, "derivatives": spec.get("derivatives", "linear")}
     if spec.get("unit") is not None:

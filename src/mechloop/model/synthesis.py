@@ -16,7 +16,7 @@ from pydantic import Field, model_validator
 
 from mechloop.errors import Problem
 from mechloop.model.dynamic import HeadPoint, TailPoint
-from mechloop.model.signals import Scalar, _Frozen
+from mechloop.model.signals import Number, Scalar, _Frozen
 from mechloop.model.units import UnitProblem, to_si
 
 if TYPE_CHECKING:
@@ -36,9 +36,9 @@ class Tie(_Frozen):
                      "link's delta, an argument's offset), 'start2.x' (a contour's fixed "
                      "start) or 'v4.x' / 'v4.y' (a component of the constant vector 4: "
                      "its r and a follow)")
-    factor: float = Field(1.0, description="how much the target moves per unit of the "
+    factor: Number = Field(1.0, description="how much the target moves per unit of the "
                           "dimension")
-    shift: float = Field(0.0, description="added to the target (the target's model units)")
+    shift: Number = Field(0.0, description="added to the target (the target's model units)")
 
 
 class Dimension(_Frozen):
@@ -46,7 +46,7 @@ class Dimension(_Frozen):
     built from Assur groups writes one per varied dimension, e.g. a link length that two
     vectors carry, or a ground point's x that moves a frame vector and a contour start)."""
 
-    value: float = Field(description="the dimension's value in the model (model units)")
+    value: Number = Field(description="the dimension's value in the model (model units)")
     sets: list[Tie] = Field(min_length=1, description="the constants it sets")
 
 
@@ -75,7 +75,7 @@ class Curve(_Frozen):
 
     x: str = Field(description="expression in t, e.g. '20'")
     y: str = Field(description="expression in t, e.g. '20 + 25*t'")
-    t: tuple[float, float] = Field((0.0, 1.0), description="range of the parameter t")
+    t: tuple[Number, Number] = Field((0.0, 1.0), description="range of the parameter t")
     count: int = Field(10, ge=2, description="number of target points")
 
 
@@ -102,7 +102,7 @@ class PathTask(_Frozen):
         "the curve (false), or at inputs that the synthesis chooses (free)")
     ordered: bool = Field(True, description="with timing: free, the inputs of the "
                           "targets increase in the targets' order (within one turn)")
-    weights: list[float] | None = Field(None, description="E_k: a weight per target")
+    weights: list[Number] | None = Field(None, description="E_k: a weight per target")
 
 
 class FunctionTask(_Frozen):
@@ -140,7 +140,7 @@ class PressureAngle(_Frozen):
 
     max: Scalar = Field(description="allowed pressure angle (angle units), e.g. 40")
     contours: list[int] | None = Field(None, description="contours to check (all Pl3/Pl4)")
-    weight: float = 1000.0
+    weight: Number = 1000.0
 
 
 class Rotation(_Frozen):
@@ -149,7 +149,7 @@ class Rotation(_Frozen):
 
     between: tuple[ParamName, ParamName]
     max: Scalar
-    weight: float = 1000.0
+    weight: Number = 1000.0
 
 
 class Workspace(_Frozen):
@@ -158,7 +158,7 @@ class Workspace(_Frozen):
     points: list[Point]
     box: tuple[tuple[Scalar, Scalar], tuple[Scalar, Scalar]] | None = None
     polygon: list[tuple[Scalar, Scalar]] | None = None
-    weight: float = 1000.0
+    weight: Number = 1000.0
 
     @model_validator(mode="after")
     def _one_shape(self) -> Workspace:
@@ -189,8 +189,8 @@ class Criterion(_Frozen):
     reduce: Reduction = "absmax"
     max: Scalar | None = None
     min: Scalar | None = None
-    minimize: float | None = Field(None, description="weight of the reduced value in Q")
-    weight: float = 1000.0
+    minimize: Number | None = Field(None, description="weight of the reduced value in Q")
+    weight: Number = 1000.0
 
     @model_validator(mode="after")
     def _column_or_point(self) -> Criterion:
@@ -220,7 +220,7 @@ class Search(_Frozen):
     good_enough: Scalar | None = Field(None, description="stop when Q is at most this")
     patience: int | None = Field(60, ge=1, description="stop after this many generations "
                                  "without improvement")
-    time: float | None = Field(None, gt=0, description="time budget, s")
+    time: Number | None = Field(None, gt=0, description="time budget, s")
     polish: bool = Field(True, description="polish the best design by a local search")
     starts: int = Field(8, ge=1, description="multistart: local searches")
     start: dict[str, Scalar] | list[dict[str, Scalar]] | None = Field(

@@ -6,9 +6,13 @@ The core never sees a unit: lengths are metres and angles radians once a model i
 from __future__ import annotations
 
 import functools
+import math
+import re
 from typing import Literal
 
 import pint
+
+from mechloop.model.numbers import MAX_QUANTITY_CHARS, RANGE, flush, usable
 
 Kind = Literal["length", "angle", "mass", "inertia", "force", "moment", "acceleration"]
 
@@ -53,10 +57,14 @@ def _is_kind(unit: pint.Unit, kind: Kind) -> bool:
 @functools.cache
 def unit_factor(name: str, kind: Kind) -> float:
     """Factor that converts a number in unit ``name`` to SI (m or rad)."""
+    if len(str(name)) > MAX_QUANTITY_CHARS or not _plain_powers(str(name)):
+        raise UnitProblem(f"{str(name)[:40]!r} is not a unit of a length of at most "
+                          f"{MAX_QUANTITY_CHARS} characters with small powers",
+                          f"use a {kind} unit: {EXAMPLES[kind]}")
     try:
         unit = registry().parse_units(str(name).strip())
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
-            AttributeError, TypeError, ValueError, AssertionError) as exc:
+            AttributeError, TypeError, ValueError, AssertionError, RecursionError) as exc:
         raise UnitProblem(f"unknown unit {name!r}", f"use a {kind} unit: {EXAMPLES[kind]}"
                           ) from exc
     if not _is_kind(unit, kind):
@@ -69,15 +77,26 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
     """Convert a model-file value to SI.
 
     ``value`` is a number in ``default_unit`` or a string with its own unit ("50 mm").
-    Raises :class:`UnitProblem` for an unreadable string or a unit of the wrong kind.
+    Raises :class:`UnitProblem` for an unreadable string, a unit of the wrong kind, or a
+    value that is not finite or larger than :data:`~mechloop.model.numbers.MAX_MAGNITUDE`
+    (in the file's units or in SI).
     """
     if not isinstance(value, str):
-        return float(value) * unit_factor(default_unit, kind)
+        return _usable(float(value), value, kind, unit_factor(default_unit, kind))
     text = value.strip()
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise UnitProblem(f"a quantity of {len(text)} characters",
+                          f"write a number and a unit like '{SAMPLE[kind]}'")
     try:
-        return float(text) * unit_factor(default_unit, kind)
+        number = float(text)
     except ValueError:
         pass
+    else:
+        return _usable(number, value, kind, unit_factor(default_unit, kind))
+    if not _plain_powers(text):
+        raise UnitProblem(f"cannot read {value!r} as {_a(kind)}: only units take powers, "
+                          "by a small number", f"write a number and a unit like "
+                          f"'{SAMPLE[kind]}' or '2 kg*m^2'")
     try:
         qty = registry().Quantity(text)
     except Exception as exc:  # pint raises many types for unreadable text
@@ -93,4 +112,42 @@ def to_si(value: float | str, kind: Kind, default_unit: str) -> float:
     if not _is_kind(qty.units, kind):
         raise UnitProblem(f"{value!r} is not {_a(kind)}",
                           f"use a {kind} unit: {EXAMPLES[kind]}")
-    return float(qty.to(SI_UNIT[kind]).magnitude)
+    try:
+        number = float(qty.magnitude)
+    except OverflowError:  # an integer beyond float, e.g. 10**400
+        number = math.inf
+    return _usable(number, value, kind, float(qty.to(SI_UNIT[kind]).magnitude) / number
+                   if usable(number) and number != 0 else 1.0)
+
+
+_POWER = re.compile(r"\*\*|\^")
+_EXPONENT = re.compile(r"\(?\s*[-+]?\d{1,2}(\.\d+)?\s*\)?(?![\d.]|\s*(\*\*|\^))")
+
+
+def _plain_powers(text: str) -> bool:
+    """Whether every power in ``text`` raises a unit name (or a group without numbers) to
+    a number of at most two digits: pint computes powers of numbers exactly, so
+    ``9**9**9`` would never finish."""
+    for match in _POWER.finditer(text):
+        before = text[:match.start()].rstrip()
+        if not _EXPONENT.match(text[match.end():].lstrip()):
+            return False
+        if before.endswith(")"):
+            if any(c.isdigit() for c in before[before.rfind("("):]):
+                return False
+        elif not before or not (before[-1].isalpha() or before[-1] in "_°µΩ"):
+            return False
+    return True
+
+
+def _usable(number: float, value: float | str, kind: Kind, factor: float) -> float:
+    """``number · factor`` (SI; 0 when it is below
+    :data:`~mechloop.model.numbers.MIN_MAGNITUDE` in size), or a :class:`UnitProblem` when
+    ``number`` or the result is not finite or larger than
+    :data:`~mechloop.model.numbers.MAX_MAGNITUDE`."""
+    si = flush(number * factor) if usable(number) else math.inf
+    if not usable(si):
+        raise UnitProblem(f"{value!r} is outside the range of {_a(kind)} ({RANGE}, in the "
+                          f"file's units and in {SI_UNIT[kind]})",
+                          f"write {_a(kind)} like '{SAMPLE[kind]}'")
+    return si

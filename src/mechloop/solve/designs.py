@@ -21,6 +21,7 @@ from mechloop.model.check import require_valid
 from mechloop.model.schema import Model
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import _finish_angles, _setup, _solve_block
+from mechloop.solve.memory import require_memory
 
 Array = NDArray[np.float64]
 
@@ -183,6 +184,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
         raise SolveError("every varied parameter needs one value per design",
                          f"pass 1-D arrays of one length (got shapes {sorted(sizes)})")
     n_designs = next(iter(sizes))[0] if sizes else 1
+    require_memory(model, designs=max(n_designs, 1 if inputs is None else inputs.shape[0]))
     n_pos = model.positions + 1
     full = (n_designs, n_pos)
     time = model_time(model)

@@ -136,7 +136,8 @@ def model_arguments(model: Model, time: Signal | None, *, strict: bool = True
         raise SolveError(
             f"the model has no time and argument {first} does not change at positions "
             f"{shown}: derivatives with respect to it are undefined there",
-            "give the model a time (time: {rpm: ...} or time: {table: ...})")
+            "give the model a time (time: {rpm: ...} or time: {table: ...})"
+        ).at(("arguments", first))
     d1, dd1 = base.rate, base.accel
     out = {}
     for number, sig in raw.items():

@@ -35,6 +35,7 @@ from mechloop.modules.planar import (
     track_variant,
 )
 from mechloop.solve.inputs import Signal, model_arguments, model_time
+from mechloop.solve.memory import require_memory
 from mechloop.solve.results import ChainBreak, Results
 
 Array = NDArray[np.float64]
@@ -273,6 +274,7 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     :class:`~mechloop.errors.SolveError` if its derivatives are undefined.
     """
     structure = require_valid(model)
+    require_memory(model)
     n_pos = model.positions + 1
     time = model_time(model)
     if analogs_of is not None:

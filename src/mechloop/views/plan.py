@@ -594,9 +594,12 @@ def _number(value: float | str | None) -> str:
 def _named_point(scene: PlanScene, name: str) -> Complex:
     dynamic = scene.dynamic
     if dynamic is None:
-        raise ViewError(f"point {name!r} needs dynamic results",
-                        "pass mechloop.solve_dynamics(model), or give the point as "
-                        "{tail: K}, {head: K} or {vector: K, share: s}")
+        raise ViewError(f"point {name!r} (a joint or centre of mass) needs dynamic "
+                        "results, of a model with bodies",
+                        "add bodies and joints to the model file (see "
+                        "examples/crank_slider_dynamics.yaml), or give the point on a vector: "
+                        "head:K, tail:K or vector:K:s (in Python: {head: K}, ..., with the "
+                        "results of solve_dynamics)")
     pairs = {p.name: p for p in dynamic.mechanism.pairs}
     if name in pairs:
         return scene.to_display(scene.placement.point(pairs[name].at).z)
