@@ -181,6 +181,6 @@ def test_readme_states_the_loading_limits():
                    f"at most {limits.MAX_NODES:,} items",
                    f"at most {numbers.MAX_MAGNITUDE:.0e}".replace("e+", "e") + " in size",
                    f"below {numbers.MIN_MAGNITUDE:.0e} it counts as 0",
-                   f"is at most 10⁸"):
+                   "is at most 10⁸"):
         assert phrase in text, phrase
     assert signals.MAX_POSITIONS == 10**8
