@@ -90,6 +90,16 @@ class Report:
         return "\n".join(parts)
 
 
+def _short_traceback(exc_info) -> str:
+    """The traceback from the first frame in mechloop's sources on (the test runner's and
+    the CLI framework's frames above it say nothing about the failure)."""
+    lines = traceback.format_exception(*exc_info)
+    first = next((i for i, line in enumerate(lines)
+                  if line.startswith('  File "') and "/mechloop/" in line
+                  and "/fuzz/" not in line), 1)
+    return "".join(lines[:1] + lines[first:])
+
+
 def _alarm(signum, frame):
     raise FuzzTimeout(f"over {TIME_LIMIT:g} s")
 
@@ -168,7 +178,7 @@ def _run_commands(directory: Path, model: str) -> list[dict]:
                     signal.setitimer(signal.ITIMER_REAL, 0)
             except FuzzTimeout:
                 result.update(failure=f"timeout (over {TIME_LIMIT:g} s)",
-                              detail=traceback.format_exc())
+                              detail=_short_traceback(sys.exc_info()))
                 result["seconds"] = time.perf_counter() - start
                 results.append(result)
                 break
@@ -178,7 +188,7 @@ def _run_commands(directory: Path, model: str) -> list[dict]:
         failures, details = [], []
         if res.exception is not None and not isinstance(res.exception, SystemExit):
             failures.append(f"traceback: {type(res.exception).__name__}")
-            details.append("".join(traceback.format_exception(*res.exc_info)))
+            details.append(_short_traceback(res.exc_info))
         elif res.exit_code not in (0, 2):
             failures.append(f"exit code {res.exit_code}")
             details.append(res.output[-2000:])

@@ -130,6 +130,9 @@ def main(argv: list[str] | None = None) -> int:
                 times.append(outcome.seconds)
             for outcome in report.failures:
                 groups[_signature(outcome)].append(report)
+            if inputs % 100 == 0:
+                print(f"{inputs} inputs, {sum(map(len, groups.values()))} failing, "
+                      f"{time.perf_counter() - start:.0f} s", file=sys.stderr)
 
         drive()
         print(f"{name}: done ({inputs} inputs so far, {time.perf_counter() - start:.0f} s)",

@@ -53,6 +53,8 @@ BREAK_REASONS = {
     "Pl4": "the two vectors cannot close the loop (triangle inequality fails)",
 }
 DEAD_POINT = "dead point: the loop's Jacobian is singular, velocities are unbounded"
+OVERFLOW = ("the values overflow floating point (a dimension, an input or a speed is too "
+            "large)")
 
 
 @dataclass
@@ -297,7 +299,8 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         lo = max(first - 1, 0)  # one position of overlap carries variant tracking across
         hi = min(first + max(int(block), 2), n_pos)
         size, skip = hi - lo, first - lo
-        solved = _solve_block(setup, lo, hi, (size,), last_variant)
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            solved = _solve_block(setup, lo, hi, (size,), last_variant)
         last_variant = solved.last_variant
         for info in setup.ordered:
             no_solution[info.number][first:hi] = solved.no_solution[info.number][skip:]
@@ -310,7 +313,11 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     broken = np.zeros(n_pos, dtype=bool)
     for info in setup.ordered:
         broken |= no_solution[info.number] | singular[info.number]
-    _finish_angles(setup, {name: arrays[0] for name, arrays in out.items()})
+    overflow = _overflow(setup, out, broken)
+    for mask in overflow.values():
+        broken |= mask
+    with np.errstate(over="ignore", invalid="ignore"):
+        _finish_angles(setup, {name: arrays[0] for name, arrays in out.items()})
     for arrays in out.values():
         for arr in arrays:
             arr[broken] = np.nan
@@ -318,7 +325,8 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     breaks = []
     for info in setup.ordered:
         for reason, mask in ((BREAK_REASONS[info.module], no_solution[info.number]),
-                             (DEAD_POINT, singular[info.number])):
+                             (DEAD_POINT, singular[info.number]),
+                             (OVERFLOW, overflow.get(info.number, np.zeros(n_pos, dtype=bool)))):
             if mask.any():
                 breaks.append(ChainBreak(info.number, info.module, np.flatnonzero(mask),
                                          reason))
@@ -345,6 +353,26 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)),
         analogs_of=analogs_of,
     )
+
+
+def _overflow(setup: _Setup, out: dict[str, tuple[Array, Array, Array]],
+              broken: NDArray[np.bool_]) -> dict[int, NDArray[np.bool_]]:
+    """Per contour, the positions not already broken where a parameter of its vectors has a
+    non-finite value, rate or acceleration (floating point overflowed): a chain break too,
+    so no row that is not marked broken holds a non-number."""
+    found: dict[int, NDArray[np.bool_]] = {}
+    seen = broken.copy()
+    for info in setup.ordered:
+        bad = np.zeros_like(broken)
+        for number in info.vectors:
+            for name in (f"r{number}", f"a{number}"):
+                for arr in out.get(name, ()):
+                    bad |= ~np.isfinite(arr)
+        bad &= ~seen
+        if bad.any():
+            found[info.number] = bad
+            seen |= bad
+    return found
 
 
 def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
