@@ -1,7 +1,9 @@
 """Values that overflow floating point inside the solver are chain breaks: the rows are
 marked broken, the break says why, and no NumPy warning reaches the user (found by the
-fuzz suite: an argument table starting at 1e308 deg wrote empty accelerations into rows
-not marked broken, after RuntimeWarnings)."""
+fuzz suite: an argument table starting at 1e308 deg, or 1e308 rpm, wrote empty
+accelerations into rows not marked broken after RuntimeWarnings; a pin radius of 1e9 m
+warned before its error).  The models are built past the loader, which refuses such
+values where they enter: the solver must hold for a model built in code too."""
 
 from __future__ import annotations
 
@@ -9,8 +11,10 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+import pytest
 
-from mechloop import load_model
+from mechloop import SolveError, load_model
+from mechloop.dynamics.analysis import solve_dynamics
 from mechloop.solve.kinematics import OVERFLOW, solve
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "crank_slider.yaml"
@@ -42,3 +46,25 @@ def test_finite_models_have_no_overflow_break():
     results = solve(load_model(EXAMPLE))
     assert not results.broken.any()
     assert not results.breaks
+
+
+def test_an_overflowing_model_time_is_a_chain_break_without_warnings():
+    model = load_model(EXAMPLE)
+    model = model.model_copy(update={"time": model.time.model_copy(update={"rpm": 1e308})})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        results = solve(model)
+        frame = results.to_frame()
+    assert any(b.reason == OVERFLOW for b in results.breaks)
+    kept = frame[~frame["chain_break"]].drop(columns="chain_break")
+    assert np.isfinite(kept.to_numpy(dtype=float)).all()
+
+
+def test_friction_that_overflows_does_not_settle_without_warnings():
+    model = load_model(EXAMPLE.with_name("crank_slider_friction.yaml"))
+    friction = model.friction.model_copy(update={"radius": 1e9})
+    model = model.model_copy(update={"friction": friction})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(SolveError, match="did not settle"):
+            solve_dynamics(model)

@@ -313,7 +313,10 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     broken = np.zeros(n_pos, dtype=bool)
     for info in setup.ordered:
         broken |= no_solution[info.number] | singular[info.number]
-    overflow = _overflow(setup, out, broken)
+    clock = [] if time is None else [time.value]
+    overflow = _overflow(setup, out, broken,
+                         [*clock, *(field for s in args.values() for field in (
+                             s.value, s.rate, s.accel))])
     for mask in overflow.values():
         broken |= mask
     with np.errstate(over="ignore", invalid="ignore"):
@@ -356,14 +359,19 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
 
 
 def _overflow(setup: _Setup, out: dict[str, tuple[Array, Array, Array]],
-              broken: NDArray[np.bool_]) -> dict[int, NDArray[np.bool_]]:
+              broken: NDArray[np.bool_], inputs: list[Array]
+              ) -> dict[int, NDArray[np.bool_]]:
     """Per contour, the positions not already broken where a parameter of its vectors has a
     non-finite value, rate or acceleration (floating point overflowed): a chain break too,
-    so no row that is not marked broken holds a non-number."""
+    so no row that is not marked broken holds a non-number.  Positions where one of
+    ``inputs`` (the time, the arguments and their derivatives) is not finite count for the
+    first contour solved."""
     found: dict[int, NDArray[np.bool_]] = {}
     seen = broken.copy()
-    for info in setup.ordered:
+    for i, info in enumerate(setup.ordered):
         bad = np.zeros_like(broken)
+        for arr in inputs if i == 0 else ():
+            bad |= ~np.isfinite(arr)
         for number in info.vectors:
             for name in (f"r{number}", f"a{number}"):
                 for arr in out.get(name, ()):
