@@ -109,6 +109,19 @@ KNOWN = {
                                 "angle: 180"),
     "force_value_nan": _replace(DYNAMICS, FORCE, "value: .nan, angle: 180"),
     "force_angle_1e20": _replace(DYNAMICS, FORCE, "value: 1000, angle: 1e20"),
+    "force_angle_nan": _replace(DYNAMICS, FORCE, "value: 1000, angle: .nan"),
+    "rpm_1e308": _replace(SLIDER, "time: {rpm: 3000}", "time: {rpm: 1.0e+308}"),
+    "table_1e308": _replace(SLIDER, "{0: 0, 72: 360}", "{0: 1.0e+308, 72: 360}"),
+    "friction_radius_1e9": _replace(_example("crank_slider_friction.yaml"), "radius: 0.015",
+                                    "radius: 1.0e+9"),
+    "unit_expression_1200_tokens": _replace(SLIDER, "units: {length: m,",
+                                            "units: {length: '" + "1 " * 1200 + "m',"),
+    "csv_path_is_a_directory": _replace(SLIDER, "1: {table: {0: 0, 72: 360}}",
+                                        '1: {csv: ""}'),
+    "alias_bomb_inside_a_value": _replace(SLIDER, "name: Offset slider-crank",
+                                          "name: Offset slider-crank\nextra:\n  " +
+                                          BILLION_LAUGHS.replace("\n", "\n  ").rstrip()),
+    "nesting_5000_deep": SLIDER + "nested: " + "[" * 5000 + "1" + "]" * 5000 + "\n",
     # errors without a place
     "non_utf8": _replace(SLIDER, "name: Offset", "name: Offset \udcff"),
     "nul_byte": _replace(SLIDER, "name: Offset", "name: Offset \x00"),
@@ -121,19 +134,40 @@ CSV_KNOWN = {
     "csv_table_huge_position": f"position,value\n0,0\n{2**64},360\n",
     "csv_table_empty": "",
     "csv_table_binary": "position,value\n0,\xff\xfe\n",
+    "csv_table_inf_position": "position,value\ninf,inf\n72,360\n",
 }
+
+
+ACCEPTABLE = {"group_angle_1e20", "group_angle_huge_int", "group_guide_angle_1e20",
+              "force_angle_1e20"}
+"""Cases whose fix may accept the input (an angle is taken modulo a turn); every other case
+feeds a malformed, non-finite or absurd value that must be refused where it enters."""
+
+
+def _assert_refused(report) -> None:
+    """Clean, and every command exits 2 with a message (the input is refused)."""
+    assert_clean(report)
+    accepted = [o for o in report.outcomes if o.exit_code != 2 or "error" not in o.output]
+    assert not accepted, ("the input must be refused (exit 2 with an error), but:\n"
+                          + "\n".join(f"$ mechloop {' '.join(o.command)} => exit "
+                                      f"{o.exit_code}: {o.output[-300:]}" for o in accepted)
+                          + "\n" + report.reproducer())
 
 
 @pytest.mark.parametrize("name", sorted(KNOWN))
 def test_inputs_the_issue_reports(name):
-    assert_clean(run_input({"model.yaml": KNOWN[name]}))
+    report = run_input({"model.yaml": KNOWN[name]})
+    if name in ACCEPTABLE:
+        assert_clean(report)
+    else:
+        _assert_refused(report)
 
 
 @pytest.mark.parametrize("name", sorted(CSV_KNOWN))
 def test_csv_tables_the_issue_reports(name):
     model = _replace(SLIDER, "1: {table: {0: 0, 72: 360}}", "1: {csv: table.csv}")
-    assert_clean(run_input({"model.yaml": model,
-                            "table.csv": CSV_KNOWN[name].encode("utf-8", "surrogateescape")}))
+    _assert_refused(run_input({"model.yaml": model, "table.csv": CSV_KNOWN[name].encode(
+        "utf-8", "surrogateescape")}))
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=[e.stem for e in EXAMPLES])
