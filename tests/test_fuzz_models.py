@@ -20,7 +20,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from fuzz.harness import assert_clean, run_input, warm_up
+from fuzz.harness import assert_clean, check_rows, run_input
 from fuzz.mutations import BILLION_LAUGHS, EXAMPLES, mutated
 from fuzz.strategies import raw_files, schema_files, yaml_files
 from hypothesis import HealthCheck, Phase, given, settings
@@ -46,10 +46,26 @@ def _scaled(n: int):
 
 
 @pytest.fixture(scope="module", autouse=True)
-def warmed_up():
-    """Import and run every command once here, so no limit fires on a first call."""
-    warm_up(EXAMPLES[0])
-    warm_up(next(e for e in EXAMPLES if "groups" in e.name))
+def fork_server():
+    """Start the harness's fork server (it imports mechloop and runs every example once)
+    before the first timed input; an example must come out clean."""
+    assert_clean(run_input({"model.yaml": EXAMPLES[0].read_bytes()}))
+
+
+def test_the_judge_of_written_rows(tmp_path):
+    """A non-finite or non-numeric cell is a failure only in a row not marked broken."""
+    table = tmp_path / "out.csv"
+    table.write_text("position,x [m],chain_break\n0,1.5,False\n1,,True\n2,inf,True\n"
+                     "3,nan,False\n4,,False\n5,abc,False\n", encoding="utf-8")
+    assert check_rows(table) == ["row 3, x [m]: 'nan'", "row 4, x [m]: ''",
+                                 "row 5, x [m]: 'abc'"]
+    records = tmp_path / "out.json"
+    records.write_text('[{"position": 0, "x [m]": null, "chain_break": true},'
+                       ' {"position": 1, "x [m]": null, "chain_break": false},'
+                       ' {"position": 2, "x [m]": Infinity, "chain_break": false},'
+                       ' {"position": 3, "x [m]": 2.0, "chain_break": false}]',
+                       encoding="utf-8")
+    assert check_rows(records) == ["row 1, x [m]: None", "row 2, x [m]: inf"]
 
 
 def _example(name: str) -> str:

@@ -1,7 +1,7 @@
 """Run one fuzz input through ``mechloop check`` and ``mechloop solve`` and judge it.
 
-Each input runs in a child forked from the warmed-up test process (imports and first calls
-already done, so no time limit fires on them), with
+Each input runs in a child forked from a fork server that imported mechloop and ran every
+example once (imports and first calls done, so no time limit fires on them), with
 
 - a soft wall-clock limit per command (``SIGALRM`` raises :class:`FuzzTimeout` inside the
   run, so the report shows where it hung),
@@ -21,9 +21,9 @@ from __future__ import annotations
 import csv
 import json
 import math
+import multiprocessing.forkserver
 import os
 import resource
-import select
 import signal
 import sys
 import tempfile
@@ -208,7 +208,8 @@ def _run_commands(directory: Path, model: str) -> list[dict]:
     return results
 
 
-def _child(directory: Path, model: str, write_fd: int) -> None:
+def _child(directory: str, model: str, connection) -> None:
+    """The forked child: cap the address space, run the commands, send the outcomes."""
     _, hard = resource.getrlimit(resource.RLIMIT_AS)
     try:
         with open("/proc/self/statm") as statm:
@@ -217,71 +218,81 @@ def _child(directory: Path, model: str, write_fd: int) -> None:
     except (OSError, ValueError):
         pass
     try:
-        payload = _run_commands(directory, model)
+        payload = _run_commands(Path(directory), model)
     except BaseException:  # the harness itself broke: report it, never hang the parent
         payload = [{"command": ["harness"], "failure": "harness error", "exit_code": None,
                     "detail": traceback.format_exc(), "seconds": 0.0, "output": ""}]
-    data = json.dumps(payload).encode()
-    view = memoryview(data)
-    while view:
-        view = view[os.write(write_fd, view):]
-    os.close(write_fd)
+    connection.send_bytes(json.dumps(payload).encode())
+    connection.close()
+
+
+_CONTEXT: list = []
+
+
+def context():
+    """The multiprocessing context every input runs in: children forked from a fork server
+    (a fresh, single-threaded process, so no lock another thread of the test process held
+    is inherited) that imported mechloop and ran every example once (``fuzz.warm``)."""
+    if not _CONTEXT:
+        ctx = multiprocessing.get_context("forkserver")
+        ctx.set_forkserver_preload(["fuzz.warm"])
+        # The server imports its preload before it learns the parent's sys.path: give it
+        # the directory of the ``fuzz`` package (a failed preload would be silent, and
+        # every child would then import mechloop on its own).
+        saved = os.environ.get("PYTHONPATH")
+        here = str(Path(__file__).resolve().parents[1])
+        os.environ["PYTHONPATH"] = os.pathsep.join([here, *([saved] if saved else [])])
+        try:
+            multiprocessing.forkserver.ensure_running()
+        finally:
+            if saved is None:
+                del os.environ["PYTHONPATH"]
+            else:
+                os.environ["PYTHONPATH"] = saved
+        _CONTEXT.append(ctx)
+    return _CONTEXT[0]
 
 
 def run_input(files: dict[str, bytes | str]) -> Report:
     """Write ``files`` (name -> content; the one named ``model.*`` is the model, the others
-    are its CSV tables) to a fresh directory, run every command on the model in a forked
-    child, and return the judged outcomes."""
+    are its CSV tables) to a fresh directory, run every command on the model in a child of
+    the fork server, and return the judged outcomes."""
     model = next(name for name in files if name.startswith("model."))
     encoded = {name: data.encode("utf-8", "surrogateescape") if isinstance(data, str)
                else data for name, data in files.items()}
     report = Report(encoded)
+    ctx = context()
     with tempfile.TemporaryDirectory(prefix="mechloop-fuzz-") as tmp:
         directory = Path(tmp)
         for name, data in encoded.items():
             (directory / name).write_bytes(data)
-        read_fd, write_fd = os.pipe()
-        sys.stdout.flush()
-        sys.stderr.flush()
-        pid = os.fork()
-        if pid == 0:  # pragma: no cover - the child
-            code = 0
-            try:
-                os.close(read_fd)
-                _child(directory, model, write_fd)
-            except BaseException:
-                code = 3
-            finally:
-                os._exit(code)
-        os.close(write_fd)
+        receive, send = ctx.Pipe(duplex=False)
+        child = ctx.Process(target=_child, args=(str(directory), model, send), daemon=True)
+        child.start()
+        send.close()
         start = time.perf_counter()
-        deadline = start + len(COMMANDS) * TIME_LIMIT + 5
-        chunks: list[bytes] = []
-        killed = False
-        while True:
-            left = deadline - time.perf_counter()
-            if left <= 0:
-                os.kill(pid, signal.SIGKILL)
-                killed = True
-                break
-            ready, _, _ = select.select([read_fd], [], [], left)
-            if ready:
-                chunk = os.read(read_fd, 1 << 16)
-                if not chunk:
-                    break
-                chunks.append(chunk)
-        os.close(read_fd)
-        _, status = os.waitpid(pid, 0)
+        payload = None
+        try:
+            if receive.poll(len(COMMANDS) * TIME_LIMIT + 5):
+                payload = json.loads(receive.recv_bytes())
+        except (EOFError, OSError, ValueError):
+            payload = None
+        finally:
+            receive.close()
+        killed = child.is_alive() and payload is None
+        if child.is_alive():
+            child.join(2)
+        if child.is_alive():
+            child.kill()
+        child.join()
         seconds = time.perf_counter() - start
     if killed:
         report.outcomes.append(Outcome(("check/solve", model), None, seconds,
                                        failure="hang: killed by the hard time limit"))
         return report
-    try:
-        payload = json.loads(b"".join(chunks))
-    except ValueError:
+    if payload is None:
         report.outcomes.append(Outcome(("check/solve", model), None, seconds,
-                                       failure=f"child died (status {status})"))
+                                       failure=f"child died (exit code {child.exitcode})"))
         return report
     for item in payload:
         report.outcomes.append(Outcome(tuple(item["command"]), item["exit_code"],
@@ -290,16 +301,17 @@ def run_input(files: dict[str, bytes | str]) -> Report:
     return report
 
 
-def warm_up(example: Path) -> None:
-    """Run every command once in this process, so the children inherit loaded modules and
-    warmed caches and no limit fires on a first call."""
+def warm_up(example: Path, commands: tuple[tuple[str, ...], ...] = COMMANDS) -> None:
+    """Run every command once on ``example`` in this process (the fork server), so the
+    children inherit loaded modules and warmed caches and no limit fires on a first
+    call."""
     from typer.testing import CliRunner
 
     from mechloop.cli import app
 
     runner = CliRunner()
     with tempfile.TemporaryDirectory() as tmp:
-        for command in COMMANDS:
+        for command in commands:
             args = [command[0], str(example), *[
                 str(Path(tmp) / a) if a.startswith("out.") else a for a in command[1:]]]
             runner.invoke(app, args)

@@ -9,7 +9,8 @@ where they happen (the innermost mechloop frame), with one reproducer per group 
     .venv/bin/python tests/fuzz/run_fuzz.py -n 2000 --seed 1 --out /tmp/fuzz
     .venv/bin/python tests/fuzz/run_fuzz.py -n 200 --subprocess   # real processes
 
-By default each input runs in a child forked from this process (fast, ~0.2 s an input);
+By default each input runs in a child of the harness's warmed-up fork server (fast, ~0.2 s
+an input);
 ``--subprocess`` runs the installed command as the issue's reporter did (~2 s a command).
 """
 
@@ -106,9 +107,6 @@ def main(argv: list[str] | None = None) -> int:
                         help="write one reproducer per failure group into this directory")
     args = parser.parse_args(argv)
 
-    if not args.subprocess:
-        harness.warm_up(EXAMPLES[0])
-        harness.warm_up(next(e for e in EXAMPLES if "groups" in e.name))
     run = _run_subprocess if args.subprocess else harness.run_input
     codes: collections.Counter = collections.Counter()
     times: list[float] = []
