@@ -31,7 +31,7 @@ pytestmark = pytest.mark.skipif(not hasattr(os, "fork") or sys.platform != "linu
 
 _COMMON = dict(deadline=None,  # the harness enforces its own wall-clock limit per command
                suppress_health_check=list(HealthCheck), print_blob=True)
-settings.register_profile("fuzz-ci", max_examples=6, derandomize=True, database=None,
+settings.register_profile("fuzz-ci", max_examples=5, derandomize=True, database=None,
                           phases=(Phase.explicit, Phase.generate), **_COMMON)
 settings.register_profile("fuzz-long", max_examples=int(os.environ.get(
     "MECHLOOP_FUZZ_EXAMPLES", "500")), **_COMMON)

@@ -34,6 +34,9 @@ from fuzz import harness
 from fuzz.mutations import EXAMPLES, mutated
 from fuzz.strategies import raw_files, schema_files, yaml_files
 
+SUBPROCESS_LIMIT = harness.TIME_LIMIT + 15
+"""Seconds one command may take as a process of its own (it imports mechloop first)."""
+
 SOURCES = {"mutations": st.sampled_from(EXAMPLES).flatmap(mutated),
            "schema": schema_files(), "yaml": yaml_files(), "raw": raw_files()}
 
@@ -70,12 +73,12 @@ def _run_subprocess(files: dict[str, bytes]) -> harness.Report:
             try:
                 done = subprocess.run([sys.executable, "-m", "mechloop.cli", *args],
                                       cwd=directory, capture_output=True, text=True,
-                                      errors="replace", timeout=harness.TIME_LIMIT + 3,
+                                      errors="replace", timeout=SUBPROCESS_LIMIT,
                                       check=False)
             except subprocess.TimeoutExpired:
                 report.outcomes.append(harness.Outcome(
                     tuple(args), None, time.perf_counter() - start,
-                    failure=f"timeout (over {harness.TIME_LIMIT + 3:g} s)"))
+                    failure=f"timeout (over {SUBPROCESS_LIMIT:g} s)"))
                 break
             outcome = harness.Outcome(tuple(args), done.returncode,
                                       time.perf_counter() - start, done.stderr[-2000:])
