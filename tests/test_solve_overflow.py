@@ -15,6 +15,7 @@ import pytest
 
 from mechloop import SolveError, load_model
 from mechloop.dynamics.analysis import solve_dynamics
+from mechloop.dynamics.energy import split_work
 from mechloop.solve.kinematics import OVERFLOW, solve
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "crank_slider.yaml"
@@ -68,3 +69,13 @@ def test_friction_that_overflows_does_not_settle_without_warnings():
         warnings.simplefilter("error")
         with pytest.raises(SolveError, match="did not settle"):
             solve_dynamics(model)
+
+
+def test_work_leaves_out_steps_of_a_clock_that_is_not_finite_without_warnings():
+    """A clock (argument 1 of a model without time) that ends in -inf, as a CSV table can
+    give it, made ``split_work`` warn on inf - inf; the steps are left out as documented."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        positive, negative = split_work(np.ones(4), np.array([0.0, 1.0, -np.inf, -np.inf]))
+    assert positive == 1.0  # the one finite step: 0.5 * (1 + 1) * 1
+    assert negative == 0.0
