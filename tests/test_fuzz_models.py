@@ -5,8 +5,9 @@ reach the user, or write a non-finite number in a row not marked ``chain_break``
 
 Inputs: the cases the issue reports (each class must stay fixed), mutations of every
 bundled example (vector files and group files), documents drawn from the model schema,
-YAML documents of any shape, and raw text and bytes.  Each input runs in a forked child of
-this warmed-up process with a wall-clock limit (``tests/fuzz/harness.py``).
+YAML documents of any shape, and raw text and bytes.  Each input runs in a child of a
+warmed-up fork server, with a wall-clock limit per command and a memory cap
+(``tests/fuzz/harness.py``).
 
 CI runs a fixed, derandomized budget (profile ``fuzz-ci``); ``MECHLOOP_FUZZ=long`` selects
 the profile ``fuzz-long`` (random, many examples, shrinking on) for a longer local run —
@@ -27,7 +28,7 @@ from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork") or sys.platform != "linux",
-                                reason="the fuzz harness forks a Linux child per input")
+                                reason="the fuzz harness forks a child per input (Linux)")
 
 _COMMON = dict(deadline=None,  # the harness enforces its own wall-clock limit per command
                suppress_health_check=list(HealthCheck), print_blob=True)
