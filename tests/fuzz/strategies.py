@@ -1,5 +1,6 @@
-"""Hypothesis strategies for whole model files: documents drawn from the model's JSON
-schema (``mechloop schema``), YAML documents of any shape, and raw text and bytes.
+"""Hypothesis strategies for whole model files: documents drawn from the JSON schemas of
+vector models (``mechloop schema``) and of group files, YAML documents of any shape, and
+raw text and bytes.
 
 ``hypothesis-jsonschema`` would draw documents from the schema, but its release does not
 run on current Hypothesis (it calls an internal API that is gone), so :func:`from_schema`
@@ -18,6 +19,7 @@ from typing import Any
 
 from hypothesis import strategies as st
 
+from mechloop.model.groups import group_json_schema
 from mechloop.model.schema import model_json_schema
 
 from .mutations import ODD_NUMBERS, dump
@@ -132,9 +134,15 @@ def _any_value() -> st.SearchStrategy:
 
 @cache
 def schema_documents() -> st.SearchStrategy:
-    """Documents drawn from the model schema (the schema ``mechloop schema`` prints)."""
-    schema = json.loads(json.dumps(model_json_schema()))
-    return _Builder(schema).build(schema)
+    """Documents drawn from the schema of vector models (the one ``mechloop schema``
+    prints) and from the schema of group files."""
+    groups = group_json_schema()
+    groups["required"] = [*groups.get("required", []), "groups"]  # what makes a group file
+    built = []
+    for schema in (model_json_schema(), groups):
+        schema = json.loads(json.dumps(schema))
+        built.append(_Builder(schema).build(schema))
+    return st.one_of(built)
 
 
 def schema_files() -> st.SearchStrategy:
