@@ -79,3 +79,15 @@ def test_work_leaves_out_steps_of_a_clock_that_is_not_finite_without_warnings():
         positive, negative = split_work(np.ones(4), np.array([0.0, 1.0, -np.inf, -np.inf]))
     assert positive == 1.0  # the one finite step: 0.5 * (1 + 1) * 1
     assert negative == 0.0
+
+
+def test_an_infinite_constant_length_breaks_every_row_of_the_dynamics_without_warnings():
+    """A 100 KB string of nines as a length reads as inf (fuzz); the placement of the
+    points multiplied inf by a zero rate (inf·0) with a warning at every position."""
+    model = load_model(EXAMPLE.with_name("crank_slider_dynamics.yaml"))
+    offset = model.vectors[4].model_copy(update={"r": float("inf")})
+    model = model.model_copy(update={"vectors": {**model.vectors, 4: offset}})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        frame = solve_dynamics(model).to_frame()
+    assert frame["chain_break"].all()
