@@ -210,3 +210,14 @@ def test_yaml_documents_of_any_shape(files):
 @given(files=raw_files())
 def test_raw_text_and_bytes(files):
     assert_clean(run_input(files))
+
+
+def test_the_standalone_fuzzer_prints_its_summary(capsys):
+    """``tests/fuzz/run_fuzz.py`` (the README's longer run) counts every command."""
+    from fuzz import run_fuzz
+
+    code = run_fuzz.main(["-n", "2", "--sources", "raw", "--seed", "1"])
+    printed = capsys.readouterr().out
+    assert "2 inputs, 6 commands" in printed
+    assert "exit codes: 2: 6" in printed
+    assert code == 0 and "0 failing inputs in 0 groups" in printed
