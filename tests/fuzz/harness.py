@@ -38,7 +38,7 @@ TIME_LIMIT = float(os.environ.get("MECHLOOP_FUZZ_TIME", "5"))
 input together took 5 s more)."""
 
 MEMORY_LIMIT = int(float(os.environ.get("MECHLOOP_FUZZ_MEMORY_GB", "2")) * 2**30)
-"""Bytes of address space a child may add to what the test process already maps."""
+"""Bytes of address space a child may add to what the fork server already maps."""
 
 COMMANDS: tuple[tuple[str, ...], ...] = (("check",), ("solve", "-o", "out.csv"),
                                          ("solve", "-o", "out.json"))
