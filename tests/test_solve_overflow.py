@@ -8,6 +8,7 @@ values where they enter: the solver must hold for a model built in code too."""
 from __future__ import annotations
 
 import warnings
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -91,3 +92,15 @@ def test_an_infinite_constant_length_breaks_every_row_of_the_dynamics_without_wa
         warnings.simplefilter("error")
         frame = solve_dynamics(model).to_frame()
     assert frame["chain_break"].all()
+
+
+def test_rows_with_a_singular_force_system_are_marked_broken():
+    """Found by the fuzz suite (a group file with a 2**64 mm link): where the force system
+    is singular the reactions and balancing loads are empty, so the row is marked
+    ``chain_break`` like a row where the chain breaks."""
+    dynamic = solve_dynamics(load_model(EXAMPLE.with_name("crank_slider_dynamics.yaml")))
+    singular = np.zeros(dynamic.forces.singular.shape, dtype=bool)
+    singular[[3, 40]] = True
+    marked = replace(dynamic, forces=replace(dynamic.forces, singular=singular))
+    assert (marked.to_frame()["chain_break"].to_numpy() == singular).all()
+    assert not dynamic.to_frame()["chain_break"].any()

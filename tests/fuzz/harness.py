@@ -278,14 +278,16 @@ def run_input(files: dict[str, bytes | str]) -> Report:
         send.close()
         start = time.perf_counter()
         payload = None
+        killed = False
         try:
             if receive.poll(len(COMMANDS) * TIME_LIMIT + 5):
                 payload = json.loads(receive.recv_bytes())
-        except (EOFError, OSError, ValueError):
+            else:
+                killed = True
+        except (EOFError, OSError, ValueError):  # the child died without a report
             payload = None
         finally:
             receive.close()
-        killed = child.is_alive() and payload is None
         if child.is_alive():
             child.join(2)
         if child.is_alive():
