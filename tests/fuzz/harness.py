@@ -288,8 +288,8 @@ def run_input(files: dict[str, bytes | str]) -> Report:
             payload = None
         finally:
             receive.close()
-        if child.is_alive():
-            child.join(2)
+        if not killed:
+            child.join(2)  # it has reported: let it exit
         if child.is_alive():
             child.kill()
         child.join()
