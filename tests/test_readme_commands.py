@@ -39,6 +39,10 @@ NOT_MECHLOOP = {
     "python examples/": "run by tests/test_docs_and_cli.py::test_example_scripts_run",
     "python benchmarks/": "a benchmark the README names for its figures",
     ".venv/bin/pip install -e \".[bench]\"": "needs the optional bench extra (pylinkage)",
+    "MECHLOOP_FUZZ=long": "the long fuzz run (many minutes); the suite runs the same tests "
+                          "with the CI budget",
+    ".venv/bin/python tests/fuzz/run_fuzz.py": "run with a small -n by tests/"
+                                               "test_fuzz_models.py (the standalone fuzzer)",
 }
 
 

@@ -365,6 +365,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"\d+ positions per design", "the benchmark's setting"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
+    (R, r"within 5 s a command", "the fuzz harness's default limit: MECHLOOP_FUZZ_TIME in "
+        "tests/fuzz/harness.py"),
     (R, r"at most 64 MiB|at most 64 levels|longer than 10,000 characters|"
         r"at most 1,000,000 items|at most 1e12 in size|below 1e-100",
      "the loading limits, constants of the code (test_readme_states_the_loading_limits)"),

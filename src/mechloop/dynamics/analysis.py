@@ -73,7 +73,8 @@ class DynamicResults:
         """The kinematic table followed by the dynamic columns: balancing loads (and by
         virtual power, ``_vp``), reduced characteristics, centres of mass, and for every
         joint the reaction components and magnitude, and the angle of the reaction to
-        each vector that ends at the joint."""
+        each vector that ends at the joint; ``chain_break`` is also true where the force
+        system is singular (its reactions are empty there)."""
         frame = self.kinematics.to_frame()
         cols: dict[str, Array] = {}
         for k, value in self.forces.balancing.items():
@@ -118,8 +119,9 @@ class DynamicResults:
                 cols[f"omega_fw [{speed}]"] = self.cycle.with_flywheel.omega
                 cols[f"epsilon_fw [{accel}]"] = self.cycle.with_flywheel.epsilon
         extra = pd.DataFrame(cols)
-        return pd.concat([frame.drop(columns="chain_break"), extra,
-                          frame[["chain_break"]]], axis=1)
+        # a singular force system leaves the reactions empty: such a row is broken too
+        broken = frame[["chain_break"]] | self.forces.singular[:, None]
+        return pd.concat([frame.drop(columns="chain_break"), extra, broken], axis=1)
 
 
 def _vectors_at(results: DynamicResults, pair) -> list[int]:

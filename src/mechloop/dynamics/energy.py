@@ -33,7 +33,8 @@ def split_work(power: Array, clock: Array) -> tuple[Array, Array]:
     power, clock = np.broadcast_arrays(np.asarray(power, dtype=float),
                                        np.asarray(clock, dtype=float))
     p0, p1 = power[..., :-1], power[..., 1:]
-    dt = np.diff(clock, axis=-1)
+    with np.errstate(invalid="ignore", over="ignore"):  # inf - inf: a step left out
+        dt = np.diff(clock, axis=-1)
     ok = np.isfinite(p0) & np.isfinite(p1) & np.isfinite(dt)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         same = p0 * p1 >= 0

@@ -40,6 +40,7 @@ class Motion:
         return Motion(self.z + other.z, self.v + other.v, self.a + other.a)
 
 
+@np.errstate(invalid="ignore", over="ignore")  # inf·0 at broken rows: NaN, marked broken
 def vector_motion(results: Results, number: int) -> Motion:
     """Vector ``number`` as ``r·e^{iα}`` with its first and second derivatives."""
     r, a = results.value(f"r{number}"), results.value(f"a{number}")
@@ -50,6 +51,7 @@ def vector_motion(results: Results, number: int) -> Motion:
                   (ddr - r * da * da + 1j * (2 * dr * da + r * dda)) * e)
 
 
+@np.errstate(invalid="ignore", over="ignore")  # inf·0 at broken rows: NaN, marked broken
 def offset_motion(results: Results, number: int, share: float, along: float,
                   across: float) -> Motion:
     """The offset from vector ``number``'s tail to a point placed on it: ``share`` of its

@@ -65,6 +65,7 @@ def _position_derivatives(values: Array, method: str = "linear") -> tuple[Array,
     return spline(k, 1), spline(k, 2)
 
 
+@np.errstate(over="ignore", invalid="ignore", divide="ignore")  # overflow: a chain break
 def model_time(model: Model) -> Signal | None:
     """Time at every position and its derivatives with respect to the position number."""
     n = model.positions
@@ -79,6 +80,7 @@ def model_time(model: Model) -> Signal | None:
     return Signal(t, dt, ddt)
 
 
+@np.errstate(over="ignore", invalid="ignore", divide="ignore")  # overflow: a chain break
 def evaluate_signal(spec: TableArgument | LawArgument | CsvTable, model: Model, kind: Kind,
                     unit: str, time: Signal | None) -> Signal:
     """A table or law of the model (an argument, a load) in SI over all positions, with its
@@ -115,6 +117,7 @@ def _argument_in_position(model: Model, number: int, time: Signal | None) -> Sig
     return evaluate_signal(arg, model, kind, arg.unit or getattr(model.units, kind), time)
 
 
+@np.errstate(over="ignore", invalid="ignore", divide="ignore")  # overflow: a chain break
 def model_arguments(model: Model, time: Signal | None, *, strict: bool = True
                     ) -> dict[int, Signal]:
     """Every argument over all positions, SI, derivatives with respect to time — or, when

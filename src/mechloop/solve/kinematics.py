@@ -54,6 +54,8 @@ BREAK_REASONS = {
     "Pl4": "the two vectors cannot close the loop (triangle inequality fails)",
 }
 DEAD_POINT = "dead point: the loop's Jacobian is singular, velocities are unbounded"
+OVERFLOW = ("the values overflow floating point (a dimension, an input or a speed is too "
+            "large)")
 
 
 @dataclass
@@ -299,7 +301,8 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         lo = max(first - 1, 0)  # one position of overlap carries variant tracking across
         hi = min(first + max(int(block), 2), n_pos)
         size, skip = hi - lo, first - lo
-        solved = _solve_block(setup, lo, hi, (size,), last_variant)
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            solved = _solve_block(setup, lo, hi, (size,), last_variant)
         last_variant = solved.last_variant
         for info in setup.ordered:
             no_solution[info.number][first:hi] = solved.no_solution[info.number][skip:]
@@ -312,7 +315,14 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     broken = np.zeros(n_pos, dtype=bool)
     for info in setup.ordered:
         broken |= no_solution[info.number] | singular[info.number]
-    _finish_angles(setup, {name: arrays[0] for name, arrays in out.items()})
+    clock = [] if time is None else [time.value]
+    overflow = _overflow(setup, out, broken,
+                         [*clock, *(field for s in args.values() for field in (
+                             s.value, s.rate, s.accel))])
+    for mask in overflow.values():
+        broken |= mask
+    with np.errstate(over="ignore", invalid="ignore"):
+        _finish_angles(setup, {name: arrays[0] for name, arrays in out.items()})
     for arrays in out.values():
         for arr in arrays:
             arr[broken] = np.nan
@@ -320,7 +330,8 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     breaks = []
     for info in setup.ordered:
         for reason, mask in ((BREAK_REASONS[info.module], no_solution[info.number]),
-                             (DEAD_POINT, singular[info.number])):
+                             (DEAD_POINT, singular[info.number]),
+                             (OVERFLOW, overflow.get(info.number, np.zeros(n_pos, dtype=bool)))):
             if mask.any():
                 breaks.append(ChainBreak(info.number, info.module, np.flatnonzero(mask),
                                          reason))
@@ -347,6 +358,31 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)),
         analogs_of=analogs_of,
     )
+
+
+def _overflow(setup: _Setup, out: dict[str, tuple[Array, Array, Array]],
+              broken: NDArray[np.bool_], inputs: list[Array]
+              ) -> dict[int, NDArray[np.bool_]]:
+    """Per contour, the positions not already broken where a parameter of its vectors has a
+    non-finite value, rate or acceleration (floating point overflowed): a chain break too,
+    so no row that is not marked broken holds a non-number.  Positions where one of
+    ``inputs`` (the time, the arguments and their derivatives) is not finite count for the
+    first contour solved."""
+    found: dict[int, NDArray[np.bool_]] = {}
+    seen = broken.copy()
+    for i, info in enumerate(setup.ordered):
+        bad = np.zeros_like(broken)
+        for arr in inputs if i == 0 else ():
+            bad |= ~np.isfinite(arr)
+        for number in info.vectors:
+            for name in (f"r{number}", f"a{number}"):
+                for arr in out.get(name, ()):
+                    bad |= ~np.isfinite(arr)
+        bad &= ~seen
+        if bad.any():
+            found[info.number] = bad
+            seen |= bad
+    return found
 
 
 def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
