@@ -154,3 +154,18 @@ def test_csv_position_that_is_not_finite_is_refused(tmp_path):
     file.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: arg.csv}"))
     with pytest.raises(ModelError, match=r"arg\.csv, line 2: inf"):
         load_model(file)
+
+
+def test_a_nan_speed_is_called_not_finite_not_too_large(tmp_path):
+    """pydantic compares a NaN with the bound of ``rpm`` before any finiteness check and
+    called it "less than or equal to 1000000"; the message says what is wrong."""
+    text = (Path(__file__).resolve().parents[1] / "examples" / "crank_slider.yaml"
+            ).read_text(encoding="utf-8").replace("time: {rpm: 3000}", "time: {rpm: .nan}")
+    path = tmp_path / "m.yaml"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(ModelError) as caught:
+        load_model(path)
+    (problem,) = caught.value.problems
+    assert problem.path == ("time", "rpm")
+    assert problem.message == "nan is not a finite number"
+    assert "rpm: .nan" in text.splitlines()[problem.line - 1]

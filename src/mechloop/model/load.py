@@ -10,6 +10,7 @@ half-written model.
 from __future__ import annotations
 
 import json
+import math
 import os
 from collections.abc import Callable, Hashable
 from pathlib import Path
@@ -176,6 +177,9 @@ _HINTS = {
 }
 
 
+_BOUNDS = ("greater_than_equal", "greater_than", "less_than_equal", "less_than")
+
+
 def _describe(error: dict[str, Any]) -> tuple[str, str]:
     kind = error["type"]
     loc = error["loc"]
@@ -186,6 +190,11 @@ def _describe(error: dict[str, Any]) -> tuple[str, str]:
     elif kind == "extra_forbidden":
         message = f"unknown key '{name}'"
     hint = _HINTS.get(kind, "")
+    value = error.get("input")
+    if kind in _BOUNDS and isinstance(value, float) and not math.isfinite(value):
+        # pydantic compares a NaN with a bound first and calls it too large or too small
+        message = f"{value} is not a finite number"
+        hint = "write a finite number"
     if kind == "parameter_role":
         hint = "write e.g. r: 0.05, a: function, a: {argument: 1}, a: {link: a2, delta: 30}"
     elif kind == "argument_form":
