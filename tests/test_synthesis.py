@@ -7,7 +7,7 @@ import time
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import mechloop
@@ -170,7 +170,10 @@ def test_function_generation_log10():
 @settings(max_examples=30, deadline=None)
 @given(st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5)), min_size=3, max_size=8),
        st.lists(st.tuples(st.floats(-10, 10), st.floats(-10, 10)), min_size=1, max_size=6))
+@example(poly=[(0.0, 0.0), (0.0, 2.225073858507203e-309), (1.0, 0.0)], points=[(0.0, 1.0)])
+@example(poly=[(0.0, 0.0), (0.0, 0.0), (0.0, 1.1165482597579846e-158)], points=[(0.0, 0.0)])
 def test_polygon_and_curve_distances_against_brute_force(poly, points):
+    """Subnormal edges (the two examples) are points, without an overflow warning."""
     from matplotlib.path import Path as MplPath
 
     polygon = np.array([complex(*p) for p in poly])

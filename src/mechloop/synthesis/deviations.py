@@ -16,6 +16,8 @@ Array = NDArray[np.float64]
 #: Designs per block of the distance computation: its (rows, K, P) temporaries stay in
 #: the CPU cache.
 _ROWS = 16
+#: Smallest normal double: a squared segment length below it is a point.
+_TINY = np.finfo(np.float64).tiny
 
 
 def distance_to_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]) -> Array:
@@ -33,7 +35,8 @@ def distance_to_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]
     ax, ay = x[:, None, :-1], y[:, None, :-1]                  # (D, 1, S)
     sx, sy = np.diff(x, axis=-1)[:, None, :], np.diff(y, axis=-1)[:, None, :]
     length2 = sx * sx + sy * sy
-    inv = np.divide(1.0, length2, out=np.zeros_like(length2), where=length2 > 0)
+    # a segment shorter than ~1e-154 is a point (1 / its subnormal length² overflows)
+    inv = np.divide(1.0, length2, out=np.zeros_like(length2), where=length2 > _TINY)
     rx = targets.real[None, :, None] - ax                     # (D, K, S)
     ry = targets.imag[None, :, None] - ay
     t = (rx * sx + ry * sy) * inv
@@ -103,14 +106,18 @@ def polygon_outside(z: NDArray[np.complex128], polygon: NDArray[np.complex128]) 
     # crossing rule: edges that straddle the point's y and cross to its right
     ay, by_ = a.imag, b.imag
     straddle = (ay > pts.imag) != (by_ > pts.imag)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        x_cross = a.real + (pts.imag - ay) * (b.real - a.real) / (by_ - ay)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        # the share along the edge first: in [0, 1] where the edge straddles, even when
+        # the edge's height is subnormal (only edges that straddle are used)
+        x_cross = a.real + (pts.imag - ay) / (by_ - ay) * (b.real - a.real)
     inside = (np.count_nonzero(straddle & (pts.real < x_cross), axis=-1) % 2) == 1
     seg = b - a
     rel = pts - a
     length2 = seg.real ** 2 + seg.imag ** 2
-    t = np.clip((rel.real * seg.real + rel.imag * seg.imag) / np.where(length2 > 0,
-                                                                        length2, 1), 0, 1)
+    point = length2 <= _TINY  # a degenerate edge: its start point
+    t = np.clip((rel.real * seg.real + rel.imag * seg.imag) / np.where(point, 1, length2),
+                0, 1)
+    t = np.where(point, 0.0, t)
     dist = np.abs(rel - t * seg).min(axis=-1)
     return np.where(inside, 0.0, dist)
 
