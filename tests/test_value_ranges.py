@@ -28,7 +28,7 @@ def _line(text: str, fragment: str) -> int:
 
 # name, base text, what to replace, by what, path of the problem, words in the message
 CASES = [
-    ("rpm_inf", CRANK, "rpm: 3000", "rpm: .inf", ("time", "rpm"), "less than or equal"),
+    ("rpm_inf", CRANK, "rpm: 3000", "rpm: .inf", ("time", "rpm"), "inf is not a finite number"),
     ("rpm_huge", CRANK, "rpm: 3000", "rpm: 1.0e9", ("time", "rpm"), "1000000"),
     ("rpm_tiny", DYN, "rpm: 3000", "rpm: 1.0e-200", ("time", "rpm"), "greater than or equal"),
     ("time_step_tiny", DYN, "time: {rpm: 3000}", "time: {table: {0: 0, 72: 1.0e-20}}",
