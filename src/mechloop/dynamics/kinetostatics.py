@@ -118,7 +118,6 @@ class ForceAnalysis:
         return sum((r.loss for r in self.reactions.values()), np.zeros(n))
 
 
-@np.errstate(over="ignore", invalid="ignore")  # overflowing friction does not settle
 def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                   friction: bool = True, static: bool = False,
                   segments: NDArray[np.int64] | None = None) -> ForceAnalysis:
