@@ -319,3 +319,24 @@ def test_solve_does_not_overwrite_a_csv_table_its_model_reads(tmp_path, monkeypa
     assert result.exit_code == 2
     assert f"is a table the model reads, {table}" in result.output
     assert table.read_text() == "position,angle\n0,0\n72,360\n"
+
+
+def test_an_error_of_the_callers_own_is_not_told_as_a_disk_error(tmp_path):
+    """Only the disk's errors become an OutputError; a broken pipe from an encoder the
+    caller runs inside the block propagates as it is, and nothing is left behind."""
+    target = tmp_path / "cycle.mp4"
+    with pytest.raises(BrokenPipeError), atomic_file(target) as handle:
+        handle.write(b"frames")
+        raise BrokenPipeError(32, "Broken pipe")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_full_disk_is_an_output_error(tmp_path):
+    import errno
+
+    target = tmp_path / "r.csv"
+    with pytest.raises(OutputError, match="free some disk space"), \
+            atomic_file(target) as handle:
+        handle.write(b"x")
+        raise OSError(errno.ENOSPC, "No space left on device")
+    assert list(tmp_path.iterdir()) == []

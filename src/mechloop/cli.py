@@ -141,10 +141,11 @@ def info(model: ModelPath) -> None:
     out.print(describe_structure(m))
 
 
-SUFFIXES = (".csv", ".json", ".parquet", ".xlsx")
+from mechloop.output.paths import TABLE_SUFFIXES as SUFFIXES  # noqa: E402 (no NumPy)
 
 Force = Annotated[bool, typer.Option("--force", help="write the output even when it is the "
-                                     "input model file, which is then replaced")]
+                                     "input model file or a CSV table the model reads, "
+                                     "which is then replaced")]
 
 
 def _outputs(model: Path | None, force: bool, *pairs: tuple[Path | None, tuple[str, ...]]

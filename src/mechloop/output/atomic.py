@@ -26,7 +26,7 @@ from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import BinaryIO
 
-from mechloop.output.paths import destination, write_error
+from mechloop.output.paths import DISK_ERRORS, destination, write_error
 
 #: errno values by which ``open(O_TMPFILE)`` says the file system cannot do it.
 _NO_TMPFILE = frozenset({errno.EOPNOTSUPP, errno.EISDIR, errno.EINVAL, errno.ENOSYS})
@@ -230,8 +230,8 @@ def _staged(target: str | os.PathLike[str]) -> Iterator[_Stage]:
                 stage.commit()
     except OSError as exc:
         stage.discard()
-        if exc.errno is None:
-            raise
+        if exc.errno not in DISK_ERRORS | {errno.ENOENT}:
+            raise  # not the disk's: e.g. the caller's own reads inside the block
         raise write_error(exc, target) from None
     except BaseException:
         stage.discard()

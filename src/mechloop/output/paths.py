@@ -19,6 +19,9 @@ from mechloop.errors import HintedError
 DISK_ERRORS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EIO,
                          errno.EACCES, errno.EPERM})
 
+#: Table formats that ``solve``, ``sweep`` and ``synthesize --table`` write.
+TABLE_SUFFIXES = (".csv", ".json", ".parquet", ".xlsx")
+
 
 class OutputError(HintedError):
     """An output file cannot be written where it was asked (no such folder, no permission,

@@ -27,13 +27,12 @@ from typing import TYPE_CHECKING, BinaryIO
 import numpy as np
 
 from mechloop.output.atomic import atomic_file
-from mechloop.output.paths import OutputError
+from mechloop.output.paths import TABLE_SUFFIXES, OutputError
 
 if TYPE_CHECKING:
     import pandas as pd
 
 #: File types a table can be written as.
-TABLE_SUFFIXES = (".csv", ".json", ".parquet", ".xlsx")
 
 #: The largest sheet Excel opens: rows (with the header) and columns.
 XLSX_ROWS = 1_048_576
