@@ -289,8 +289,7 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                         losses[pair.name] = np.where(moving, -f_f * slide, losses[pair.name])
                         c += 2
                 new = solve(rhs + extra)
-                with np.errstate(invalid="ignore"):  # a diverging segment may overflow
-                    step = np.abs(new - x)[good].max(axis=1, initial=0.0)
+                step = np.abs(new - x)[good].max(axis=1, initial=0.0)
                 change = _segment_max(step, seg[good], n_seg)
                 x = np.where(moving[:, None], new, x)
                 done = settling & (change <= FRICTION_RTOL * scale)

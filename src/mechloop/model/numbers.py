@@ -30,7 +30,7 @@ MIN_MAGNITUDE = 1e-100
 #: Longest quantity string such as ``"50 mm"``, characters.
 MAX_QUANTITY_CHARS = 100
 
-RANGE = "a finite number between -1e12 and 1e12"  # MAX_MAGNITUDE
+RANGE = "a finite number between -{0} and {0}".format(f"{MAX_MAGNITUDE:.0e}".replace("e+", "e"))
 
 
 def usable(value: float) -> bool:

@@ -10,12 +10,12 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
 from mechloop.model.numbers import (  # noqa: F401  (QuantityText, Scalar: re-exported)
+    MAX_MAGNITUDE,
     RANGE,
     Number,
     QuantityText,
     Scalar,
     UnitName,
-    usable,
 )
 
 #: Largest ``positions`` (N) of a model: 10⁸ positions; what a solve needs in memory is
@@ -170,6 +170,7 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
 
     Raises ``ValueError`` with a message and a hint (``args = (message, hint)``).
     """
+    import numpy as np
     import pandas as pd
 
     path = Path(str(spec["csv"]))
@@ -210,9 +211,11 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
         row = int(bad.to_numpy().nonzero()[0][0]) + 2  # 1-based, after the header
         raise ValueError(f"{path}, line {row}: not a position number and a value",
                          "every row is an integer position and a number")
-    wild = ~(values.map(lambda v: usable(float(v))) & positions.map(lambda k: usable(float(k))))
+    v, k = values.to_numpy(float), positions.to_numpy(float)
+    wild = ~(np.isfinite(v) & (np.abs(v) <= MAX_MAGNITUDE)
+             & np.isfinite(k) & (np.abs(k) <= MAX_MAGNITUDE))
     if wild.any():
-        row = int(wild.to_numpy().nonzero()[0][0])
+        row = int(np.flatnonzero(wild)[0])
         raise ValueError(f"{path}, line {row + 2}: {positions.iloc[row]}, {values.iloc[row]} "
                          f"is outside the range of a position and a model value ({RANGE})",
                          "write a whole position number and a finite value of a physical "
