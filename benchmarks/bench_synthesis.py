@@ -1,21 +1,38 @@
-"""Benchmark: synthesis quality and speed on path-synthesis problems, and evaluations per
-second beside pylinkage's particle swarm on the same problem.
+"""Benchmark: design evaluations per second of mechloop's synthesis beside pylinkage's
+fitness evaluation, on one published timed closed-path problem, same designs, same
+objective, one run.
 
-For each problem (bundled examples) mechloop's synthesis runs with the example's own
-search settings and a fixed seed; the table gives the best error reached (Q in the
-example's objective: the largest distance, or the sum of squared distances), designs
-evaluated, evaluations per second and time, beside the error of the best published design
-recomputed from its design vector (benchmarks/README.md, "Published benchmark problems":
-the papers themselves could not be read, so their printed errors are not quoted).
+The problem is the eighteen points of a closed path with prescribed timing (Kunjur &
+Krishnamurty 1997, reused by Cabrera et al. 2002 and Acharyya & Mandal 2009): the
+coupler point of a four-bar must pass 18 targets at crank angles theta2_1 + 20° (i - 1);
+ten variables (four link lengths, the coupler point rcx, rcy, the crank pivot x0, y0,
+the frame angle theta0 and the start angle theta2_1); Q is the sum of the squared
+distances.  Targets, bounds and objective are those of the MATLAB code of Nguyen-Van et
+al., Symmetry 14 (2022) 381 (github.com/sy-nguyen-van/DE_Jaya_Synthesis_Four_Bar_
+Mechanisms, Case3/Objf3.m and Additional-functions/Mechanisms.m, case 'Case3'); the
+model file is examples/eighteen_points_timing_synthesis.yaml.
 
-Then the six-points-on-a-line problem (Cabrera et al. 2002, no timing) is evaluated by
-both tools with the same design vector and the same 360 crank positions per design:
-pylinkage 1.x with its numba solver (``Linkage.step_fast``) inside
-``particle_swarm_optimization``, mechloop with its population evaluation.  The last line
-is ``synthesis evals/s vs pylinkage: X`` (mechloop's rate / pylinkage's).
+The same random designs (uniform in the published bounds, fixed seed) are evaluated
+
+* by pylinkage (1.3, ``pylinkage[numba]``) as its path synthesis evaluates a candidate
+  (``pylinkage.synthesis.path_generation._coupler_trajectory``): set the design's
+  constraints and starting coordinates, ``Linkage.step_fast`` over a full turn at 1° with
+  its numba solver, a NaN anywhere makes the design invalid; the objective is read at
+  the 18 target rows.  pylinkage's batch simulator (``population.simulate_batch``, the
+  same numba kernel called per design over one topology) is timed too, and the faster of
+  the two is pylinkage's rate;
+* by mechloop's ``SynthesisProblem.evaluate`` on the whole population in one call.
+
+Both must give the same objective (relative 1e-9) on the designs both find valid; a
+design only one of them finds valid is counted and explained (pylinkage samples the
+turn at 1° and follows the nearest branch; mechloop decides whether the crank turns
+fully exactly and keeps the file's assembly variant).  Each tool is timed with
+``time.perf_counter``, best of ``--repeats``, after a warm-up call (numba's JIT, caches).
+The last line is ``synthesis speedup vs pylinkage: X`` (mechloop's designs/s over
+pylinkage's).  Timings depend on the machine and its load.
 
     pip install -e ".[bench]"
-    python benchmarks/bench_synthesis.py [--quick]
+    python benchmarks/bench_synthesis.py [--designs 2000] [--repeats 5]
 """
 
 from __future__ import annotations
@@ -29,116 +46,182 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-PROBLEMS = [  # title, example, the best published design's error (or what is known)
-    ("known four-bar, 9 points, no timing (max distance, mm)",
-     "examples/four_bar_path_synthesis.yaml", "0 (the targets lie on a known curve)"),
-    ("six points on a vertical line, no timing (sum of squares, mm^2)",
-     "examples/six_points_line_synthesis.yaml",
-     "3.1e-11: a source design (label uncertain), recomputed here"),
-    ("six points on a vertical line, free timing (sum of squares, mm^2)",
-     "examples/six_points_free_timing_synthesis.yaml",
-     "below 2e-11: source designs, recomputed here"),
-    ("five points with prescribed timing (sum of squares, mm^2)",
-     "examples/five_points_timing_synthesis.yaml", "MUMSA 1.284e-06 recomputed"),
-    ("log10 function generator (max error, deg)", "examples/log10_function_generator.yaml",
-     "none known"),
-]
-TARGETS = np.array([[20.0, 20.0], [20.0, 25.0], [20.0, 30.0], [20.0, 35.0], [20.0, 40.0],
-                    [20.0, 45.0]])
-STEPS = 360
+PROBLEM = ROOT / "examples/eighteen_points_timing_synthesis.yaml"
+#: Case3/Objf3.m: CD, the 18 targets (mm), reached at theta2_1 + (i - 1) pi / 9.
+TARGETS = np.array([[0.5, 1.1], [0.4, 1.1], [0.3, 1.1], [0.2, 1.0], [0.1, 0.9],
+                    [0.05, 0.75], [0.02, 0.6], [0.0, 0.5], [0.0, 0.4], [0.03, 0.3],
+                    [0.1, 0.25], [0.15, 0.2], [0.2, 0.3], [0.3, 0.4], [0.4, 0.5],
+                    [0.5, 0.7], [0.6, 0.9], [0.6, 1.0]])
+#: Mechanisms.m, case 'Case3': [r1..r4] in [0, 50], [rcx, rcy, x0, y0] in [-50, 50],
+#: [theta0, theta2_1] in [0, 2 pi].
+LOW = np.array([0, 0, 0, 0, -50, -50, -50, -50, 0, 0], dtype=float)
+HIGH = np.array([50, 50, 50, 50, 50, 50, 50, 50, 2 * np.pi, 2 * np.pi])
+STEPS = 360  # a full turn at 1°
+EVERY = 20   # a target every 20 steps (pi / 9)
+ROWS = np.arange(len(TARGETS)) * EVERY
 
 
-def run_problems(quick: bool) -> None:
-    import mechloop
-    from mechloop.synthesis.search import synthesize
-
-    print(f"{'problem':<66} {'Q':>11} {'designs':>8} {'evals/s':>9} {'s':>6}  published")
-    for title, path, published in PROBLEMS:
-        model = mechloop.load_model(ROOT / path)
-        result = synthesize(model, iterations=40 if quick else None)
-        print(f"{title:<66} {result.q:>11.4g} {result.evaluations:>8d} "
-              f"{result.evaluations_per_second:>9.0f} {result.elapsed:>6.1f}  {published}")
+def published_designs(count: int, seed: int) -> np.ndarray:
+    """``count`` random design vectors of the source, ``(count, 10)``:
+    [r1 frame, r2 crank, r3 coupler, r4 rocker, rcx, rcy, x0, y0, theta0, theta2_1]."""
+    rng = np.random.default_rng(seed)
+    return LOW + rng.uniform(size=(count, LOW.size)) * (HIGH - LOW)
 
 
-def mechloop_rate(designs: int, repeats: int = 3) -> float:
-    """Evaluations per second of mechloop on the six-point problem (random designs in the
-    bounds, one population call)."""
-    import mechloop
-    from mechloop.synthesis.problem import SynthesisProblem
-
-    model = mechloop.load_model(ROOT / "examples/six_points_line_synthesis.yaml")
-    problem = SynthesisProblem(model)
-    rng = np.random.default_rng(0)
-    x = problem.variables.scale(rng.uniform(size=(designs, len(problem.variables))))
-    problem.evaluate(x[:8])
-    best = math.inf
-    for _ in range(repeats):
-        start = time.perf_counter()
-        problem.evaluate(x)
-        best = min(best, time.perf_counter() - start)
-    return designs / best
+def mechloop_designs(problem, designs: np.ndarray) -> np.ndarray:
+    """The source's design vectors as rows of mechloop's design matrix (SI): the crank is
+    r1, coupler r2, rocker r3, frame r4, the coupler point r6, r7, the pivot start1; the
+    frame C -> O points at theta0 + pi and argument 1's offset is theta0 + theta2_1."""
+    r1, r2, r3, r4, rcx, rcy, x0, y0, th0, th2 = designs.T
+    values = {"r1": r2 * 1e-3, "r2": r3 * 1e-3, "r3": r4 * 1e-3, "r4": r1 * 1e-3,
+              "r6": rcx * 1e-3, "r7": rcy * 1e-3, "start1.x": x0 * 1e-3,
+              "start1.y": y0 * 1e-3, "a4": np.mod(th0 + np.pi, 2 * np.pi),
+              "a1": np.mod(th0 + th2, 2 * np.pi)}
+    return np.column_stack([values[name] for name in problem.variables.names])
 
 
-def pylinkage_rate(particles: int, iterations: int) -> float | None:
-    """Fitness evaluations per second of pylinkage's PSO on the six-point problem."""
-    try:
-        import pylinkage as pl
+def mechloop_evaluate(problem, designs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Q (mm²) and feasibility of every design, one population call."""
+    evaluation = problem.evaluate(designs)
+    return evaluation.q, evaluation.feasible
+
+
+class Pylinkage:
+    """The four-bar of the problem in pylinkage: grounds O (crank pivot) and C (frame
+    pivot), the crank A, the RRR dyad B (coupler AB, rocker CB) and the fixed dyad P
+    (coupler point at rcx along AB, rcy normal to it)."""
+
+    def __init__(self) -> None:
         from pylinkage.actuators import Crank
         from pylinkage.components import Ground
         from pylinkage.dyads import FixedDyad, RRRDyad
-        from pylinkage.exceptions import UnbuildableError
         from pylinkage.simulation import Linkage
-    except ImportError:
-        return None
-    o1, o2 = Ground(0.0, 0.0, name="O1"), Ground(30.0, 0.0, name="O2")
-    crank = Crank(anchor=o1, radius=10.0, angular_velocity=2 * math.pi / STEPS, name="B")
-    rocker = RRRDyad(crank.output, o2, distance1=30.0, distance2=20.0, name="C")
-    point = FixedDyad(crank.output, rocker, distance=10.0, angle=0.5, name="P")
-    linkage = Linkage([o1, o2, crank, rocker, point], name="fourbar")
-    count = [0]
 
-    def fitness(linkage, params, init_pos=None) -> float:
-        count[0] += 1
-        r1, r2, r3, r4, rcx, rcy, x0, y0, th0 = params
-        c, s = math.cos(th0), math.sin(th0)
-        far = (x0 + r1 * c, y0 + r1 * s)
-        b = (x0 + r2 * c, y0 + r2 * s)
-        hint = ((b[0] + far[0]) / 2 - s * r3, (b[1] + far[1]) / 2 + c * r3)
-        linkage.set_constraints([r2, r3, r4, math.hypot(rcx, rcy), math.atan2(rcy, rcx)])
-        linkage.set_coords([(x0, y0), far, b, hint, hint])
-        try:
-            path = linkage.step_fast(iterations=STEPS)
-        except UnbuildableError:
-            return 1e10
-        if np.isnan(path).any():
-            return 1e10
-        d2 = ((path[:, 4, None, :] - TARGETS[None, :, :]) ** 2).sum(axis=2)
-        return float(d2.min(axis=0).sum())
+        o, c = Ground(0.0, 0.0, name="O"), Ground(3.0, 0.0, name="C")
+        crank = Crank(anchor=o, radius=1.0, angular_velocity=2 * math.pi / STEPS, name="A")
+        rocker = RRRDyad(crank.output, c, distance1=3.0, distance2=2.0, name="B")
+        point = FixedDyad(crank.output, rocker, distance=1.0, angle=0.5, name="P")
+        self.linkage = Linkage([o, c, crank, rocker, point], name="eighteen points")
+        self.linkage.compile()
 
-    fitness(linkage, [30, 10, 30, 20, 10, 5, 0, 0, 0.0])  # numba warm-up
-    count[0] = 0
-    start = time.perf_counter()
-    pl.particle_swarm_optimization(
-        eval_func=fitness, linkage=linkage, dimensions=9, n_particles=particles,
-        iterations=iterations, order_relation=min, verbose=False,
-        bounds=([5, 5, 5, 5, -60, -60, -60, -60, 0.0],
-                [60, 60, 60, 60, 60, 60, 60, 60, 2 * math.pi]))
-    return count[0] / (time.perf_counter() - start)
+    @staticmethod
+    def start(designs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Per design the constraints (crank radius, coupler, rocker, |CP| and its angle
+        from AB) and the starting coordinates of O, C, A, B, P, ``(D, 5, 2)``: the crank
+        one step before theta0 + theta2_1 (pylinkage turns the crank before it records a
+        row, so row i is at theta2_1 + i°), B on the assembly of the source's half-angle
+        formula (its minus sign) where it exists, else anywhere (the design breaks)."""
+        r1, r2, r3, r4, rcx, rcy, x0, y0, th0, th2 = designs.T
+        o = x0 + 1j * y0
+        c = o + r1 * np.exp(1j * th0)
+        a = o + r2 * np.exp(1j * (th0 + th2 - 2 * np.pi / STEPS))
+        # B: at r3 from A and r4 from C; with the frame along x the minus branch of
+        # Freudenstein's half-angle formula puts B to the left of A -> C (seen from A)
+        ac = c - a
+        d = np.abs(ac)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            along = (d * d + r3 * r3 - r4 * r4) / (2 * d)
+            across = np.sqrt(np.maximum(r3 * r3 - along * along, 0.0))
+            b = a + ac / d * (along + 1j * across)
+        b = np.where(np.isfinite(b), b, a + r3)
+        p = a + (rcx + 1j * rcy) * (b - a) / np.where(np.abs(b - a) > 0, np.abs(b - a), 1)
+        coords = np.stack([o, c, a, b, p], axis=1)
+        constraints = np.column_stack([r2, r3, r4, np.hypot(rcx, rcy),
+                                       np.arctan2(rcy, rcx)])
+        return constraints, np.stack([coords.real, coords.imag], axis=-1)
+
+    def evaluate(self, designs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Q and validity per design, each design set up and run by ``step_fast`` as
+        pylinkage's path synthesis does (``_coupler_trajectory``)."""
+        constraints, coords = self.start(designs)
+        linkage = self.linkage
+        q = np.full(designs.shape[0], np.nan)
+        for i in range(designs.shape[0]):
+            linkage.set_constraints(list(constraints[i]))
+            linkage.set_coords([tuple(xy) for xy in coords[i]])
+            try:
+                path = linkage.step_fast(iterations=STEPS)
+            except Exception:  # pylinkage's own rule: any error is a failed candidate
+                continue
+            if not np.isfinite(path).all():
+                continue
+            traced = path[ROWS, -1, :]
+            q[i] = float(((traced - TARGETS) ** 2).sum())
+        return q, np.isfinite(q)
+
+    def evaluate_batch(self, designs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The same by ``pylinkage.population.simulate_batch`` (one call, the numba kernel
+        per design over the shared topology)."""
+        from pylinkage.population._batch_sim import simulate_batch
+
+        constraints, coords = self.start(designs)
+        paths = simulate_batch(self.linkage._solver_data, constraints, coords, STEPS)
+        finite = np.isfinite(paths).all(axis=(1, 2, 3))
+        traced = paths[:, ROWS, -1, :]
+        q = ((traced - TARGETS[None]) ** 2).sum(axis=(1, 2))
+        return np.where(finite, q, np.nan), finite
+
+
+def best_time(function, designs: np.ndarray, repeats: int) -> float:
+    function(designs[:4])  # warm-up: numba's JIT, caches
+    best = math.inf
+    for _ in range(repeats):
+        start = time.perf_counter()
+        function(designs)
+        best = min(best, time.perf_counter() - start)
+    return best
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="short runs (for CI smoke)")
+    parser.add_argument("--designs", type=int, default=2000, help="designs (default 2000)")
+    parser.add_argument("--repeats", type=int, default=5, help="timings, best kept "
+                        "(default 5)")
+    parser.add_argument("--seed", type=int, default=0, help="random designs' seed "
+                        "(default 0)")
     args = parser.parse_args(argv)
-    run_problems(args.quick)
-    ours = mechloop_rate(500 if args.quick else 4000)
-    theirs = pylinkage_rate(60, 20 if args.quick else 100)
-    print(f"six points, {STEPS} positions per design: mechloop {ours:.0f} evals/s")
-    if theirs is None:
+    try:
+        tool = Pylinkage()
+    except ImportError:
         print("pylinkage is not installed: pip install -e '.[bench]'", file=sys.stderr)
         return 2
-    print(f"six points, {STEPS} positions per design: pylinkage PSO {theirs:.0f} evals/s")
-    print(f"synthesis evals/s vs pylinkage: {ours / theirs:.2f}")
+    import mechloop
+    from mechloop.synthesis.problem import SynthesisProblem
+
+    problem = SynthesisProblem(mechloop.load_model(PROBLEM))
+    source = published_designs(args.designs, args.seed)
+    ours = mechloop_designs(problem, source)
+
+    q_ours, ok_ours = mechloop_evaluate(problem, ours)
+    q_step, ok_step = tool.evaluate(source)
+    q_batch, ok_batch = tool.evaluate_batch(source)
+    if not (np.array_equal(ok_step, ok_batch)
+            and np.allclose(q_step[ok_step], q_batch[ok_step], rtol=1e-12, atol=0)):
+        print("pylinkage's step_fast and simulate_batch disagree", file=sys.stderr)
+        return 1
+    both = ok_ours & ok_step
+    error = np.abs(q_ours[both] - q_step[both]) / np.maximum(np.abs(q_step[both]), 1e-300)
+    worst = float(error.max()) if both.any() else math.nan
+    print(f"{args.designs} designs of {PROBLEM.name} (seed {args.seed}): valid for both "
+          f"{both.sum()}, for mechloop only {(ok_ours & ~ok_step).sum()}, for pylinkage "
+          f"only {(ok_step & ~ok_ours).sum()}")
+    print(f"objective on the designs valid for both: largest relative difference "
+          f"{worst:.1e}")
+    if not both.any() or worst > 1e-9:
+        print("the two tools' objectives disagree", file=sys.stderr)
+        return 1
+
+    t_ours = best_time(lambda d: mechloop_evaluate(problem, d), ours, args.repeats)
+    t_step = best_time(tool.evaluate, source, args.repeats)
+    t_batch = best_time(tool.evaluate_batch, source, args.repeats)
+    rate_ours = args.designs / t_ours
+    rate_theirs = args.designs / min(t_step, t_batch)
+    print(f"pylinkage step_fast, {STEPS} positions per design: "
+          f"{args.designs / t_step:,.0f} designs/s")
+    print(f"pylinkage simulate_batch, {STEPS} positions per design: "
+          f"{args.designs / t_batch:,.0f} designs/s")
+    print(f"mechloop SynthesisProblem.evaluate: {rate_ours:,.0f} designs/s")
+    print(f"synthesis speedup vs pylinkage: {rate_ours / rate_theirs:.1f}")
     return 0
 
 

@@ -257,3 +257,110 @@ def test_the_example_beats_every_published_design():
     design = [values["r4"], values["r1"], values["r2"], values["r3"], values["r6"],
               values["r7"]]
     assert papers_objective(design) == pytest.approx(result.q, rel=1e-6)
+
+
+# Eighteen points of a closed path with prescribed timing: Case3/Objf3.m,
+#   CD = [0.5 1.1; 0.4 1.1; ...; 0.6 1.0] (18 rows), teta2 = x(10) + (i-1)*(pi/9),
+#   the coupler point rotated by x(9) and moved by [x(7); x(8)];
+# bounds: Additional-functions/Mechanisms.m, case 'Case3': L1=0, H1=50 (r1..r4),
+#   L2=-50, H2=50 (rcx, rcy, x0, y0), L3=0, H3=2*pi (theta0, theta2_1).
+EIGHTEEN = "examples/eighteen_points_timing_synthesis.yaml"
+EIGHTEEN_POINTS = [(0.5, 1.1), (0.4, 1.1), (0.3, 1.1), (0.2, 1.0), (0.1, 0.9), (0.05, 0.75),
+                   (0.02, 0.6), (0.0, 0.5), (0.0, 0.4), (0.03, 0.3), (0.1, 0.25),
+                   (0.15, 0.2), (0.2, 0.3), (0.3, 0.4), (0.4, 0.5), (0.5, 0.7), (0.6, 0.9),
+                   (0.6, 1.0)]
+# Published designs [r1..r4, rcx, rcy, x0, y0, theta0, theta2_1]: Case3/CheckCASE3.m
+# (its comment names the columns Cabrera, Kunjur, MUMSA, IOA).
+EIGHTEEN_DESIGNS = {
+    "Cabrera": [3.057878, 0.237803, 4.828954, 2.056456, 0.767038, 1.850828, 1.776808,
+                -0.641991, 1.002168, 0.226186],
+    "Kunjur": [1.87966, 0.274853, 1.180253, 2.138209, -0.833592, -0.37877, 1.132062,
+               0.663433, 4.354224, 2.558625],
+    "MUMSA": [4.453772, 0.297057, 3.913095, 0.849372, -2.067338, 1.6610626, -1.309243,
+              2.806964, 2.7387359, 4.853543],
+    "IOA": [4.040435, 0.245216, 6.38294, 2.620532, 1.139106, 1.866109, 1.891805,
+            -0.761339, 1.187751, 0.0],
+}
+
+
+def eighteen_papers_points(design) -> np.ndarray:
+    """The coupler point of Case3/Objf3.m at its 18 crank angles (complex, mm)."""
+    theta2 = design[9] + np.arange(18) * np.pi / 9
+    local = papers_coupler_point(design[:6], theta2)
+    return local * np.exp(1j * design[8]) + complex(design[6], design[7])
+
+
+def eighteen_variables(design) -> dict[str, float]:
+    """The source's design vector as the example's variables (mm, deg): the crank angle
+    from the x axis is theta0 + theta2, the frame C -> O points at theta0 + 180."""
+    r1, r2, r3, r4, rcx, rcy, x0, y0, theta0, theta2 = design
+    return {"r1": r2, "r2": r3, "r3": r4, "r4": r1, "r6": rcx, "r7": rcy, "start1.x": x0,
+            "start1.y": y0, "a4": np.degrees(theta0 + np.pi) % 360,
+            "a1": np.degrees(theta0 + theta2) % 360}
+
+
+def eighteen_row(problem: SynthesisProblem, design) -> np.ndarray:
+    values = eighteen_variables(design)
+    return np.array([values[n] * (np.pi / 180 if n[0] == "a" else 1e-3)
+                     for n in problem.variables.names])
+
+
+def test_eighteen_point_example_holds_the_published_targets_timing_and_bounds():
+    model = mechloop.load_model(EIGHTEEN)
+    task = model.synthesis
+    assert task.path.timing is True and task.objective == "ssq"
+    assert [tuple(map(float, p)) for p in task.path.targets.values()] == EIGHTEEN_POINTS
+    positions = list(task.path.targets)
+    solved = mechloop.solve(model)
+    assert not solved.breaks
+    # argument 1 (the crank angle from the start angle) is 20 deg apart at the targets
+    np.testing.assert_allclose(solved.value("a1")[positions] - solved.value("a1")[0],
+                               np.arange(18) * np.pi / 9, rtol=0, atol=1e-12)
+    assert task.vary == {"r1": (0, 50), "r2": (0, 50), "r3": (0, 50), "r4": (0, 50),
+                         "r6": (-50, 50), "r7": (-50, 50), "start1.x": (-50, 50),
+                         "start1.y": (-50, 50), "a4": (0, 360), "a1": (0, 360)}
+
+
+def test_eighteen_point_random_designs_score_as_in_the_papers_formula():
+    """Random designs in the published bounds, mapped to the example's variables: every
+    design mechloop finds feasible has the papers' Q (relative 1e-9), and its deviations
+    are the distances of the papers' coupler point from the targets."""
+    problem = SynthesisProblem(mechloop.load_model(EIGHTEEN))
+    rng = np.random.default_rng(11)
+    low = np.array([0, 0, 0, 0, -50, -50, -50, -50, 0, 0], dtype=float)
+    high = np.array([50, 50, 50, 50, 50, 50, 50, 50, 2 * np.pi, 2 * np.pi])
+    source = low + rng.uniform(size=(400, 10)) * (high - low)
+    rows = np.array([eighteen_row(problem, d) for d in source])
+    evaluation = problem.evaluate(rows)
+    feasible = np.flatnonzero(evaluation.feasible)
+    assert feasible.size >= 40
+    targets = np.array([complex(x, y) for x, y in EIGHTEEN_POINTS])
+    for i in feasible:
+        expected = np.abs(eighteen_papers_points(source[i]) - targets)
+        assert evaluation.q[i] == pytest.approx(np.sum(expected**2), rel=1e-9)
+    ours = problem.deviations(problem.solve(rows[feasible]), rows[feasible])
+    expected = np.abs(np.array([eighteen_papers_points(source[i]) for i in feasible])
+                      - targets[None, :])
+    np.testing.assert_allclose(ours, expected, rtol=1e-9, atol=1e-9)
+
+
+@pytest.mark.parametrize("name", list(EIGHTEEN_DESIGNS))
+def test_published_eighteen_point_designs_score_as_in_the_papers(name):
+    """Where a published design turns fully (mechloop's feasibility), its Q is the papers'
+    formula's; where it does not, the papers' formula has no real solution at some crank
+    angle of a full turn (a dense check at 0.01 deg)."""
+    design = EIGHTEEN_DESIGNS[name]
+    problem = SynthesisProblem(mechloop.load_model(EIGHTEEN))
+    evaluation = problem.evaluate(eighteen_row(problem, design)[None, :])
+    targets = np.array([complex(x, y) for x, y in EIGHTEEN_POINTS])
+    r1, r2, r3, r4 = design[:4]
+    k1, k4, k5 = r1 / r2, r1 / r3, (r4**2 - r1**2 - r2**2 - r3**2) / (2 * r3 * r2)
+    theta2 = np.radians(np.arange(0, 360, 0.01))
+    d = np.cos(theta2) - k1 + k4 * np.cos(theta2) + k5
+    e = -2 * np.sin(theta2)
+    f = k1 + (k4 - 1) * np.cos(theta2) + k5
+    turns = bool((e**2 - 4 * d * f >= 0).all())
+    assert evaluation.feasible[0] == turns
+    if turns:
+        expected = np.sum(np.abs(eighteen_papers_points(design) - targets) ** 2)
+        assert evaluation.q[0] == pytest.approx(expected, rel=1e-9)
