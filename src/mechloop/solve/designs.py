@@ -71,7 +71,24 @@ class DesignResults:
     After a position-only solve (``derivatives=False``) ``rates`` and ``accels`` are
     :class:`NotSolved`: looking anything up in them raises :class:`SolveError`; see
     :attr:`derivatives`.
+
+    ``positions`` is None when every position 0..N was solved; after
+    ``solve_designs(..., positions=...)`` it holds the position numbers of the columns,
+    shape ``(P,)``, and every mask and ``branch_changes`` speak of those columns only.
     """
+
+    def columns(self, positions: NDArray[np.int64]) -> NDArray[np.int64]:
+        """The columns of the tables that hold the model's ``positions`` (each must have
+        been solved)."""
+        if self.positions is None:
+            return positions
+        found = np.searchsorted(self.positions, positions)
+        found = np.minimum(found, self.positions.size - 1)
+        if not np.array_equal(self.positions[found], positions):
+            raise SolveError(f"positions {sorted(set(positions) - set(self.positions))} "
+                             "were not solved", "solve them: solve_designs(..., "
+                             "positions=...)")
+        return found
 
     model: Model
     arguments: dict[int, Array]
@@ -83,6 +100,7 @@ class DesignResults:
     no_solution: dict[int, NDArray[np.bool_]]
     dead: dict[int, NDArray[np.bool_]]
     branch_changes: dict[int, NDArray[np.bool_]]
+    positions: NDArray[np.int64] | None = None
 
     @property
     def designs(self) -> int:
@@ -119,11 +137,12 @@ class DesignResults:
             broken=self.broken[rows],
             no_solution={k: v[rows] for k, v in self.no_solution.items()},
             dead={k: v[rows] for k, v in self.dead.items()},
-            branch_changes={k: v[rows] for k, v in self.branch_changes.items()})
+            branch_changes={k: v[rows] for k, v in self.branch_changes.items()},
+            positions=self.positions)
 
 
 def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
-                  derivatives: bool = True,
+                  derivatives: bool = True, positions: ArrayLike | None = None,
                   chunk_elements: int = CHUNK_ELEMENTS) -> DesignResults:
     """Solve ``D`` designs of ``model`` at every position in one vectorized pass.
 
@@ -138,10 +157,27 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
     :class:`SolveError` on any look-up.  Synthesis solves so when no criterion reads a
     rate or an acceleration.
 
+    With ``positions`` (increasing position numbers, shape ``(P,)``) only those positions
+    are solved — each by the same closed-form arithmetic as in a solve of all of them —
+    and the tables have one column per position given (``DesignResults.positions``):
+    synthesis evaluates so when its objective reads the target positions only.  A
+    contour whose variant is tracked (``auto``) follows its neighbours, so such a model
+    cannot be solved at some positions only (:class:`SolveError`).
+
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
+    chosen = None
+    if positions is not None:
+        chosen = np.asarray(positions, dtype=np.int64).reshape(-1)
+        if chosen.size == 0 or (np.diff(chosen) <= 0).any() or chosen[0] < 0 \
+                or chosen[-1] > model.positions:
+            raise SolveError("positions must increase within 0.."
+                             f"{model.positions}", "pass sorted, distinct position numbers")
+        if any(c.variant == "auto" for c in model.contours):
+            raise SolveError("a contour with variant auto follows its neighbours: it is "
+                             "solved at every position", "give its variant as 1 or 2")
     regular, _ = _solve(model, overrides, None, derivatives=derivatives,
-                        chunk_elements=chunk_elements)
+                        chunk_elements=chunk_elements, positions=chosen)
     return regular
 
 
@@ -174,9 +210,11 @@ def solve_designs_at(model: Model, overrides: Mapping[str, ArrayLike], inputs: A
 
 
 def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | None, *,
-           derivatives: bool, chunk_elements: int
+           derivatives: bool, chunk_elements: int,
+           positions: NDArray[np.int64] | None = None
            ) -> tuple[DesignResults, DesignResults | None]:
-    """The regular positions, and with ``inputs`` ``(D, K)`` the extra columns too."""
+    """The regular positions (or ``positions`` only), and with ``inputs`` ``(D, K)`` the
+    extra columns too."""
     structure = require_valid(model)
     over = {name: np.atleast_1d(np.asarray(v, dtype=float)) for name, v in overrides.items()}
     sizes = {v.shape for v in over.values()}
@@ -185,10 +223,16 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
                          f"pass 1-D arrays of one length (got shapes {sorted(sizes)})")
     n_designs = next(iter(sizes))[0] if sizes else 1
     require_memory(model, designs=max(n_designs, 1 if inputs is None else inputs.shape[0]))
-    n_pos = model.positions + 1
-    full = (n_designs, n_pos)
     time = model_time(model)
     args = model_arguments(model, time)
+    n_pos = model.positions + 1
+    if positions is not None:
+        args = {k: Signal(s.value[positions], s.rate[positions], s.accel[positions])
+                for k, s in args.items()}
+        time = None if time is None else Signal(time.value[positions],
+                                                time.rate[positions], time.accel[positions])
+        n_pos = positions.size
+    full = (n_designs, n_pos)
     n_extra = 0
     if inputs is not None:
         if not sizes:
@@ -281,6 +325,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
         no_solution=no_solution,
         dead=dead,
         branch_changes=changes,
+        positions=positions,
     )
     if inputs is None:
         return regular, None

@@ -35,6 +35,7 @@ from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, Synt
 from mechloop.model.units import registry, to_si, unit_factor
 from mechloop.solve.designs import DesignResults, solve_designs, solve_designs_at
 from mechloop.synthesis import deviations as dv
+from mechloop.synthesis.crank_turn import compile_turn_check
 from mechloop.synthesis.variables import Variables, apply_design, compile_variables
 
 Array = NDArray[np.float64]
@@ -118,6 +119,10 @@ class SynthesisProblem:
         self.angle_unit = unit_factor(model.units.angle, "angle")
         self._compile_target()
         self._compile_conditions()
+        self.objective_positions = self._positions_read()
+        self._turn_check = (compile_turn_check(model) if self.objective_positions is not None
+                            else None)
+        self._exact_share: Array | None = None
 
     @property
     def q_shown_unit(self) -> str:
@@ -323,6 +328,27 @@ class SynthesisProblem:
                                           f"did you mean {', '.join(close)}?" if close else
                                           "see the columns of mechloop solve and energy")])
 
+    def _positions_read(self) -> NDArray[np.int64] | None:
+        """The positions the objective reads, sorted, when it reads no others (targets
+        with their positions, and no condition or criterion over the motion); else None.
+        """
+        task = self.task
+        if task.pressure_angle is not None or task.rotation or task.workspace is not None \
+                or task.criteria or self.needs_derivatives or self.free_timing:
+            return None
+        if self.target_kind in ("path", "motion") and self.target_positions is not None:
+            return np.unique(self.target_positions)
+        return None
+
+    def exact_feasibility(self, designs: Array) -> tuple[NDArray[np.bool_], Array] | None:
+        """Whether each design ``(D, V)`` assembles, on one branch, over the whole
+        continuous input — decided exactly, not at samples —, ``(D,)``, and the share of
+        the input range where it breaks, ``(D,)``; None where no exact decision is
+        available for this model (then it is decided at the positions)."""
+        if self._turn_check is None:
+            return None
+        return self._turn_check(self.variables.overrides(designs), designs.shape[0])
+
     # ---- evaluating ------------------------------------------------------------------
     def solve(self, designs: Array) -> DesignResults:
         """The kinematics of every design, arrays ``(D, P)``: positions, and rates and
@@ -363,8 +389,16 @@ class SynthesisProblem:
             res, at = self.solve_at_inputs(designs)
             feasible = res.assembles & res.keeps_variant & at.assembles & at.keeps_variant
         else:
-            res = self.solve(designs)
-            feasible = res.assembles & res.keeps_variant
+            exact = (self.exact_feasibility(designs) if self.objective_positions is not None
+                     else None)
+            if exact is None:  # every position, decided at them
+                res = self.solve(designs)
+                feasible = res.assembles & res.keeps_variant
+            else:  # the positions the objective reads, and the exact check
+                res = solve_designs(self.model, self.variables.overrides(designs),
+                                    derivatives=False, positions=self.objective_positions)
+                feasible = exact[0] & res.assembles & res.keeps_variant
+            self._exact_share = None if exact is None else exact[1]
         dev = None
         if self.target_kind:
             rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
@@ -398,7 +432,8 @@ class SynthesisProblem:
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
         res, feasible, dev, terms, measures = self._assess(designs)
         n_designs = designs.shape[0]
-        broken_share = res.broken.mean(axis=-1)
+        broken_share = (res.broken.mean(axis=-1) if self._exact_share is None
+                        else np.maximum(self._exact_share, res.broken.mean(axis=-1)))
         keeps = res.keeps_variant
         penalty = sum(terms.values()) if terms else np.zeros(n_designs)
         if dev is None:  # no target: Q is the weighted sum of the minimized criteria
@@ -434,7 +469,7 @@ class SynthesisProblem:
             dev = np.concatenate([error.real, error.imag], axis=1)
         elif dev is not None and self.target_kind == "path" and \
                 self.target_positions is not None:
-            z = self.place(res, designs, self.point)[:, self.target_positions]
+            z = self.place(res, designs, self.point)[:, res.columns(self.target_positions)]
             error = (z - self.targets[None, :]) / self.length_unit
             if self.weights is not None:
                 error = error * self.weights[None, :]
@@ -460,15 +495,18 @@ class SynthesisProblem:
             if self.target_positions is None:
                 dev = dv.distance_to_curve(z, self.targets)
             else:
-                dev = dv.distance_at_positions(z, self.targets, self.target_positions)
+                dev = dv.distance_at_positions(z, self.targets,
+                                               results.columns(self.target_positions))
             return dev / self.length_unit
         if kind == "motion":
             z = self.place(results, designs, self.point)
             angle = results.values[self.task.motion.angle]
             dev = dv.pose_error(z, angle, self.targets, self.target_angles, self.pose_length,
-                                self.target_positions)
+                                None if self.target_positions is None
+                                else results.columns(self.target_positions))
             return dev / self.length_unit
-        output = results.values[self.output][:, self.function_positions] / self.output_factor
+        output = results.values[self.output][:, results.columns(self.function_positions)] \
+            / self.output_factor
         return dv.function_error(output, self.function_target,
                                  relative=self.task.function.relative)
 
