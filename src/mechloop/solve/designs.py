@@ -160,7 +160,9 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
     With ``positions`` (increasing position numbers, shape ``(P,)``) only those positions
     are solved — each by the same closed-form arithmetic as in a solve of all of them —
     and the tables have one column per position given (``DesignResults.positions``):
-    synthesis evaluates so when its objective reads the target positions only.  A
+    synthesis evaluates so when its objective reads the target positions only.  The
+    positions need not be neighbours, so the angles found are not unwrapped: each lies
+    in (−π, π] (plus its link's delta), the same direction as in a solve of all.  A
     contour whose variant is tracked (``auto``) follows its neighbours, so such a model
     cannot be solved at some positions only (:class:`SolveError`).
 
@@ -215,7 +217,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
            ) -> tuple[DesignResults, DesignResults | None]:
     """The regular positions (or ``positions`` only), and with ``inputs`` ``(D, K)`` the
     extra columns too."""
-    structure = require_valid(model)
+    structure, time, args = _prepared(model)
     over = {name: np.atleast_1d(np.asarray(v, dtype=float)) for name, v in overrides.items()}
     sizes = {v.shape for v in over.values()}
     if len(sizes) > 1 or any(len(s) != 1 for s in sizes):
@@ -223,8 +225,6 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
                          f"pass 1-D arrays of one length (got shapes {sorted(sizes)})")
     n_designs = next(iter(sizes))[0] if sizes else 1
     require_memory(model, designs=max(n_designs, 1 if inputs is None else inputs.shape[0]))
-    time = model_time(model)
-    args = model_arguments(model, time)
     n_pos = model.positions + 1
     if positions is not None:
         args = {k: Signal(s.value[positions], s.rate[positions], s.accel[positions])
@@ -309,7 +309,8 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
     for c in numbers:
         broken |= no_solution[c]
         broken |= dead[c]
-    _finish_angles(setup, {name: values[name] for name in setup.varying})
+    if positions is None:  # chosen positions need not be neighbours: angles stay wrapped
+        _finish_angles(setup, {name: values[name] for name in setup.varying})
     if broken.any():
         for name in setup.varying:
             for table in (values, rates, accels) if derivatives else (values,):
@@ -340,6 +341,25 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
         rates=NotSolved("rates"), accels=NotSolved("accelerations"), broken=extra_broken,
         no_solution=extra_none, dead=extra_dead, branch_changes=extra_changes)
     return regular, at_inputs
+
+
+#: Recently solved models (by identity; a model is frozen) -> (the model, its structure,
+#: time and arguments): a population solved generation after generation checks and
+#: tabulates its model once.
+_PREPARED: dict[int, tuple[Model, object, Signal | None, dict[int, Signal]]] = {}
+
+
+def _prepared(model: Model):
+    """``(structure, time, arguments)`` of ``model``, computed once per model object."""
+    found = _PREPARED.get(id(model))
+    if found is None or found[0] is not model:
+        structure = require_valid(model)
+        time = model_time(model)
+        found = (model, structure, time, model_arguments(model, time))
+        if len(_PREPARED) >= 16:
+            _PREPARED.pop(next(iter(_PREPARED)))
+        _PREPARED[id(model)] = found
+    return found[1:]
 
 
 def _extra_arguments(args: Mapping[int, Signal], inputs: Array) -> dict[int, Array]:

@@ -58,6 +58,8 @@ class TurnCheck:
 
     model: Model
     loops: tuple[_Loop, ...]
+    structure: object
+    args: dict
 
     def __call__(self, overrides: Mapping[str, ArrayLike], designs: int
                  ) -> tuple[NDArray[np.bool_], Array]:
@@ -65,9 +67,8 @@ class TurnCheck:
         :func:`~mechloop.solve.designs.solve_designs`) turns fully with no break in any
         checked contour, ``(D,)``, and the share of the turn where it breaks, ``(D,)``
         (the largest over the contours; 0 where it turns)."""
-        structure = require_valid(self.model)
-        args = model_arguments(self.model, model_time(self.model), strict=False)
-        setup = _setup(self.model, structure, args, overrides)
+        structure = self.structure
+        setup = _setup(self.model, structure, self.args, overrides)
         turns = np.ones(designs, dtype=bool)
         share = np.zeros(designs)
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -142,7 +143,7 @@ def compile_turn_check(model: Model) -> TurnCheck | None:
             return None
         lengths = tuple(f"r{f[1:]}" for f in info.functions)
         loops.append(_Loop(crank, tuple(constants), lengths))
-    return TurnCheck(model, tuple(loops)) if loops else None
+    return TurnCheck(model, tuple(loops), structure, args) if loops else None
 
 
 def _root(structure, name: str) -> str:
