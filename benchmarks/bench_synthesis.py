@@ -27,12 +27,13 @@ Both must give the same objective (relative 1e-9) on the designs both find valid
 design only one of them finds valid is counted and explained (pylinkage samples the
 turn at 1° and follows the nearest branch; mechloop decides whether the crank turns
 fully exactly and keeps the file's assembly variant).  Each tool is timed with
-``time.perf_counter``, best of ``--repeats``, after a warm-up call (numba's JIT, caches).
+``time.perf_counter``, best of ``--repeats`` rounds that interleave the tools, after a
+warm-up call (numba's JIT, caches).
 The last line is ``synthesis speedup vs pylinkage: X`` (mechloop's designs/s over
 pylinkage's).  Timings depend on the machine and its load.
 
     pip install -e ".[bench]"
-    python benchmarks/bench_synthesis.py [--designs 2000] [--repeats 5]
+    python benchmarks/bench_synthesis.py [--designs 2000] [--repeats 10]
 """
 
 from __future__ import annotations
@@ -162,21 +163,26 @@ class Pylinkage:
         return np.where(finite, q, np.nan), finite
 
 
-def best_time(function, designs: np.ndarray, repeats: int) -> float:
-    function(designs[:4])  # warm-up: numba's JIT, caches
-    best = math.inf
+def best_times(functions: dict, repeats: int) -> dict[str, float]:
+    """Best wall time of each function (name -> (function, its designs)) over ``repeats``
+    rounds, after a warm-up call each (numba's JIT, caches).  The rounds interleave the
+    tools, so a change in the machine's load falls on all of them alike."""
+    for function, designs in functions.values():
+        function(designs[:4])
+    best = dict.fromkeys(functions, math.inf)
     for _ in range(repeats):
-        start = time.perf_counter()
-        function(designs)
-        best = min(best, time.perf_counter() - start)
+        for name, (function, designs) in functions.items():
+            start = time.perf_counter()
+            function(designs)
+            best[name] = min(best[name], time.perf_counter() - start)
     return best
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--designs", type=int, default=2000, help="designs (default 2000)")
-    parser.add_argument("--repeats", type=int, default=5, help="timings, best kept "
-                        "(default 5)")
+    parser.add_argument("--repeats", type=int, default=10, help="timings, best kept "
+                        "(default 10)")
     parser.add_argument("--seed", type=int, default=0, help="random designs' seed "
                         "(default 0)")
     args = parser.parse_args(argv)
@@ -211,9 +217,10 @@ def main(argv: list[str] | None = None) -> int:
         print("the two tools' objectives disagree", file=sys.stderr)
         return 1
 
-    t_ours = best_time(lambda d: mechloop_evaluate(problem, d), ours, args.repeats)
-    t_step = best_time(tool.evaluate, source, args.repeats)
-    t_batch = best_time(tool.evaluate_batch, source, args.repeats)
+    best = best_times({"mechloop": (lambda d: mechloop_evaluate(problem, d), ours),
+                       "step_fast": (tool.evaluate, source),
+                       "simulate_batch": (tool.evaluate_batch, source)}, args.repeats)
+    t_ours, t_step, t_batch = best["mechloop"], best["step_fast"], best["simulate_batch"]
     rate_ours = args.designs / t_ours
     rate_theirs = args.designs / min(t_step, t_batch)
     print(f"pylinkage step_fast, {STEPS} positions per design: "

@@ -47,6 +47,11 @@ Array = NDArray[np.float64]
 #: below that the rates would be noise amplified by up to 1e8.
 SINGULAR_SIN = math.sqrt(EXISTENCE_RTOL)
 
+#: Elements (designs × positions) of a block from which a position-only solve runs the
+#: compiled Pl4 kernel (:mod:`mechloop.modules.kernels`) instead of NumPy: below it,
+#: loading numba would cost more than it saves (a single solve never loads it).
+KERNEL_ELEMENTS = 4096
+
 BREAK_REASONS = {
     "Pl1": "the closing vector has zero length, its direction is undefined",
     "Pl2": "the two vectors of unknown length are parallel",
@@ -431,6 +436,17 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
     v1, v2 = int(u1[1:]), int(u2[1:])
     x = np.broadcast_to(np.asarray(x, dtype=float), shape)
     y = np.broadcast_to(np.asarray(y, dtype=float), shape)
+    if module == "Pl4" and info.variant != "auto" and not derivatives \
+            and x.size >= KERNEL_ELEMENTS:
+        # a large position-only block (a population of designs): the compiled module
+        from mechloop.modules.kernels import pl4_contour
+
+        c1, s1, c2, s2, a1, a2, ok, dead, branch = pl4_contour(
+            x, y, params[f"r{v1}"].value, params[f"r{v2}"].value, variant=info.variant,
+            rtol=EXISTENCE_RTOL, singular_sin=SINGULAR_SIN)
+        params[u1] = _Param(a1, None, None, c1, s1)
+        params[u2] = _Param(a2, None, None, c2, s2)
+        return ~ok, dead, info.variant, branch
 
     def run(variant):
         """Unknowns as (value or None, cos, sin) per function, and ok."""
