@@ -3,7 +3,8 @@
 :func:`pl4_contour` is :func:`mechloop.modules.planar.pl4_unit` followed by the position
 solve's dead-point test and assembly branch (``kinematics._solve_contour``), fused in one
 pass over the elements: the same arithmetic in the same order, so its results equal the
-NumPy path's (tests/test_kernels.py).  NumPy's cost there is not the arithmetic but
+NumPy path's bit for bit (tests/test_kernels.py; the angles are taken by NumPy's
+``arctan2`` after it, as on the NumPy path).  NumPy's cost there is not the arithmetic but
 some thirty temporaries per contour; a population of designs at a few target positions
 is exactly that case.
 
@@ -25,7 +26,7 @@ Array = NDArray[np.float64]
 
 @njit(cache=True, nogil=True)
 def _pl4_contour(x, y, r1, r2, k, rtol, singular_sin,
-                 c1, s1, c2, s2, a1, a2, ok, dead, branch):  # pragma: no cover - compiled
+                 c1, s1, c2, s2, ok, dead, branch):  # pragma: no cover - compiled
     n, m = x.shape
     for i in range(n):
         for j in range(m):
@@ -50,8 +51,6 @@ def _pl4_contour(x, y, r1, r2, k, rtol, singular_sin,
                 s1[i, j] = math.nan
                 c2[i, j] = math.nan
                 s2[i, j] = math.nan
-                a1[i, j] = math.nan
-                a2[i, j] = math.nan
                 continue
             h = k * math.sqrt(max(h2, 0.0))
             rest = p - along
@@ -63,8 +62,6 @@ def _pl4_contour(x, y, r1, r2, k, rtol, singular_sin,
             s1[i, j] = v
             c2[i, j] = w
             s2[i, j] = z
-            a1[i, j] = math.atan2(v, u)
-            a2[i, j] = math.atan2(z, w)
             # Jacobian columns of the two unknown angles: r n = (-r sin, r cos)
             c1x = -a * v
             c1y = a * u
@@ -82,21 +79,21 @@ def _pl4_contour(x, y, r1, r2, k, rtol, singular_sin,
 
 def pl4_contour(x: Array, y: Array, r1: Array, r2: Array, *, variant: int,
                 rtol: float, singular_sin: float
-                ) -> tuple[Array, Array, Array, Array, Array, Array, NDArray[np.bool_],
-                           NDArray[np.bool_], NDArray[np.int8]]:
+                ) -> tuple[Array, Array, Array, Array, NDArray[np.bool_], NDArray[np.bool_],
+                           NDArray[np.int8]]:
     """A Pl4 contour at every element of a block, arrays of one shape ``(..., P)``.
 
     ``x``, ``y`` (m): the sum of the known vectors; ``r1``, ``r2`` (m): the lengths of the
     two vectors of unknown direction (broadcast views are fine); ``variant`` 1 or 2.
-    Returns the directions ``cos α1, sin α1, cos α2, sin α2`` and the angles ``α1, α2``
-    in (−π, π] (``arctan2``; NaN where no solution),
+    Returns the directions ``cos α1, sin α1, cos α2, sin α2`` (NaN where no solution;
+    bit for bit those of :func:`~mechloop.modules.planar.pl4_unit`),
     ``ok`` (a solution exists), ``dead`` (it exists but the Jacobian's
     ``|sin|`` is not above ``singular_sin``) and the branch (the sign of the Jacobian's
     determinant where the solution is regular, else 0)."""
     shape = x.shape
     two = (math.prod(shape[:-1]), shape[-1]) if len(shape) else (1, 1)
     args = [np.broadcast_to(v, shape).reshape(two) for v in (x, y, r1, r2)]
-    out = [np.empty(two) for _ in range(6)]
+    out = [np.empty(two) for _ in range(4)]
     ok, dead = np.empty(two, dtype=np.bool_), np.empty(two, dtype=np.bool_)
     branch = np.empty(two, dtype=np.int8)
     _pl4_contour(*args, 1.0 if variant == 1 else -1.0, rtol, singular_sin, *out, ok, dead,

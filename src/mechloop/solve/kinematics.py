@@ -441,11 +441,11 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
         # a large position-only block (a population of designs): the compiled module
         from mechloop.modules.kernels import pl4_contour
 
-        c1, s1, c2, s2, a1, a2, ok, dead, branch = pl4_contour(
+        c1, s1, c2, s2, ok, dead, branch = pl4_contour(
             x, y, params[f"r{v1}"].value, params[f"r{v2}"].value, variant=info.variant,
             rtol=EXISTENCE_RTOL, singular_sin=SINGULAR_SIN)
-        params[u1] = _Param(a1, None, None, c1, s1)
-        params[u2] = _Param(a2, None, None, c2, s2)
+        params[u1] = _Param(np.arctan2(s1, c1), None, None, c1, s1)
+        params[u2] = _Param(np.arctan2(s2, c2), None, None, c2, s2)
         return ~ok, dead, info.variant, branch
 
     def run(variant):
