@@ -1,8 +1,8 @@
 """A timed objective evaluated at its target positions only, with the crank's full turn
 decided in closed form, gives what solving every position gives.
 
-The general path (``objective_positions = None``) solves all positions and decides
-feasibility at them; the fast path solves the targets' positions and asks
+The general path (``objective_positions = None``, ``inputs_only = False``) solves all
+positions and decides feasibility at them; the fast path solves the targets' positions and asks
 :func:`mechloop.synthesis.crank_turn.compile_turn_check`.  Their Q agree to 1e-12 where
 both find a design feasible; the exact check refuses every design the samples refuse,
 and a design only the samples accept breaks between two samples (a dense check of the
@@ -94,10 +94,28 @@ def _same_evaluation(fast: SynthesisProblem, general: SynthesisProblem, designs)
     return a
 
 
-def test_untimed_and_free_timing_problems_solve_every_position():
-    for path in (SIX, FREE):
-        problem = SynthesisProblem(mechloop.load_model(path))
-        assert problem.objective_positions is None
+def test_untimed_problems_solve_every_position():
+    problem = SynthesisProblem(mechloop.load_model(SIX))
+    assert problem.objective_positions is None and not problem.inputs_only
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.integers(0, 2**32 - 1))
+def test_free_timing_at_the_inputs_only_equals_every_position(seed):
+    """Free timing whose objective reads the target inputs only: position 0 and the
+    inputs are solved, the full turn decided exactly; the same Q as solving every
+    position, and the same feasibility but for breaks between two samples."""
+    model = mechloop.load_model(FREE)
+    fast, general = SynthesisProblem(model), SynthesisProblem(model)
+    assert fast.objective_positions is None and fast.inputs_only
+    general.inputs_only = False
+    rng = np.random.default_rng(seed)
+    designs = fast.variables.scale(rng.uniform(size=(300, len(fast.variables))))
+    ev = _same_evaluation(fast, general, designs)
+    assert ev.feasible.any()
+    rows = ev.feasible  # (a design only the samples accept breaks between two of them)
+    np.testing.assert_allclose(fast.residuals(designs)[rows],
+                               general.residuals(designs)[rows], rtol=1e-12, atol=0)
 
 
 @pytest.mark.parametrize("margin", [1e-3, 1e-6, 1e-9, -1e-9, -1e-6, -1e-3])

@@ -168,23 +168,30 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
 
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
-    chosen = None
-    if positions is not None:
-        chosen = np.asarray(positions, dtype=np.int64).reshape(-1)
-        if chosen.size == 0 or (np.diff(chosen) <= 0).any() or chosen[0] < 0 \
-                or chosen[-1] > model.positions:
-            raise SolveError("positions must increase within 0.."
-                             f"{model.positions}", "pass sorted, distinct position numbers")
-        if any(c.variant == "auto" for c in model.contours):
-            raise SolveError("a contour with variant auto follows its neighbours: it is "
-                             "solved at every position", "give its variant as 1 or 2")
     regular, _ = _solve(model, overrides, None, derivatives=derivatives,
-                        chunk_elements=chunk_elements, positions=chosen)
+                        chunk_elements=chunk_elements, positions=_chosen(model, positions))
     return regular
 
 
+def _chosen(model: Model, positions: ArrayLike | None) -> NDArray[np.int64] | None:
+    """``positions`` checked: increasing position numbers of the model, and no tracked
+    variant (:class:`SolveError` otherwise)."""
+    if positions is None:
+        return None
+    chosen = np.asarray(positions, dtype=np.int64).reshape(-1)
+    if chosen.size == 0 or (np.diff(chosen) <= 0).any() or chosen[0] < 0 \
+            or chosen[-1] > model.positions:
+        raise SolveError(f"positions must increase within 0..{model.positions}",
+                         "pass sorted, distinct position numbers")
+    if any(c.variant == "auto" for c in model.contours):
+        raise SolveError("a contour with variant auto follows its neighbours: it is "
+                         "solved at every position", "give its variant as 1 or 2")
+    return chosen
+
+
 def solve_designs_at(model: Model, overrides: Mapping[str, ArrayLike], inputs: ArrayLike,
-                     *, derivatives: bool = True, chunk_elements: int = CHUNK_ELEMENTS
+                     *, derivatives: bool = True, positions: ArrayLike | None = None,
+                     chunk_elements: int = CHUNK_ELEMENTS
                      ) -> tuple[DesignResults, DesignResults]:
     """:func:`solve_designs`, and each design also at its own ``K`` values of argument 1.
 
@@ -201,14 +208,15 @@ def solve_designs_at(model: Model, overrides: Mapping[str, ArrayLike], inputs: A
     at those inputs, and as ``branch_changes`` per contour whether the assembly branch at
     any input differs from the branch of the regular positions.  With a tracked variant
     (``auto``) the extra columns would follow the last position rather than their own
-    place in the motion: give such contours a fixed variant.
+    place in the motion: give such contours a fixed variant.  ``positions`` restricts the
+    regular positions as in :func:`solve_designs`.
     """
     values = np.asarray(inputs, dtype=float)
     if values.ndim != 2:
         raise SolveError(f"inputs need the shape (D, K), got {values.shape}",
                          "pass one row of argument values per design")
     return _solve(model, overrides, values, derivatives=derivatives,
-                  chunk_elements=chunk_elements)
+                  chunk_elements=chunk_elements, positions=_chosen(model, positions))
 
 
 def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | None, *,
@@ -226,6 +234,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
     n_designs = next(iter(sizes))[0] if sizes else 1
     require_memory(model, designs=max(n_designs, 1 if inputs is None else inputs.shape[0]))
     n_pos = model.positions + 1
+    every = args  # the extra inputs interpolate over every position
     if positions is not None:
         args = {k: Signal(s.value[positions], s.rate[positions], s.accel[positions])
                 for k, s in args.items()}
@@ -242,7 +251,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
             raise SolveError(f"inputs need one row per design ({n_designs}) and a model "
                              "with argument 1", f"got inputs of shape {inputs.shape}")
         n_extra = inputs.shape[1]
-        extra_at = _extra_arguments(args, inputs)
+        extra_at = _extra_arguments(every, inputs)
     n_cols = n_pos + n_extra
     chunk = max(1, int(chunk_elements) // n_cols)
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -56,10 +56,10 @@ class _Loop:
 class TurnCheck:
     """The closed-form check of every Pl4 contour of a model, compiled once."""
 
-    model: Model
+    model: Model = field(repr=False)
     loops: tuple[_Loop, ...]
-    structure: object
-    args: dict
+    structure: object = field(repr=False)
+    args: dict = field(repr=False)
 
     def __call__(self, overrides: Mapping[str, ArrayLike], designs: int
                  ) -> tuple[NDArray[np.bool_], Array]:

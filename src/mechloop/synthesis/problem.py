@@ -120,8 +120,10 @@ class SynthesisProblem:
         self._compile_target()
         self._compile_conditions()
         self.objective_positions = self._positions_read()
+        #: free timing whose objective reads the target inputs only
+        self.inputs_only = self.free_timing and self._reads_targets_only()
         self._turn_check = (compile_turn_check(model) if self.objective_positions is not None
-                            else None)
+                            or self.inputs_only else None)
         self._exact_share: Array | None = None
 
     @property
@@ -332,13 +334,18 @@ class SynthesisProblem:
         """The positions the objective reads, sorted, when it reads no others (targets
         with their positions, and no condition or criterion over the motion); else None.
         """
-        task = self.task
-        if task.pressure_angle is not None or task.rotation or task.workspace is not None \
-                or task.criteria or self.needs_derivatives or self.free_timing:
+        if not self._reads_targets_only() or self.free_timing:
             return None
         if self.target_kind in ("path", "motion") and self.target_positions is not None:
             return np.unique(self.target_positions)
         return None
+
+    def _reads_targets_only(self) -> bool:
+        """No condition or criterion reads the motion beyond the targets."""
+        task = self.task
+        return not (task.pressure_angle is not None or task.rotation
+                    or task.workspace is not None or task.criteria
+                    or self.needs_derivatives)
 
     def exact_feasibility(self, designs: Array) -> tuple[NDArray[np.bool_], Array] | None:
         """Whether each design ``(D, V)`` assembles, on one branch, over the whole
@@ -386,8 +393,16 @@ class SynthesisProblem:
         terms: dict[str, Array] = {}
         measures: dict[str, Array] = {}
         if self.free_timing:
-            res, at = self.solve_at_inputs(designs)
-            feasible = res.assembles & res.keeps_variant & at.assembles & at.keeps_variant
+            exact = self.exact_feasibility(designs) if self.inputs_only else None
+            if exact is None:
+                res, at = self.solve_at_inputs(designs)
+                feasible = res.assembles & res.keeps_variant & at.assembles & at.keeps_variant
+            else:  # position 0 and the target inputs, and the exact check
+                res, at = solve_designs_at(self.model, self.variables.overrides(designs),
+                                           designs[:, self.variables.input_columns],
+                                           derivatives=False, positions=[0])
+                feasible = exact[0] & res.assembles & at.assembles & at.keeps_variant
+            self._exact_share = None if exact is None else exact[1]
         else:
             exact = (self.exact_feasibility(designs) if self.objective_positions is not None
                      else None)
