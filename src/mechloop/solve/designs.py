@@ -289,7 +289,8 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
     for lo in range(0, n_designs, chunk):
         hi = min(lo + chunk, n_designs)
         shape = (hi - lo, n_cols)
-        part = _setup(model, structure, args, {k: v[lo:hi] for k, v in over.items()})
+        part = (setup if hi - lo == n_designs else  # one chunk: the setup of all
+                _setup(model, structure, args, {k: v[lo:hi] for k, v in over.items()}))
         if n_extra:
             part = _with_extra_columns(part, args, extra_at, lo, hi)
         block = _solve_block(part, 0, n_cols, shape, {}, derivatives=derivatives)
