@@ -359,7 +359,7 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
     (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
     (R, r"\d+ positions per design", "the benchmark's setting"),
-    (R, r"2,000 random designs|relative 1e-9\)", "the synthesis benchmark's settings"),
+    (R, r"2,000 random designs|relative 1e-9[);]", "the synthesis benchmark's settings"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
     (R, r"within 5 s a command", "the fuzz harness's default limit: MECHLOOP_FUZZ_TIME in "
