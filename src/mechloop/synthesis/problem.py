@@ -83,7 +83,8 @@ class Evaluation:
 
     ``total`` is what the search minimizes, ``q`` the main criterion (model units of the
     target; NaN where a design is infeasible), ``feasible`` whether the mandatory
-    conditions hold, ``broken_share`` the share of positions where the chain breaks,
+    conditions hold, ``broken_share`` the share of positions where the chain breaks (the
+    share of the input range, where it is decided exactly: :meth:`exact_feasibility`),
     ``terms`` the penalty of each desirable condition and criterion and ``measures`` the
     quantity each penalizes (pressure angle in the model's angle unit, ...), all ``(D,)``.
     """
