@@ -16,6 +16,13 @@ as a result.  Dynamic criteria (any column of the dynamic table, the cycle's
 included.  Solving the dynamics of each feasible design on its own remains only as the
 fallback for what a batch refuses (:class:`NotImplementedError`) and for a column the
 batch does not find.
+
+An objective that reads the targets only (timed targets, or free timing, and no
+condition or criterion over the motion) is evaluated at the target positions (or
+inputs) only, when the existence of the chain over the whole continuous input can be
+decided exactly (:meth:`SynthesisProblem.exact_feasibility`: today the closed form of
+:mod:`mechloop.synthesis.crank_turn` for a four-bar driven by its crank); otherwise
+every position is solved and feasibility is decided at them.
 """
 
 from __future__ import annotations
