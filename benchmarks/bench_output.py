@@ -7,9 +7,13 @@ columns, 1,803 columns at the default, solved by ``mechloop.solve``.
 
 Each format is written in a forked child process (the table is shared copy-on-write), so
 its peak memory is its own: ``peak RSS`` is the child's ``ru_maxrss`` and ``above the
-table`` that minus the resident size at the fork.  The file is read back and checked
-against the table (its row count, and the first and last 1,000 rows bit for bit, read
-without loading the whole file) and removed.
+table`` that minus the resident size at the fork.  CSV and JSON are formatted by worker
+processes the writer forks (one per core): ``worker MB`` is the largest private memory of
+one of them (their own pages, not the table they share), sampled every 20 ms.
+``MB/CPU-s`` is the size over the CPU time of the writer and its workers together (how
+fast one free core formats; ``MB/s`` depends on the machine's load and its free cores).  The file
+is read back and checked against the table (its row count, and the first and last 1,000
+rows bit for bit, read without loading the whole file) and removed.
 
     python benchmarks/bench_output.py                  # options: --contours 200
     python benchmarks/bench_output.py --contours 20 --positions 20000 --pandas
@@ -140,6 +144,8 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
         try:
             os.close(read)
             start_rss = _rss_mb()
+            cpu0 = {who: resource.getrusage(who)
+                    for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)}
             t0 = time.perf_counter()
             if how == "mechloop":
                 write_frame(frame, path)
@@ -148,9 +154,11 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
             else:
                 frame.to_json(path, orient="records", double_precision=15)
             seconds = time.perf_counter() - t0
+            cpu = sum(getattr(resource.getrusage(who), f) - getattr(cpu0[who], f)
+                      for who in cpu0 for f in ("ru_utime", "ru_stime"))
             peak = _maxrss_mb()
             verdict = _check(frame, path) if how == "mechloop" else ""
-            report = {"seconds": seconds, "peak": peak, "above": peak - start_rss,
+            report = {"seconds": seconds, "cpu": cpu, "peak": peak, "above": peak - start_rss,
                       "size": path.stat().st_size, "check": verdict}
             os.write(write, json.dumps(report).encode())
         except BaseException as exc:
@@ -159,11 +167,42 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
             os._exit(0)
     os.close(write)
     data = b""
-    while chunk := os.read(read, 65536):
+    workers = 0.0
+    os.set_blocking(read, False)
+    while True:
+        workers = max(workers, _workers_private_mb(pid))
+        try:
+            chunk = os.read(read, 65536)
+        except BlockingIOError:
+            time.sleep(0.02)
+            continue
+        if not chunk:
+            break
         data += chunk
     os.close(read)
     os.waitpid(pid, 0)
-    return json.loads(data) if data else {"check": "FAILED: the child died"}
+    report = json.loads(data) if data else {"check": "FAILED: the child died"}
+    report["workers"] = workers
+    return report
+
+
+def _workers_private_mb(pid: int) -> float:
+    """The largest private memory (pages of its own, not the table it shares with the
+    writer) of the writer's worker processes now, in MB; 0 when it has none."""
+    try:
+        children = open(f"/proc/{pid}/task/{pid}/children").read().split()
+    except OSError:
+        return 0.0
+    largest = 0.0
+    for child in children:
+        try:
+            with open(f"/proc/{child}/smaps_rollup") as f:
+                kb = sum(int(line.split()[1]) for line in f
+                         if line.startswith(("Private_Clean:", "Private_Dirty:")))
+        except (OSError, ValueError, IndexError):
+            continue
+        largest = max(largest, kb / 1024)
+    return largest
 
 
 def main() -> int:
@@ -189,7 +228,8 @@ def main() -> int:
         runs += [("pandas", f) for f in ("csv", "json") if f in args.formats.split(",")]
     failed = False
     print(f"{'writer':<10} {'format':<8} {'seconds':>8} {'MB':>8} {'MB/s':>7} "
-          f"{'peak RSS MB':>12} {'above table MB':>15}  check")
+          f"{'MB/CPU-s':>9} "
+          f"{'peak RSS MB':>12} {'above table MB':>15} {'worker MB':>10}  check")
     with tempfile.TemporaryDirectory(dir=args.dir) as folder:
         for how, fmt in runs:
             path = Path(folder) / f"table.{fmt}"
@@ -201,8 +241,8 @@ def main() -> int:
                 continue
             mb = r["size"] / 2**20
             print(f"{how:<10} {fmt:<8} {r['seconds']:8.1f} {mb:8.0f} "
-                  f"{mb / r['seconds']:7.0f} {r['peak']:12.0f} {r['above']:15.0f}  "
-                  f"{r['check']}")
+                  f"{mb / r['seconds']:7.0f} {mb / r['cpu']:9.0f} {r['peak']:12.0f} "
+                  f"{r['above']:15.0f} {r['workers']:10.0f}  {r['check']}")
             failed |= r["check"].startswith("FAILED")
     return 1 if failed else 0
 

@@ -8,14 +8,14 @@ takes the pieces in order, pipe after pipe, and moves them into the output file 
 ``splice`` (kernel to kernel, no copy through Python; a plain read and write where the
 output cannot be spliced into, e.g. a Python buffer).
 
-A worker formats a whole piece before sending it (a pipe holds only 1 MiB: sent chunk by
-chunk, a worker would wait for the parent to reach its piece instead of formatting).
-Memory stays bounded: a worker blocks when its pipe is full, so it holds at most one piece
-and runs at most one piece ahead of the writing.  If the parent stops — an error, Ctrl-C,
-a kill — the workers are killed (or, if the parent was killed outright, they die writing
-to a pipe nobody reads).  Nothing is written to a file by a worker: an atomic write stays
-atomic.
-A failure inside a worker is raised in the parent with the worker's traceback.
+A worker formats whole pieces and hands them to a thread of its own that sends them (a
+pipe holds only 1 MiB: sent by the formatting thread, a worker would wait for the parent
+to reach its piece instead of formatting on).  Memory stays bounded: a worker stops when
+AHEAD pieces wait to be sent, so it holds at most AHEAD + 1 pieces.  If the parent stops
+— an error, Ctrl-C, a kill — the workers are killed (or, if the parent was killed
+outright, they die writing to a pipe nobody reads).  Nothing is written to a file by a
+worker: an atomic write stays atomic.  A failure inside a worker is raised in the parent
+with the worker's traceback.
 
 A piece's text is sent as frames: an 8-byte little-endian length, then that many bytes;
 a length of 0 ends the piece, and a length of ``2**63 - 1`` is followed by a frame holding
@@ -39,6 +39,9 @@ MAX_WORKERS = 8
 
 #: Pipe capacity asked for (Linux ``F_SETPIPE_SZ``; the default max is 1 MiB).
 PIPE_BYTES = 1 << 20
+
+#: Pieces a worker formats ahead of the one the parent is copying from it.
+AHEAD = 3
 
 _FAILED = (1 << 63) - 1
 _F_SETPIPE_SZ = 1031
@@ -144,29 +147,72 @@ def _work(write: int, reads: Iterable[int], pieces: Sequence[tuple[int, int]],
           render: Render) -> None:
     """A worker's life: format its pieces into ``write``, then exit (never return)."""
     code = 0
+    sender: _Sender | None = None
     try:
         for sig in (signal.SIGINT, signal.SIGTERM, getattr(signal, "SIGHUP", None)):
             if sig is not None:
                 signal.signal(sig, signal.SIG_DFL)
         for fd in reads:
             os.close(fd)
-        for start, stop in pieces:  # a piece is sent whole: formatting the next one
-            text = b"".join(b for part in render(start, stop) for b in part)  # goes on
-            if text:  # while the parent still copies this one from the pipe
-                _write_all(write, [len(text).to_bytes(8, "little"), text])
-            _write_all(write, [bytes(8)])
+        sender = _Sender(write)
+        for start, stop in pieces:
+            text = b"".join(b for part in render(start, stop) for b in part)
+            sender.put([len(text).to_bytes(8, "little"), text] if text else [])
+        sender.finish()
     except BrokenPipeError:
         code = 1  # the parent stopped reading: it has failed or was killed
     except BaseException:
         code = 1
         try:
             text = traceback.format_exc().encode("utf-8")
-            _write_all(write, [_FAILED.to_bytes(8, "little"), len(text).to_bytes(8, "little"),
-                               text])
+            failure = [_FAILED.to_bytes(8, "little"), len(text).to_bytes(8, "little"), text]
+            if sender is not None and sender.error is None:
+                sender.queue.put(failure)  # after the pieces already queued
+                sender.finish()
+            else:
+                _write_all(write, failure)
         except BaseException:
             pass
     finally:
         os._exit(code)
+
+
+class _Sender:
+    """A worker's thread sending its formatted pieces into its pipe, so that formatting
+    goes on while the parent is still busy with another worker's piece: at most AHEAD
+    pieces wait (a failure to send is raised at the next ``put``)."""
+
+    def __init__(self, fd: int):
+        import queue
+        import threading
+
+        self.fd = fd
+        self.queue: queue.Queue[list[bytes] | None] = queue.Queue(maxsize=AHEAD)
+        self.error: BaseException | None = None
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def _run(self) -> None:
+        try:
+            while (frames := self.queue.get()) is not None:
+                _write_all(self.fd, frames)
+        except BaseException as exc:
+            self.error = exc
+            while self.queue.get() is not None:  # let put() go on until the end
+                pass
+
+    def put(self, frames: list[bytes]) -> None:
+        """Send a piece: its frames (without the end mark, added here)."""
+        if self.error is not None:
+            raise self.error
+        self.queue.put([*frames, bytes(8)])
+
+    def finish(self) -> None:
+        """Wait until everything put is sent."""
+        self.queue.put(None)
+        self.thread.join()
+        if self.error is not None:
+            raise self.error
 
 
 def _write_all(fd: int, buffers: list[bytes | memoryview]) -> None:
