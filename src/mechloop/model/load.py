@@ -22,7 +22,7 @@ from pydantic import ValidationError
 from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
 from mechloop.model.limits import check_events, read_text
-from mechloop.model.salvage import salvage
+from mechloop.model.salvage import salvage, set_aside
 from mechloop.model.schema import MAX_POSITIONS, Model
 from mechloop.model.signals import read_csv_table
 from mechloop.output.atomic import atomic_write_bytes, atomic_write_text  # noqa: F401 (re-exported)
@@ -251,7 +251,7 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
         partial, dropped = salvage(tables, [p for p in problems if p not in unread])
         if partial is not None:  # what else is wrong, in the parts that validated
             problems += [p for p in check_model(partial)[1]
-                         if not (p.path and str(p.path[0]) in dropped)]
+                         if not (p.path and set_aside(p.path, dropped))]
         raise located_error(problems, file, lines)
     _, problems = check_model(model)
     if problems:
