@@ -291,3 +291,21 @@ def test_a_killed_parallel_writer_leaves_no_file_and_no_worker(tmp_path, request
         time.sleep(0.05)
     assert not any(running(pid) for pid in workers)  # they found the pipe closed
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("rows", [1, 2])
+@pytest.mark.parametrize("columns", [["x"], ["i", "x", "b"], ["x", "y"]])
+def test_one_or_two_rows_and_single_columns(tmp_path, rows, columns):
+    """The brackets of orjson's text come off a one-value run too."""
+    whole = pd.DataFrame({"i": np.arange(rows) + 7, "x": np.arange(rows) + 0.5,
+                          "y": -np.arange(rows) / 3, "b": np.arange(rows) % 2 == 0})
+    frame = whole[columns]
+    write_frame(frame, tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_text() == frame.to_csv(index=False)
+    write_frame(frame, tmp_path / "t.json")
+    expected = [{k: getattr(v, "item", lambda v=v: v)() for k, v in r.items()}
+                for r in frame.to_dict("records")]
+    back = json.loads((tmp_path / "t.json").read_text())
+    assert back == expected
+    assert [[type(v) for v in r.values()] for r in back] == [
+        [type(v) for v in r.values()] for r in expected]

@@ -197,12 +197,23 @@ def _csv_lines(columns: _Columns, run: tuple[int, int, str], start: int, stop: i
         return [b",".join(_csv_value(v) for v in row)
                 for row in zip(*(a[start:stop] for a in columns.arrays[first:end]),
                                strict=True)]
-    text = _dump(block)[2:-2]
+    text = _dump(block)
     if kind == "f" and np.isnan(block).any():
         text = text.replace(b"null", b"")
     elif kind == "b":
         text = text.replace(b"true", b"True").replace(b"false", b"False")
-    return text.split(b"],[")
+    return _unbracket(text.split(b"],["), 2)
+
+
+def _unbracket(items: list[bytes], brackets: int) -> list[bytes]:
+    """The pieces of a split orjson text with its ``brackets`` opening and closing
+    brackets taken off the ends (splitting the whole text, then trimming the first and
+    last piece, spares a copy of the whole text)."""
+    if len(items) == 1:
+        items[0] = items[0][brackets:-brackets]
+    else:
+        items[0], items[-1] = items[0][brackets:], items[-1][:-brackets]
+    return items
 
 
 def _csv_chunk(columns: _Columns, start: int, stop: int) -> list[bytes | memoryview]:
@@ -255,7 +266,7 @@ def _json_tokens(columns: _Columns, start: int, stop: int) -> list[bytes]:
                 tokens[j::columns.width] = [_json_value(v)
                                             for v in columns.arrays[j][start:stop]]
             continue
-        found = _dump(columns.block(run, start, stop).ravel())[1:-1].split(b",")
+        found = _unbracket(_dump(columns.block(run, start, stop).ravel()).split(b","), 1)
         size = end - first
         if size == columns.width:
             return found
