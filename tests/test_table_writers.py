@@ -54,6 +54,7 @@ def small_chunks(monkeypatch, request):
     monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
     monkeypatch.setattr(parallel, "PARALLEL_VALUES", 0 if request.param == "forked" else 1 << 62)
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2}, raising=False)
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # three idle cores
 
 
 def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
@@ -235,6 +236,7 @@ import numpy as np, pandas as pd
 from mechloop.output import parallel, tables
 parallel.PARALLEL_VALUES = 0
 os.sched_getaffinity = lambda pid: {0, 1}
+os.getloadavg = lambda: (0.0, 0.0, 0.0)
 tables.PIECE_VALUES = 2000
 real_chunk, real_copier = tables._csv_chunk, parallel._copier
 
@@ -309,3 +311,14 @@ def test_one_or_two_rows_and_single_columns(tmp_path, rows, columns):
     assert back == expected
     assert [[type(v) for v in r.values()] for r in back] == [
         [type(v) for v in r.values()] for r in expected]
+
+
+def test_workers_only_for_idle_cores(monkeypatch):
+    """A worker per idle core (cores less the load), none below two or for a small table."""
+    monkeypatch.setattr(parallel, "PARALLEL_VALUES", 1000)
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(4)), raising=False)
+    for load, workers in ((0.0, 4), (0.6, 3), (1.4, 3), (2.4, 2), (2.6, 0), (9.0, 0)):
+        monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, 0.0, 0.0))
+        assert parallel.workers_for(10**6, 100) == workers, load
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    assert parallel.workers_for(999, 100) == 0 and parallel.workers_for(10**6, 3) == 3

@@ -1,12 +1,12 @@
 """Formatting a long text on every core, written in order: forked workers and pipes.
 
 The table writers format numbers with orjson, which holds Python's global lock, so threads
-do not help.  Instead the process forks one worker per core; the workers share the table
-(copy-on-write: nothing is copied) and format pieces of it round-robin — worker ``k`` does
-pieces ``k, k + W, k + 2W, ...`` — each sending its text through its own pipe.  The parent
-takes the pieces in order, pipe after pipe, and moves them into the output file with
-``splice`` (kernel to kernel, no copy through Python; a plain read and write where the
-output cannot be spliced into, e.g. a Python buffer).
+do not help.  Instead the process forks one worker per idle core (:func:`workers_for`);
+the workers share the table (copy-on-write: nothing is copied) and format pieces of it
+round-robin — worker ``k`` does pieces ``k, k + W, k + 2W, ...`` — each sending its text
+through its own pipe.  The parent takes the pieces in order, pipe after pipe, and moves
+them into the output file with ``splice`` (kernel to kernel, no copy through Python; a
+plain read and write where the output cannot be spliced into, e.g. a Python buffer).
 
 A worker formats whole pieces and hands them to a thread of its own that sends them (a
 pipe holds only 1 MiB: sent by the formatting thread, a worker would wait for the parent
@@ -44,6 +44,16 @@ PIPE_BYTES = 1 << 20
 AHEAD = 3
 
 _FAILED = (1 << 63) - 1
+
+def _iov_max() -> int:
+    """Buffers one ``writev`` takes (1024 on Linux; POSIX guarantees 16)."""
+    try:
+        return max(16, os.sysconf("SC_IOV_MAX"))
+    except (AttributeError, ValueError, OSError):
+        return 16
+
+
+_IOV_MAX = _iov_max()
 _F_SETPIPE_SZ = 1031
 
 #: A piece's text, as an iterator of parts; each part a list of buffers written in a row.
@@ -52,15 +62,22 @@ Render = Callable[[int, int], Iterator[list[bytes | memoryview]]]
 
 def workers_for(values: int, pieces: int) -> int:
     """How many workers to fork for a table of ``values`` values cut into ``pieces``
-    pieces: one per core the process may use (at most MAX_WORKERS and ``pieces``), or 0
-    (format here) for a small table, a single core or a system without ``fork``."""
+    pieces: one per idle core the process may use (its cores less the 1-minute load
+    average, rounded; at most MAX_WORKERS and ``pieces``), or 0 (format here) for a small
+    table, fewer than two idle cores or a system without ``fork``.  On a busy machine
+    workers gain nothing — the cores are taken, and Linux shares the CPU between sessions,
+    not processes — and would cost the copies through the pipes."""
     if not hasattr(os, "fork") or values < PARALLEL_VALUES or pieces < 2:
         return 0
     try:
         cores = len(os.sched_getaffinity(0))
     except (AttributeError, OSError):
         cores = os.cpu_count() or 1
-    count = min(cores, MAX_WORKERS, pieces)
+    try:
+        idle = cores - os.getloadavg()[0]
+    except (AttributeError, OSError):
+        idle = cores
+    count = min(cores, MAX_WORKERS, pieces, int(idle + 0.5))
     return count if count >= 2 else 0
 
 
@@ -155,9 +172,10 @@ def _work(write: int, reads: Iterable[int], pieces: Sequence[tuple[int, int]],
         for fd in reads:
             os.close(fd)
         sender = _Sender(write)
-        for start, stop in pieces:
-            text = b"".join(b for part in render(start, stop) for b in part)
-            sender.put([len(text).to_bytes(8, "little"), text] if text else [])
+        for start, stop in pieces:  # sent as they are (a join would copy them once more)
+            buffers = [b for part in render(start, stop) for b in part if len(b)]
+            size = sum(len(b) for b in buffers)
+            sender.put([size.to_bytes(8, "little"), *buffers] if size else [])
         sender.finish()
     except BrokenPipeError:
         code = 1  # the parent stopped reading: it has failed or was killed
@@ -218,7 +236,7 @@ class _Sender:
 def _write_all(fd: int, buffers: list[bytes | memoryview]) -> None:
     views = [memoryview(b).cast("B") for b in buffers]
     while views:
-        done = os.writev(fd, views)
+        done = os.writev(fd, views[:_IOV_MAX])
         while views and done >= len(views[0]):
             done -= len(views[0])
             views.pop(0)
