@@ -17,6 +17,7 @@ rows bit for bit, read without loading the whole file) and removed.
 
     python benchmarks/bench_output.py                  # options: --contours 200
     python benchmarks/bench_output.py --contours 20 --positions 20000 --pandas
+    python benchmarks/bench_output.py --contours 50 --workers all   # or none
 
 ``--pandas`` also times pandas' own ``to_csv`` and ``to_json`` (what mechloop used before)
 for comparison.  The default size writes about 3.4 GB of CSV and 8 GB of JSON: see that
@@ -215,7 +216,17 @@ def main() -> int:
     parser.add_argument("--dir", default=None, help="where to write (default: temp folder)")
     parser.add_argument("--pandas", action="store_true",
                         help="also time pandas' to_csv and to_json")
+    parser.add_argument("--workers", choices=("auto", "all", "none"), default="auto",
+                        help="CSV/JSON worker processes: auto (one per idle core, as "
+                        "mechloop does), all (one per core, whatever the load: to measure "
+                        "them on a busy machine), none (format in the writing process)")
     args = parser.parse_args()
+    from mechloop.output import parallel
+
+    if args.workers == "all":
+        os.getloadavg = lambda: (0.0, 0.0, 0.0)  # this process only: every core counts
+    elif args.workers == "none":
+        parallel.PARALLEL_VALUES = 1 << 62
 
     t0 = time.perf_counter()
     frame = build_frame(args.contours, args.positions)
@@ -223,6 +234,10 @@ def main() -> int:
           f"{len(frame.columns)} columns ({frame.memory_usage().sum() / 2**20:.0f} MB in "
           f"memory), built in {time.perf_counter() - t0:.1f} s; resident "
           f"{_rss_mb():.0f} MB")
+    cells = len(frame) * len(frame.columns)
+    print(f"workers ({args.workers}): {parallel.workers_for(cells, cells // 2**18)} for "
+          f"CSV and JSON; load average {os.getloadavg()[0]:.1f} on "
+          f"{len(os.sched_getaffinity(0))} cores")
     runs = [("mechloop", f) for f in args.formats.split(",")]
     if args.pandas:
         runs += [("pandas", f) for f in ("csv", "json") if f in args.formats.split(",")]
