@@ -295,6 +295,13 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"timing (?P<fig>7\.4·10⁻⁷) mm²", ("bench", "benchmarks/bench_synthesis.py", False)),
     (R, r"generator (?P<fig>0\.71)° over", ("bench", "benchmarks/bench_synthesis.py", False)),
     (R, r"it printed (?P<fig>0\.26) s", ("bench", "benchmarks/bench_startup.py", True)),
+    (R, r"CSV (?P<fig>132) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"JSON (?P<fig>102) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"Parquet (?P<fig>150) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"\((?P<fig>289) and 210 MB per", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"289 and (?P<fig>210) MB per", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"with (?P<fig>6) MB above", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"and (?P<fig>41) MB for\s+Parquet", ("bench", "benchmarks/bench_output.py", True)),
     # example headers
     ("roof_support.yaml", r"E from (?P<fig>1\.434) m", ("computed", "E low")),
     ("roof_support.yaml", r"to (?P<fig>2\.557) m", ("computed", "E high")),
@@ -363,6 +370,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
     (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
     (R, r"\d+ positions per design", "the benchmark's setting"),
+    (R, r"100,000 rows × 454 columns", "bench_output.py's table at --contours 50 "
+        "--positions 100000 (position, time, argument 1, 9 per four-bar, chain_break)"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
     (R, r"within 5 s a command", "the fuzz harness's default limit: MECHLOOP_FUZZ_TIME in "
