@@ -635,3 +635,14 @@ def test_group_model_saves_as_a_vector_model(tmp_path):
     mechloop.save_model(model, tmp_path / "six.yaml")
     again = mechloop.load_model(tmp_path / "six.yaml")
     assert again == model
+
+
+def test_many_broken_values_report_the_schema_problems_without_stand_ins(monkeypatch):
+    """Past MAX_STAND_INS broken values (each stand-in costs validations) only the schema
+    problems are reported, still every one of them."""
+    from mechloop.model import salvage
+
+    monkeypatch.setattr(salvage, "MAX_STAND_INS", 1)
+    data = four_bar_data(at=["A", "X"], lengths=[0.25], variant=7)
+    assert {p.path for p in problems_of(data)} == {("groups", 0, "lengths", 1),
+                                                   ("groups", 0, "variant")}

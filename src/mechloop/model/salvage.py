@@ -40,6 +40,10 @@ GROUP_CORE = CORE | {"ground", "input", "groups", "points"}
 #: Sections of a group file whose broken values inside an item get a stand-in.
 GROUP_PATCHED = frozenset({"ground", "input", "groups", "points"})
 
+#: Most broken values given stand-ins (each costs up to three validations of the file);
+#: with more, the schema problems are all that is reported.
+MAX_STAND_INS = 20
+
 #: Stand-ins tried for a broken value, in order (None: remove the key, for its default).
 _STAND_INS: tuple[Any, ...] = (None, 1.0, [1.0, 1.0])
 
@@ -72,6 +76,8 @@ def salvage(data: dict[str, Any], problems: list[Problem], cls: type[T] = Model,
             return None, frozenset()
         pruned.pop(path[0], None)
         dropped.add((path[0],))
+    if len(set(stand)) > MAX_STAND_INS:
+        return None, frozenset()
     for path in sorted(set(stand), key=len, reverse=True):  # the innermost first
         replaced = _stand_in(pruned, path, cls)
         if replaced is None:
