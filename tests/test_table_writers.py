@@ -322,3 +322,16 @@ def test_workers_only_for_idle_cores(monkeypatch):
         assert parallel.workers_for(10**6, 100) == workers, load
     monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
     assert parallel.workers_for(999, 100) == 0 and parallel.workers_for(10**6, 3) == 3
+
+
+def test_a_failed_fork_formats_here(tmp_path, monkeypatch, request):
+    if request.node.callspec.params["small_chunks"] != "forked":
+        pytest.skip("one run is enough")
+
+    def no_fork():
+        raise OSError(12, "Cannot allocate memory")
+
+    write_frame(_frame(), tmp_path / "a.csv")
+    monkeypatch.setattr(parallel.os, "fork", no_fork)
+    write_frame(_frame(), tmp_path / "b.csv")
+    assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()

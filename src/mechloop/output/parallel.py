@@ -93,7 +93,11 @@ def write_ordered(handle: BinaryIO, pieces: Sequence[tuple[int, int]], render: R
                     handle.write(buffer)
         return
     handle.flush()
-    pool = _Pool(pieces, render, workers)
+    try:
+        pool = _Pool(pieces, render, workers)
+    except OSError:  # no fork now (memory, a process limit): format here
+        write_ordered(handle, pieces, render, 0)
+        return
     try:
         copy = _copier(handle)
         for index in range(len(pieces)):
