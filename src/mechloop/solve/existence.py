@@ -1,0 +1,460 @@
+"""Does every contour assemble over the *whole* continuous input interval?
+
+A solve looks at the positions only; a chain may break between two of them (a four-bar
+just past Grashof's limit loses its toggle for a fraction of a degree).  This module
+decides existence over the continuous motion, for ``D`` designs at once
+(:func:`assembles_throughout`):
+
+* **Closed forms** (:mod:`.loop_forms`): a four-bar or slider-crank loop driven by a crank
+  is decided exactly from its dimensions over the argument's whole range.
+* **Any other contour**: its existence margin — ``sin²`` of the angle between the two
+  columns of its Jacobian (Pl4: the two unknown vectors; Pl3: ``cos²`` of the rod to the
+  guide; Pl2: the signed sine between the two directions; Pl1: the closing length, when a
+  later contour reads its direction) — is taken at the solved positions; wherever the
+  sampled margin has a local minimum whose parabola through three samples comes within a
+  few curvatures of zero, the minimum is located between the positions by a vectorized
+  zoom (9 points per step, all candidates of all designs in one solve per step) with the
+  same closed-form modules at those inputs.  A point found with no solution, a margin at
+  or below :data:`THRESHOLD` (the sampled solve's dead-point test), or a sign change of a
+  Pl2 margin is a break.
+* A **degenerate link** — a rotating vector of constant length below :data:`DEGENERATE`
+  times the largest constant length of the design — makes a design infeasible.
+
+The continuous motion between positions ``i`` and ``i + 1`` is argument 1 running linearly
+from its value at ``i`` to its value at ``i + 1``, any other argument interpolated over
+argument 1 (exact for tables; a law is followed through its sampled values).  A contour
+with ``variant: auto`` is checked exactly itself (its margin does not depend on the
+variant); contours after it are checked between positions with the variant of the last
+position (:func:`~mechloop.solve.designs.solve_designs_at`'s rule).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from mechloop.model.check import require_valid
+from mechloop.model.schema import Model
+from mechloop.model.structure import ContourInfo, Structure
+from mechloop.solve.designs import DesignResults, _extra_arguments, _with_extra_columns
+from mechloop.solve.inputs import Signal, model_arguments, model_time
+from mechloop.solve.kinematics import SINGULAR_SIN, _Setup, _setup, _solve_block
+from mechloop.solve.loop_forms import CrankLoop, least_margin, lost_intervals
+
+Array = NDArray[np.float64]
+
+#: A margin at or below this is a break: ``sin² ≤ SINGULAR_SIN²`` is the sampled solve's
+#: dead point (its Jacobian's sine below ``SINGULAR_SIN``).
+THRESHOLD = SINGULAR_SIN ** 2
+#: A rotating link shorter than this times the design's largest constant length is
+#: degenerate (a crank of 3e-15 mm does not turn anything).
+DEGENERATE = 1e-6
+#: Points per zoom step, and zoom steps at most (a bracket of one position shrinks by
+#: 5 per step: 14 steps reach 1.6e-10 of a position).
+ZOOM_POINTS = 9
+ZOOM_STEPS = 14
+#: A sampled local minimum is refined when its parabola's minimum is below this many
+#: second differences (the parabola's own curvature scale) above the threshold.
+SUSPICION = 2.0
+
+
+@dataclass(frozen=True)
+class BreakInterval:
+    """Where a design's contour cannot be assembled: argument 1 in ``[start, stop]``
+    (SI: rad or m).  ``after`` is the position ``i`` such that the break begins between
+    positions ``i`` and ``i + 1`` (or at ``i``); ``exact`` tells a closed-form interval
+    from one located by the zoom (which knows a point of it, ``start == stop``, to
+    1e-10 of a position)."""
+
+    design: int
+    contour: int
+    start: float
+    stop: float
+    after: int
+    exact: bool
+
+
+@dataclass(frozen=True)
+class Existence:
+    """The verdict for ``D`` designs.
+
+    ``feasible`` ``(D,)``: every contour assembles at every input of the continuous
+    interval and no link is degenerate; ``margin`` ``(D,)``: the smallest existence margin
+    found (≤ :data:`THRESHOLD` where the design breaks; −1 for a break located by a point
+    with no solution); ``degenerate`` ``(D,)``; ``breaks``: the intervals (only when asked
+    for, ``intervals=True``).
+    """
+
+    feasible: NDArray[np.bool_]
+    margin: Array
+    degenerate: NDArray[np.bool_]
+    breaks: tuple[BreakInterval, ...] = field(default_factory=tuple)
+
+
+def assembles_throughout(model: Model, overrides: Mapping[str, ArrayLike] | None = None,
+                         *, samples: DesignResults | None = None,
+                         intervals: bool = False) -> Existence:
+    """Decide for every design whether the model assembles over the whole input interval.
+
+    ``overrides`` are as in :func:`~mechloop.solve.designs.solve_designs` (SI, ``(D,)``).
+    ``samples`` are the designs already solved at the model's positions (values only are
+    read); they are needed only for contours without a closed form and are solved here
+    (positions only) when not given.  With ``intervals=True`` the break intervals are
+    listed too (a loop over the broken designs; the verdict itself is vectorized).
+    """
+    structure = require_valid(model)
+    over = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (overrides or {}).items()}
+    n_designs = next(iter(over.values())).shape[0] if over else (
+        samples.designs if samples is not None else 1)
+    args = model_arguments(model, model_time(model), strict=False)
+    setup = _setup(model, structure, args, over)
+    degenerate = _degenerate(setup, n_designs)
+    margin = np.full(n_designs, np.inf)
+    breaks: list[BreakInterval] = []
+
+    loops = {loop.info.number: loop for loop in crank_loops(setup, args, n_designs)}
+    for loop in loops.values():
+        values = args[loop.argument].value
+        lo, hi = float(values.min()), float(values.max())
+        least = least_margin(loop, np.full(n_designs, lo), np.full(n_designs, hi))
+        margin = np.minimum(margin, least)
+        if intervals:
+            for d in np.flatnonzero(least <= THRESHOLD):
+                for start, stop in lost_intervals(loop, int(d), lo, hi, THRESHOLD):
+                    breaks.append(BreakInterval(int(d), loop.info.number, start, stop,
+                                                _after(values, start), True))
+
+    generic = [info for info in setup.ordered if info.number not in loops
+               and _checked(info, structure)]
+    if generic and 1 in args:
+        if samples is None:
+            from mechloop.solve.designs import solve_designs
+
+            samples = solve_designs(model, over, derivatives=False)
+        least, found = _between_positions(model, structure, setup, args, over, samples,
+                                          generic, margin > THRESHOLD)
+        margin = np.minimum(margin, least)
+        if intervals:
+            breaks.extend(found)
+    if samples is not None:
+        margin = np.where(samples.broken.any(axis=-1), np.minimum(margin, -1.0), margin)
+    margin = np.where(degenerate, np.minimum(margin, -1.0), margin)
+    feasible = margin > THRESHOLD
+    return Existence(feasible, margin, degenerate,
+                     tuple(sorted(breaks, key=lambda b: (b.design, b.start, b.contour))))
+
+
+def _after(values: Array, where: float) -> int:
+    """The position ``i`` whose segment ``[values[i], values[i+1]]`` first holds
+    ``where`` (the last position if none does)."""
+    lo = np.minimum(values[:-1], values[1:])
+    hi = np.maximum(values[:-1], values[1:])
+    inside = np.flatnonzero((lo <= where) & (where <= hi))
+    return int(inside[0]) if inside.size else int(values.size - 1)
+
+
+def _value(setup: _Setup, name: str, n_designs: int) -> Array | None:
+    """A parameter that is constant over positions, per design ``(D,)``; None otherwise."""
+    if name not in setup.constant:
+        return None
+    links = setup.structure.links
+    root = links[name].root if name in links else name
+    value = setup.constants[root] + setup.deltas.get(name, 0.0)
+    return np.broadcast_to(np.asarray(value, dtype=float).reshape(-1), (n_designs,))
+
+
+def _driven_angle(setup: _Setup, name: str, args: Mapping[int, Signal], n_designs: int
+                  ) -> tuple[int, Array] | None:
+    """(argument, offset ``(D,)``) when angle ``name`` is an argument plus a constant."""
+    links = setup.structure.links
+    root = links[name].root if name in links else name
+    if root not in setup.driven:
+        return None
+    signal, offset = setup.driven[root]
+    number = next(k for k, s in args.items() if s is signal)
+    total = offset + setup.deltas.get(name, 0.0)
+    return number, np.broadcast_to(np.asarray(total, dtype=float).reshape(-1), (n_designs,))
+
+
+def crank_loops(setup: _Setup, args: Mapping[int, Signal], n_designs: int
+                ) -> list[CrankLoop]:
+    """The contours that :mod:`.loop_forms` decides in closed form (four-bars and
+    slider-cranks driven by a crank of constant length), per design; ``setup`` compiled
+    with the signals ``args``."""
+    loops = []
+    for info in setup.ordered:
+        if info.module not in ("Pl3", "Pl4"):
+            continue
+        v1, v2 = (int(u[1:]) for u in info.functions)
+        knowns = [n for n in info.vectors if n not in (v1, v2)]
+        crank, rest = None, 0.0 + 0.0j
+        for n in knowns:
+            r = _value(setup, f"r{n}", n_designs)
+            a = _value(setup, f"a{n}", n_designs)
+            if r is not None and a is not None:
+                rest = rest + r * np.exp(1j * a)
+                continue
+            driven = _driven_angle(setup, f"a{n}", args, n_designs)
+            if r is None or driven is None or crank is not None:
+                crank = None
+                break
+            crank = (n, r, *driven)
+        else:
+            if crank is None:
+                continue
+            n, c, argument, offset = crank
+            rest = np.broadcast_to(rest, (n_designs,))
+            if info.module == "Pl4":
+                r1, r2 = _value(setup, f"r{v1}", n_designs), _value(setup, f"r{v2}", n_designs)
+                guide = np.zeros(n_designs)
+            else:
+                r1 = np.zeros(n_designs)
+                r2 = _value(setup, f"r{v2}", n_designs)
+                guide = _value(setup, f"a{v1}", n_designs)
+            if r1 is None or r2 is None or guide is None:
+                continue
+            order = list(info.vectors)
+            at = order.index(n)
+            neighbours = {order[at - 1], order[(at + 1) % len(order)]}
+            coupler = v1 if v1 in neighbours or v2 not in neighbours else v2
+            loops.append(CrankLoop(
+                info=info, kind="four-bar" if info.module == "Pl4" else "slider-crank",
+                crank=n, argument=argument, offset=offset, c=c, k=np.abs(rest),
+                kappa=np.angle(rest), r1=r1, r2=r2, guide=guide, coupler=coupler,
+                rocker=v2 if coupler == v1 else v1))
+            continue
+    return loops
+
+
+def _degenerate(setup: _Setup, n_designs: int) -> NDArray[np.bool_]:
+    """Designs with a rotating link of constant length below :data:`DEGENERATE` times the
+    design's largest constant length (a link: a vector of a Pl3/Pl4 loop whose angle
+    changes, or a vector whose angle an argument drives)."""
+    numbers = sorted({int(name[1:]) for name in [*setup.constant, *setup.varying]})
+    lengths = {}
+    for number in numbers:
+        value = _value(setup, f"r{number}", n_designs)
+        if value is not None:
+            lengths[number] = np.abs(value)
+    if not lengths:
+        return np.zeros(n_designs, dtype=bool)
+    size = np.max(np.stack(list(lengths.values())), axis=0)
+    loops = {n for info in setup.ordered if info.module in ("Pl3", "Pl4")
+             for n in info.vectors}
+    driven = {int(name[1:]) for name in setup.driven if name[0] == "a"}
+    bad = np.zeros(n_designs, dtype=bool)
+    for number, length in lengths.items():
+        rotates = f"a{number}" not in setup.constant
+        if number in driven or (rotates and number in loops):
+            bad |= length <= DEGENERATE * size
+    return bad
+
+
+def _checked(info: ContourInfo, structure: Structure) -> bool:
+    """Whether a contour without a closed form is checked between positions: every
+    Pl2–Pl4, and a Pl1 whose direction another contour reads (through a link)."""
+    if info.module != "Pl1":
+        return True
+    return any(chain.root == info.functions[1] for chain in structure.links.values())
+
+
+def contour_margins(info: ContourInfo, values: Mapping[str, Array], size: Array,
+                    sign: Array | None = None) -> Array:
+    """The existence margin of a contour from its solved values, shape of the values:
+    Pl4 ``sin²(α1 − α2)``, Pl3 ``cos²(α2 − α_guide)``, Pl2 ``sign·sin(α1 − α2)`` (``sign``
+    makes it positive at the first position), Pl1 the closing length over ``size``."""
+    u1, u2 = info.functions
+    if info.module == "Pl4":
+        return np.sin(values[u1] - values[u2]) ** 2
+    if info.module == "Pl3":
+        return np.cos(values[u2] - values[f"a{u1[1:]}"]) ** 2
+    if info.module == "Pl2":
+        s = np.sin(values[f"a{u1[1:]}"] - values[f"a{u2[1:]}"])
+        return s if sign is None else s * sign
+    return values[u1] / size
+
+
+def _between_positions(model: Model, structure: Structure, setup: _Setup,
+                       args: Mapping[int, Signal], over: Mapping[str, Array],
+                       samples: DesignResults, contours: list[ContourInfo],
+                       active: NDArray[np.bool_]
+                       ) -> tuple[Array, list[BreakInterval]]:
+    """The generic check: the least margin per design ``(D,)`` over ``contours`` between
+    the positions of ``samples``, and the breaks found there."""
+    n_designs, n_pos = samples.broken.shape
+    least = np.full(n_designs, np.inf)
+    found: list[BreakInterval] = []
+    rows = np.flatnonzero(active & ~samples.broken.any(axis=-1))
+    if rows.size == 0 or n_pos < 2:
+        return least, found
+    x = args[1].value
+    size = np.ones((rows.size, 1))
+    lengths = [np.abs(v) for name in setup.constant if name[0] == "r"
+               if (v := _value(setup, name, n_designs)) is not None]
+    if lengths:
+        size = np.maximum(np.max(np.stack(lengths), axis=0)[rows], 1e-300)[:, None]
+    values = {k: v[rows] for k, v in samples.values.items()}
+    cand_row, cand_contour, cand_lo, cand_hi = [], [], [], []
+    signs: dict[int, Array] = {}
+    for ci, info in enumerate(contours):
+        sign = None
+        if info.module == "Pl2":
+            first = contour_margins(info, {k: v[:, :1] for k, v in values.items()}, size)
+            sign = np.where(first < 0, -1.0, 1.0)
+            signs[info.number] = sign
+        m = contour_margins(info, values, size, sign)
+        least[rows] = np.minimum(least[rows], m.min(axis=-1))
+        # sign changes (Pl2) are breaks between the positions found as they are
+        crossed = (m[:, :-1] > THRESHOLD) & (m[:, 1:] <= 0)
+        for r, i in zip(*np.nonzero(crossed), strict=True):
+            least[rows[r]] = min(least[rows[r]], -1.0)
+            found.append(BreakInterval(int(rows[r]), info.number, float(x[i]),
+                                       float(x[i + 1]), int(i), False))
+        # sampled local minima whose parabola comes near zero: candidates for the zoom
+        padded = np.concatenate([m[:, 1:2], m, m[:, -2:-1]], axis=1)
+        left, mid, right = padded[:, :-2], padded[:, 1:-1], padded[:, 2:]
+        minimum = (mid <= left) & (mid <= right) & (mid > THRESHOLD)
+        second = np.maximum(left - 2 * mid + right, 0.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            vertex = mid - np.where(second > 0, (right - left) ** 2 / (8 * second), 0.0)
+        suspect = minimum & (vertex <= THRESHOLD + SUSPICION * second)
+        r_idx, p_idx = np.nonzero(suspect)
+        cand_row.append(r_idx)
+        cand_contour.append(np.full(r_idx.size, ci))
+        cand_lo.append(np.maximum(p_idx - 1, 0).astype(float))
+        cand_hi.append(np.minimum(p_idx + 1, n_pos - 1).astype(float))
+    cand = np.concatenate(cand_row)
+    if cand.size == 0:
+        return least, found
+    which = np.concatenate(cand_contour)
+    lo, hi = np.concatenate(cand_lo), np.concatenate(cand_hi)
+    best, hit = _zoom(model, structure, setup, args, over, rows[cand], which, contours,
+                      lo, hi, size[cand], {n: s[cand] for n, s in signs.items()})
+    np.minimum.at(least, rows[cand], best)
+    for j in np.flatnonzero(best <= THRESHOLD):
+        t = hit[j]
+        value = float(np.interp(t, np.arange(n_pos), x))
+        found.append(BreakInterval(int(rows[cand[j]]), contours[which[j]].number, value,
+                                   value, int(min(np.floor(t), n_pos - 2)), False))
+    return least, found
+
+
+def _zoom(model: Model, structure: Structure, setup: _Setup, args: Mapping[int, Signal],
+          over: Mapping[str, Array], designs: NDArray[np.int64], which: NDArray[np.int64],
+          contours: list[ContourInfo], lo: Array, hi: Array, size: Array,
+          signs: Mapping[int, Array]) -> tuple[Array, Array]:
+    """Locate the least margin of each candidate (design, contour, bracket of position
+    numbers ``[lo, hi]``) by zooming: ``ZOOM_POINTS`` inputs per bracket solved per step
+    for all candidates at once, the bracket narrowed around the least.  Returns the least
+    margin per candidate (−1 where a point had no solution) and the position number
+    (fractional) where it was found."""
+    n = lo.size
+    x = args[1].value
+    positions = np.arange(x.size, dtype=float)
+    best = np.full(n, np.inf)
+    where = (lo + hi) / 2
+    active = np.ones(n, dtype=bool)
+    frac = np.arange(1, ZOOM_POINTS + 1) / (ZOOM_POINTS + 1)
+    for _ in range(ZOOM_STEPS):
+        live = np.flatnonzero(active)
+        if live.size == 0:
+            break
+        t = lo[live, None] + (hi[live] - lo[live])[:, None] * frac[None, :]
+        inputs = np.interp(t, positions, x)
+        values, broken = _solve_at(model, structure, setup, args,
+                                   {k: v[designs[live]] for k, v in over.items()}, inputs)
+        margin = np.empty(t.shape)
+        for ci, info in enumerate(contours):
+            mine = which[live] == ci
+            if mine.any():
+                sign = signs.get(info.number)
+                margin[mine] = contour_margins(
+                    info, {k: v[mine] for k, v in values.items()}, size[live][mine],
+                    None if sign is None else sign[live][mine])
+        margin = np.where(broken, -1.0, margin)
+        j = np.argmin(margin, axis=1)
+        low = margin[np.arange(live.size), j]
+        better = low < best[live]
+        best[live] = np.where(better, low, best[live])
+        where[live] = np.where(better, t[np.arange(live.size), j], where[live])
+        step = (hi[live] - lo[live]) / (ZOOM_POINTS + 1)
+        centre = t[np.arange(live.size), j]
+        lo[live], hi[live] = centre - step, centre + step
+        # stop: a break found, or a minimum clearly away from zero for its curvature
+        left = margin[np.arange(live.size), np.maximum(j - 1, 0)]
+        right = margin[np.arange(live.size), np.minimum(j + 1, ZOOM_POINTS - 1)]
+        second = np.maximum(left - 2 * low + right, 0.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            vertex = low - np.where(second > 0, (right - left) ** 2 / (8 * second), 0.0)
+        done = (low <= THRESHOLD) | (vertex > THRESHOLD + SUSPICION * second)
+        active[live[done]] = False
+    return best, where
+
+
+def _solve_at(model: Model, structure: Structure, setup: _Setup,
+              args: Mapping[int, Signal], over: Mapping[str, Array], inputs: Array
+              ) -> tuple[dict[str, Array], NDArray[np.bool_]]:
+    """Every parameter of designs ``over`` (rows ``(R,)``) at their own inputs of argument
+    1, ``(R, K)``, positions only — the extra columns of
+    :func:`~mechloop.solve.designs.solve_designs_at` without the regular positions."""
+    extra_at = _extra_arguments(args, inputs)
+    empty = np.empty(0)
+    bare = {k: Signal(empty, empty, empty) for k in args}
+    part = _setup(model, structure, bare, over)
+    part = _with_extra_columns(part, bare, extra_at, 0, inputs.shape[0])
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        block = _solve_block(part, 0, inputs.shape[1], inputs.shape, {}, derivatives=False)
+    broken = np.zeros(inputs.shape, dtype=bool)
+    for info in part.ordered:
+        broken |= block.no_solution[info.number] | block.dead[info.number]
+    values = {name: np.broadcast_to(p.value, inputs.shape) for name, p in
+              block.params.items()}
+    return values, broken
+
+
+def four_bar_type_holds(model: Model, overrides: Mapping[str, ArrayLike] | None = None, *,
+                        grashof: str = "any", crank_shortest: bool = False
+                        ) -> NDArray[np.bool_]:
+    """Whether each design's crank-driven four-bar loops are of the type asked for
+    (closed form, from the four lengths: crank, frame — the distance between the fixed
+    pivots —, coupler and rocker), ``(D,)``.
+
+    ``grashof``: ``"any"``; ``"grashof"`` (``s + l ≤ p + q``); ``"crank-rocker"`` (Grashof,
+    the crank shortest); ``"double-crank"`` (Grashof, the frame shortest);
+    ``"double-rocker"`` (Grashof, the coupler shortest); ``"non-grashof"``
+    (``s + l > p + q``).  ``crank_shortest``: the crank is the shortest of the four.
+    Raises :class:`~mechloop.errors.ModelError` when the model has no four-bar loop
+    driven by a crank of constant length.
+    """
+    from mechloop.errors import ModelError, Problem
+    from mechloop.solve.loop_forms import grashof_class
+
+    structure = require_valid(model)
+    over = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (overrides or {}).items()}
+    n_designs = next(iter(over.values())).shape[0] if over else 1
+    args = model_arguments(model, model_time(model), strict=False)
+    setup = _setup(model, structure, args, over)
+    loops = [loop for loop in crank_loops(setup, args, n_designs) if loop.kind == "four-bar"]
+    if not loops:
+        key = "grashof" if grashof != "any" else "crank_shortest"
+        raise ModelError([Problem(("synthesis", key), "the model has no four-bar loop "
+                                  "driven by a crank (a Pl4 contour whose only moving "
+                                  "known vector is a constant length turned by an "
+                                  "argument), so its four-bar type is undefined",
+                                  f"remove '{key}', or model the four-bar as one contour "
+                                  "crank, coupler, rocker, frame")])
+    ok = np.ones(n_designs, dtype=bool)
+    for loop in loops:
+        is_grashof, shortest = grashof_class(loop)
+        wanted = {"any": np.ones(n_designs, dtype=bool), "grashof": is_grashof,
+                  "non-grashof": ~is_grashof,
+                  "crank-rocker": is_grashof & (shortest == "crank"),
+                  "double-crank": is_grashof & (shortest == "frame"),
+                  "double-rocker": is_grashof & (shortest == "coupler")}[grashof]
+        ok &= wanted
+        if crank_shortest:
+            ok &= shortest == "crank"
+    return ok
