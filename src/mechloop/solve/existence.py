@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -39,7 +40,7 @@ from numpy.typing import ArrayLike, NDArray
 from mechloop.model.check import require_valid
 from mechloop.model.schema import Model
 from mechloop.model.structure import ContourInfo, Structure
-from mechloop.solve.designs import DesignResults, _extra_arguments, _with_extra_columns
+from mechloop.solve.designs import _extra_arguments, _with_extra_columns
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import SINGULAR_SIN, _Setup, _setup, _solve_block
 from mechloop.solve.loop_forms import CrankLoop, least_margin, lost_intervals
@@ -59,6 +60,16 @@ ZOOM_STEPS = 14
 #: A sampled local minimum is refined when its parabola's minimum is below this many
 #: second differences (the parabola's own curvature scale) above the threshold.
 SUSPICION = 2.0
+
+
+class Sampled(Protocol):
+    """Designs solved at the model's positions: ``values`` (name -> ``(D, P)``, SI, NaN
+    where broken) and ``broken`` ``(D, P)`` —
+    a :class:`~mechloop.solve.designs.DesignResults`, or a single solve's arrays with a
+    leading axis of one."""
+
+    values: Mapping[str, Array]
+    broken: NDArray[np.bool_]
 
 
 @dataclass(frozen=True)
@@ -95,7 +106,7 @@ class Existence:
 
 
 def assembles_throughout(model: Model, overrides: Mapping[str, ArrayLike] | None = None,
-                         *, samples: DesignResults | None = None,
+                         *, samples: Sampled | None = None,
                          intervals: bool = False) -> Existence:
     """Decide for every design whether the model assembles over the whole input interval.
 
@@ -108,7 +119,7 @@ def assembles_throughout(model: Model, overrides: Mapping[str, ArrayLike] | None
     structure = require_valid(model)
     over = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (overrides or {}).items()}
     n_designs = next(iter(over.values())).shape[0] if over else (
-        samples.designs if samples is not None else 1)
+        samples.broken.shape[0] if samples is not None else 1)
     args = model_arguments(model, model_time(model), strict=False)
     setup = _setup(model, structure, args, over)
     degenerate = _degenerate(setup, n_designs)
@@ -134,8 +145,13 @@ def assembles_throughout(model: Model, overrides: Mapping[str, ArrayLike] | None
             from mechloop.solve.designs import solve_designs
 
             samples = solve_designs(model, over, derivatives=False)
+        # a design broken at a position is infeasible already: its positions between
+        # are looked at only when the intervals are asked for
+        active = margin > THRESHOLD
+        if not intervals:
+            active &= ~samples.broken.any(axis=-1)
         least, found = _between_positions(model, structure, setup, args, over, samples,
-                                          generic, margin > THRESHOLD)
+                                          generic, active)
         margin = np.minimum(margin, least)
         if intervals:
             breaks.extend(found)
@@ -279,7 +295,7 @@ def contour_margins(info: ContourInfo, values: Mapping[str, Array], size: Array,
 
 def _between_positions(model: Model, structure: Structure, setup: _Setup,
                        args: Mapping[int, Signal], over: Mapping[str, Array],
-                       samples: DesignResults, contours: list[ContourInfo],
+                       samples: Sampled, contours: list[ContourInfo],
                        active: NDArray[np.bool_]
                        ) -> tuple[Array, list[BreakInterval]]:
     """The generic check: the least margin per design ``(D,)`` over ``contours`` between
@@ -287,7 +303,7 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
     n_designs, n_pos = samples.broken.shape
     least = np.full(n_designs, np.inf)
     found: list[BreakInterval] = []
-    rows = np.flatnonzero(active & ~samples.broken.any(axis=-1))
+    rows = np.flatnonzero(active)
     if rows.size == 0 or n_pos < 2:
         return least, found
     x = args[1].value
@@ -305,10 +321,11 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
             first = contour_margins(info, {k: v[:, :1] for k, v in values.items()}, size)
             sign = np.where(first < 0, -1.0, 1.0)
             signs[info.number] = sign
-        m = contour_margins(info, values, size, sign)
-        least[rows] = np.minimum(least[rows], m.min(axis=-1))
+        m = contour_margins(info, values, size, sign)  # NaN at a broken position
+        least[rows] = np.minimum(least[rows], np.where(np.isnan(m), np.inf, m).min(axis=-1))
         # sign changes (Pl2) are breaks between the positions found as they are
-        crossed = (m[:, :-1] > THRESHOLD) & (m[:, 1:] <= 0)
+        with np.errstate(invalid="ignore"):
+            crossed = (m[:, :-1] > THRESHOLD) & (m[:, 1:] <= 0)
         for r, i in zip(*np.nonzero(crossed), strict=True):
             least[rows[r]] = min(least[rows[r]], -1.0)
             found.append(BreakInterval(int(rows[r]), info.number, float(x[i]),
@@ -316,11 +333,12 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
         # sampled local minima whose parabola comes near zero: candidates for the zoom
         padded = np.concatenate([m[:, 1:2], m, m[:, -2:-1]], axis=1)
         left, mid, right = padded[:, :-2], padded[:, 1:-1], padded[:, 2:]
-        minimum = (mid <= left) & (mid <= right) & (mid > THRESHOLD)
-        second = np.maximum(left - 2 * mid + right, 0.0)
+        with np.errstate(invalid="ignore"):
+            minimum = (mid <= left) & (mid <= right) & (mid > THRESHOLD)
         with np.errstate(divide="ignore", invalid="ignore"):
+            second = np.maximum(left - 2 * mid + right, 0.0)
             vertex = mid - np.where(second > 0, (right - left) ** 2 / (8 * second), 0.0)
-        suspect = minimum & (vertex <= THRESHOLD + SUSPICION * second)
+            suspect = minimum & (vertex <= THRESHOLD + SUSPICION * second)
         r_idx, p_idx = np.nonzero(suspect)
         cand_row.append(r_idx)
         cand_contour.append(np.full(r_idx.size, ci))
