@@ -339,6 +339,9 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
             second = np.maximum(left - 2 * mid + right, 0.0)
             vertex = mid - np.where(second > 0, (right - left) ** 2 / (8 * second), 0.0)
             suspect = minimum & (vertex <= THRESHOLD + SUSPICION * second)
+            # a minimum clearly away from zero: its parabola's vertex is the estimate
+            calm = np.where(minimum & ~suspect, vertex, np.inf).min(axis=-1)
+        least[rows] = np.minimum(least[rows], calm)
         r_idx, p_idx = np.nonzero(suspect)
         cand_row.append(r_idx)
         cand_contour.append(np.full(r_idx.size, ci))
@@ -408,6 +411,8 @@ def _zoom(model: Model, structure: Structure, setup: _Setup, args: Mapping[int, 
         with np.errstate(divide="ignore", invalid="ignore"):
             vertex = low - np.where(second > 0, (right - left) ** 2 / (8 * second), 0.0)
         done = (low <= THRESHOLD) | (vertex > THRESHOLD + SUSPICION * second)
+        calm = done & (low > THRESHOLD)  # the vertex of a fine parabola: the estimate
+        best[live[calm]] = np.minimum(best[live[calm]], vertex[calm])
         active[live[done]] = False
     return best, where
 
