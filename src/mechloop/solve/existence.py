@@ -39,10 +39,16 @@ from numpy.typing import ArrayLike, NDArray
 
 from mechloop.model.check import require_valid
 from mechloop.model.schema import Model
-from mechloop.model.structure import ContourInfo, Structure
+from mechloop.model.structure import ContourInfo, Structure, param_role
 from mechloop.solve.designs import _extra_arguments, _with_extra_columns
 from mechloop.solve.inputs import Signal, model_arguments, model_time
-from mechloop.solve.kinematics import SINGULAR_SIN, _Setup, _setup, _solve_block
+from mechloop.solve.kinematics import (
+    SINGULAR_SIN,
+    _constant_si,
+    _Setup,
+    _setup,
+    _solve_block,
+)
 from mechloop.solve.loop_forms import CrankLoop, least_margin, lost_intervals
 
 Array = NDArray[np.float64]
@@ -115,52 +121,129 @@ def assembles_throughout(model: Model, overrides: Mapping[str, ArrayLike] | None
     read); they are needed only for contours without a closed form and are solved here
     (positions only) when not given.  With ``intervals=True`` the break intervals are
     listed too (a loop over the broken designs; the verdict itself is vectorized).
+    Compiling the model is most of the cost for a few designs: to check many
+    populations of one model, build an :class:`ExistenceCheck` once and call it.
     """
-    structure = require_valid(model)
-    over = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (overrides or {}).items()}
-    n_designs = next(iter(over.values())).shape[0] if over else (
-        samples.broken.shape[0] if samples is not None else 1)
-    args = model_arguments(model, model_time(model), strict=False)
-    setup = _setup(model, structure, args, over)
-    degenerate = _degenerate(setup, n_designs)
-    margin = np.full(n_designs, np.inf)
-    breaks: list[BreakInterval] = []
+    return ExistenceCheck(model)(overrides, samples=samples, intervals=intervals)
 
-    loops = {loop.info.number: loop for loop in crank_loops(setup, args, n_designs)}
-    for loop in loops.values():
-        values = args[loop.argument].value
-        lo, hi = float(values.min()), float(values.max())
-        least = least_margin(loop, np.full(n_designs, lo), np.full(n_designs, hi))
-        margin = np.minimum(margin, least)
-        if intervals:
-            for d in np.flatnonzero(least <= THRESHOLD):
-                for start, stop in lost_intervals(loop, int(d), lo, hi, THRESHOLD):
-                    breaks.append(BreakInterval(int(d), loop.info.number, start, stop,
-                                                _after(values, start), True))
 
-    generic = [info for info in setup.ordered if info.number not in loops
-               and _checked(info, structure)]
-    if generic and 1 in args:
-        if samples is None:
-            from mechloop.solve.designs import solve_designs
+class ExistenceCheck:
+    """:func:`assembles_throughout` compiled for one model: call it with ``overrides``
+    (and ``samples``, ``intervals``) for each population.  ``structure`` and ``args`` (the
+    model's arguments as :func:`~mechloop.solve.inputs.model_arguments` gives them) and
+    ``setup`` (compiled from them without overrides) may be passed by a caller that has
+    them."""
 
-            samples = solve_designs(model, over, derivatives=False)
-        # a design broken at a position is infeasible already: its positions between
-        # are looked at only when the intervals are asked for
-        active = margin > THRESHOLD
-        if not intervals:
-            active &= ~samples.broken.any(axis=-1)
-        least, found = _between_positions(model, structure, setup, args, over, samples,
-                                          generic, active)
-        margin = np.minimum(margin, least)
-        if intervals:
-            breaks.extend(found)
-    if samples is not None:
-        margin = np.where(samples.broken.any(axis=-1), np.minimum(margin, -1.0), margin)
-    margin = np.where(degenerate, np.minimum(margin, -1.0), margin)
-    feasible = margin > THRESHOLD
-    return Existence(feasible, margin, degenerate,
-                     tuple(sorted(breaks, key=lambda b: (b.design, b.start, b.contour))))
+    def __init__(self, model: Model, *, structure: Structure | None = None,
+                 args: Mapping[int, Signal] | None = None, setup: _Setup | None = None):
+        self.model = model
+        self.structure = structure if structure is not None else require_valid(model)
+        self.args = dict(args) if args is not None else model_arguments(
+            model, model_time(model), strict=False)
+        self.base = setup if setup is not None else _setup(model, self.structure, self.args)
+        self.chains: dict[str, list[str]] = {}
+        self.own_delta: dict[str, float] = {}
+        for name, chain in self.structure.links.items():
+            current, path = name, []
+            while current != chain.root:
+                role = param_role(model, current)
+                path.append(current)
+                self.own_delta[current] = _constant_si(model, current, role.delta)
+                current = role.link
+            self.chains[name] = path
+        self.argument_of = {root: next(k for k, sig in self.args.items() if sig is signal)
+                            for root, (signal, _) in self.base.driven.items()}
+
+    def __call__(self, overrides: Mapping[str, ArrayLike] | None = None, *,
+                 samples: Sampled | None = None, intervals: bool = False) -> Existence:
+        model, structure, args = self.model, self.structure, self.args
+        over = {k: np.atleast_1d(np.asarray(v, dtype=float))
+                for k, v in (overrides or {}).items()}
+        n_designs = next(iter(over.values())).shape[0] if over else (
+            samples.broken.shape[0] if samples is not None else 1)
+        values = _Resolver(self, over, n_designs)
+        degenerate = _degenerate(values)
+        margin = np.full(n_designs, np.inf)
+        breaks: list[BreakInterval] = []
+
+        loops = {loop.info.number: loop for loop in crank_loops(values)}
+        for loop in loops.values():
+            x = args[loop.argument].value
+            lo, hi = float(x.min()), float(x.max())
+            least = least_margin(loop, np.full(n_designs, lo), np.full(n_designs, hi))
+            margin = np.minimum(margin, least)
+            if intervals:
+                for d in np.flatnonzero(least <= THRESHOLD):
+                    for start, stop in lost_intervals(loop, int(d), lo, hi, THRESHOLD):
+                        breaks.append(BreakInterval(int(d), loop.info.number, start, stop,
+                                                    _after(x, start), True))
+
+        generic = [info for info in self.base.ordered if info.number not in loops
+                   and _checked(info, structure)]
+        if generic and 1 in args:
+            if samples is None:
+                from mechloop.solve.designs import solve_designs
+
+                samples = solve_designs(model, over, derivatives=False)
+            # a design broken at a position is infeasible already: its positions between
+            # are looked at only when the intervals are asked for
+            active = margin > THRESHOLD
+            if not intervals:
+                active &= ~samples.broken.any(axis=-1)
+            least, found = _between_positions(values, over, samples, generic, active)
+            margin = np.minimum(margin, least)
+            if intervals:
+                breaks.extend(found)
+        if samples is not None:
+            margin = np.where(samples.broken.any(axis=-1), np.minimum(margin, -1.0), margin)
+        margin = np.where(degenerate, np.minimum(margin, -1.0), margin)
+        feasible = margin > THRESHOLD
+        return Existence(feasible, margin, degenerate,
+                         tuple(sorted(breaks, key=lambda b: (b.design, b.start, b.contour))))
+
+
+class _Resolver:
+    """The values per design ``(D,)`` of the parameters that are constant over positions
+    (constants, links of constants) and the offsets of driven angles, for one
+    population ``over``."""
+
+    def __init__(self, check: ExistenceCheck, over: Mapping[str, Array], n_designs: int):
+        self.check, self.over, self.n_designs = check, over, n_designs
+        self.ordered = check.base.ordered
+
+    def _delta(self, name: str) -> Array | float:
+        return sum((self.over.get(link, self.check.own_delta[link])
+                    for link in self.check.chains.get(name, ())), 0.0)
+
+    def _root(self, name: str) -> str:
+        links = self.check.structure.links
+        return links[name].root if name in links else name
+
+    def _rows(self, value: Array | float) -> Array:
+        return np.broadcast_to(np.asarray(value, dtype=float), (self.n_designs,))
+
+    def value(self, name: str) -> Array | None:
+        """A parameter constant over positions, per design; None for any other."""
+        if name not in self.check.base.constant:
+            return None
+        root = self._root(name)
+        return self._rows(self.over.get(root, self.check.base.constants[root])
+                          + self._delta(name))
+
+    def driven(self, name: str) -> tuple[int, Array] | None:
+        """(argument, offset per design) when angle ``name`` is an argument plus a
+        constant; None otherwise."""
+        root = self._root(name)
+        if root not in self.check.base.driven:
+            return None
+        offset = self.over.get(root, self.check.base.driven[root][1])
+        return self.check.argument_of[root], self._rows(offset + self._delta(name))
+
+    def lengths(self) -> dict[int, Array]:
+        """|length| per design of every vector whose length is constant."""
+        numbers = sorted(self.check.model.vectors)
+        found = {n: self.value(f"r{n}") for n in numbers}
+        return {n: np.abs(v) for n, v in found.items() if v is not None}
 
 
 def _after(values: Array, where: float) -> int:
@@ -172,48 +255,24 @@ def _after(values: Array, where: float) -> int:
     return int(inside[0]) if inside.size else int(values.size - 1)
 
 
-def _value(setup: _Setup, name: str, n_designs: int) -> Array | None:
-    """A parameter that is constant over positions, per design ``(D,)``; None otherwise."""
-    if name not in setup.constant:
-        return None
-    links = setup.structure.links
-    root = links[name].root if name in links else name
-    value = setup.constants[root] + setup.deltas.get(name, 0.0)
-    return np.broadcast_to(np.asarray(value, dtype=float).reshape(-1), (n_designs,))
-
-
-def _driven_angle(setup: _Setup, name: str, args: Mapping[int, Signal], n_designs: int
-                  ) -> tuple[int, Array] | None:
-    """(argument, offset ``(D,)``) when angle ``name`` is an argument plus a constant."""
-    links = setup.structure.links
-    root = links[name].root if name in links else name
-    if root not in setup.driven:
-        return None
-    signal, offset = setup.driven[root]
-    number = next(k for k, s in args.items() if s is signal)
-    total = offset + setup.deltas.get(name, 0.0)
-    return number, np.broadcast_to(np.asarray(total, dtype=float).reshape(-1), (n_designs,))
-
-
-def crank_loops(setup: _Setup, args: Mapping[int, Signal], n_designs: int
-                ) -> list[CrankLoop]:
+def crank_loops(values: _Resolver) -> list[CrankLoop]:
     """The contours that :mod:`.loop_forms` decides in closed form (four-bars and
-    slider-cranks driven by a crank of constant length), per design; ``setup`` compiled
-    with the signals ``args``."""
+    slider-cranks driven by a crank of constant length), per design."""
+    n_designs = values.n_designs
     loops = []
-    for info in setup.ordered:
+    for info in values.ordered:
         if info.module not in ("Pl3", "Pl4"):
             continue
         v1, v2 = (int(u[1:]) for u in info.functions)
         knowns = [n for n in info.vectors if n not in (v1, v2)]
         crank, rest = None, 0.0 + 0.0j
         for n in knowns:
-            r = _value(setup, f"r{n}", n_designs)
-            a = _value(setup, f"a{n}", n_designs)
+            r = values.value(f"r{n}")
+            a = values.value(f"a{n}")
             if r is not None and a is not None:
                 rest = rest + r * np.exp(1j * a)
                 continue
-            driven = _driven_angle(setup, f"a{n}", args, n_designs)
+            driven = values.driven(f"a{n}")
             if r is None or driven is None or crank is not None:
                 crank = None
                 break
@@ -224,12 +283,12 @@ def crank_loops(setup: _Setup, args: Mapping[int, Signal], n_designs: int
             n, c, argument, offset = crank
             rest = np.broadcast_to(rest, (n_designs,))
             if info.module == "Pl4":
-                r1, r2 = _value(setup, f"r{v1}", n_designs), _value(setup, f"r{v2}", n_designs)
+                r1, r2 = values.value(f"r{v1}"), values.value(f"r{v2}")
                 guide = np.zeros(n_designs)
             else:
                 r1 = np.zeros(n_designs)
-                r2 = _value(setup, f"r{v2}", n_designs)
-                guide = _value(setup, f"a{v1}", n_designs)
+                r2 = values.value(f"r{v2}")
+                guide = values.value(f"a{v1}")
             if r1 is None or r2 is None or guide is None:
                 continue
             order = list(info.vectors)
@@ -245,25 +304,21 @@ def crank_loops(setup: _Setup, args: Mapping[int, Signal], n_designs: int
     return loops
 
 
-def _degenerate(setup: _Setup, n_designs: int) -> NDArray[np.bool_]:
+def _degenerate(values: _Resolver) -> NDArray[np.bool_]:
     """Designs with a rotating link of constant length below :data:`DEGENERATE` times the
     design's largest constant length (a link: a vector of a Pl3/Pl4 loop whose angle
     changes, or a vector whose angle an argument drives)."""
-    numbers = sorted({int(name[1:]) for name in [*setup.constant, *setup.varying]})
-    lengths = {}
-    for number in numbers:
-        value = _value(setup, f"r{number}", n_designs)
-        if value is not None:
-            lengths[number] = np.abs(value)
+    lengths = values.lengths()
+    bad = np.zeros(values.n_designs, dtype=bool)
     if not lengths:
-        return np.zeros(n_designs, dtype=bool)
+        return bad
     size = np.max(np.stack(list(lengths.values())), axis=0)
-    loops = {n for info in setup.ordered if info.module in ("Pl3", "Pl4")
+    base = values.check.base
+    loops = {n for info in base.ordered if info.module in ("Pl3", "Pl4")
              for n in info.vectors}
-    driven = {int(name[1:]) for name in setup.driven if name[0] == "a"}
-    bad = np.zeros(n_designs, dtype=bool)
+    driven = {int(name[1:]) for name in base.driven if name[0] == "a"}
     for number, length in lengths.items():
-        rotates = f"a{number}" not in setup.constant
+        rotates = f"a{number}" not in base.constant
         if number in driven or (rotates and number in loops):
             bad |= length <= DEGENERATE * size
     return bad
@@ -293,13 +348,14 @@ def contour_margins(info: ContourInfo, values: Mapping[str, Array], size: Array,
     return values[u1] / size
 
 
-def _between_positions(model: Model, structure: Structure, setup: _Setup,
-                       args: Mapping[int, Signal], over: Mapping[str, Array],
+def _between_positions(values: _Resolver, over: Mapping[str, Array],
                        samples: Sampled, contours: list[ContourInfo],
                        active: NDArray[np.bool_]
                        ) -> tuple[Array, list[BreakInterval]]:
     """The generic check: the least margin per design ``(D,)`` over ``contours`` between
     the positions of ``samples``, and the breaks found there."""
+    check = values.check
+    args = check.args
     n_designs, n_pos = samples.broken.shape
     least = np.full(n_designs, np.inf)
     found: list[BreakInterval] = []
@@ -308,10 +364,10 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
         return least, found
     x = args[1].value
     size = np.ones((rows.size, 1))
-    lengths = [np.abs(v) for name in setup.constant if name[0] == "r"
-               if (v := _value(setup, name, n_designs)) is not None]
+    lengths = values.lengths()
     if lengths:
-        size = np.maximum(np.max(np.stack(lengths), axis=0)[rows], 1e-300)[:, None]
+        size = np.maximum(np.max(np.stack(list(lengths.values())), axis=0)[rows],
+                          1e-300)[:, None]
     values = {k: v[rows] for k, v in samples.values.items()}
     cand_row, cand_contour, cand_lo, cand_hi = [], [], [], []
     signs: dict[int, Array] = {}
@@ -352,7 +408,7 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
         return least, found
     which = np.concatenate(cand_contour)
     lo, hi = np.concatenate(cand_lo), np.concatenate(cand_hi)
-    best, hit = _zoom(model, structure, setup, args, over, rows[cand], which, contours,
+    best, hit = _zoom(check, over, rows[cand], which, contours,
                       lo, hi, size[cand], {n: s[cand] for n, s in signs.items()})
     np.minimum.at(least, rows[cand], best)
     for j in np.flatnonzero(best <= THRESHOLD):
@@ -363,9 +419,8 @@ def _between_positions(model: Model, structure: Structure, setup: _Setup,
     return least, found
 
 
-def _zoom(model: Model, structure: Structure, setup: _Setup, args: Mapping[int, Signal],
-          over: Mapping[str, Array], designs: NDArray[np.int64], which: NDArray[np.int64],
-          contours: list[ContourInfo], lo: Array, hi: Array, size: Array,
+def _zoom(check: ExistenceCheck, over: Mapping[str, Array], designs: NDArray[np.int64],
+          which: NDArray[np.int64], contours: list[ContourInfo], lo: Array, hi: Array, size: Array,
           signs: Mapping[int, Array]) -> tuple[Array, Array]:
     """Locate the least margin of each candidate (design, contour, bracket of position
     numbers ``[lo, hi]``) by zooming: ``ZOOM_POINTS`` inputs per bracket solved per step
@@ -373,7 +428,7 @@ def _zoom(model: Model, structure: Structure, setup: _Setup, args: Mapping[int, 
     margin per candidate (−1 where a point had no solution) and the position number
     (fractional) where it was found."""
     n = lo.size
-    x = args[1].value
+    x = check.args[1].value
     positions = np.arange(x.size, dtype=float)
     best = np.full(n, np.inf)
     where = (lo + hi) / 2
@@ -385,8 +440,8 @@ def _zoom(model: Model, structure: Structure, setup: _Setup, args: Mapping[int, 
             break
         t = lo[live, None] + (hi[live] - lo[live])[:, None] * frac[None, :]
         inputs = np.interp(t, positions, x)
-        values, broken = _solve_at(model, structure, setup, args,
-                                   {k: v[designs[live]] for k, v in over.items()}, inputs)
+        values, broken = _solve_at(check, {k: v[designs[live]] for k, v in over.items()},
+                                   inputs)
         margin = np.empty(t.shape)
         for ci, info in enumerate(contours):
             mine = which[live] == ci
@@ -417,16 +472,15 @@ def _zoom(model: Model, structure: Structure, setup: _Setup, args: Mapping[int, 
     return best, where
 
 
-def _solve_at(model: Model, structure: Structure, setup: _Setup,
-              args: Mapping[int, Signal], over: Mapping[str, Array], inputs: Array
+def _solve_at(check: ExistenceCheck, over: Mapping[str, Array], inputs: Array
               ) -> tuple[dict[str, Array], NDArray[np.bool_]]:
     """Every parameter of designs ``over`` (rows ``(R,)``) at their own inputs of argument
     1, ``(R, K)``, positions only — the extra columns of
     :func:`~mechloop.solve.designs.solve_designs_at` without the regular positions."""
-    extra_at = _extra_arguments(args, inputs)
+    extra_at = _extra_arguments(check.args, inputs)
     empty = np.empty(0)
-    bare = {k: Signal(empty, empty, empty) for k in args}
-    part = _setup(model, structure, bare, over)
+    bare = {k: Signal(empty, empty, empty) for k in check.args}
+    part = _setup(check.model, check.structure, bare, over)
     part = _with_extra_columns(part, bare, extra_at, 0, inputs.shape[0])
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         block = _solve_block(part, 0, inputs.shape[1], inputs.shape, {}, derivatives=False)
@@ -438,7 +492,8 @@ def _solve_at(model: Model, structure: Structure, setup: _Setup,
     return values, broken
 
 
-def four_bar_type_holds(model: Model, overrides: Mapping[str, ArrayLike] | None = None, *,
+def four_bar_type_holds(model: Model | ExistenceCheck,
+                        overrides: Mapping[str, ArrayLike] | None = None, *,
                         grashof: str = "any", crank_shortest: bool = False
                         ) -> NDArray[np.bool_]:
     """Whether each design's crank-driven four-bar loops are of the type asked for
@@ -455,12 +510,11 @@ def four_bar_type_holds(model: Model, overrides: Mapping[str, ArrayLike] | None 
     from mechloop.errors import ModelError, Problem
     from mechloop.solve.loop_forms import grashof_class
 
-    structure = require_valid(model)
+    check = model if isinstance(model, ExistenceCheck) else ExistenceCheck(model)
     over = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (overrides or {}).items()}
     n_designs = next(iter(over.values())).shape[0] if over else 1
-    args = model_arguments(model, model_time(model), strict=False)
-    setup = _setup(model, structure, args, over)
-    loops = [loop for loop in crank_loops(setup, args, n_designs) if loop.kind == "four-bar"]
+    loops = [loop for loop in crank_loops(_Resolver(check, over, n_designs))
+             if loop.kind == "four-bar"]
     if not loops:
         key = "grashof" if grashof != "any" else "crank_shortest"
         raise ModelError([Problem(("synthesis", key), "the model has no four-bar loop "

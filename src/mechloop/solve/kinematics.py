@@ -370,13 +370,14 @@ def _breaks_between(model: Model, setup: _Setup, values: dict[str, Array],
     shows: between two positions that assemble."""
     from types import SimpleNamespace
 
-    from mechloop.solve.existence import assembles_throughout
+    from mechloop.solve.existence import ExistenceCheck
 
     if 1 not in args or broken.size < 2:
         return ()
     samples = SimpleNamespace(values={k: np.asarray(v)[None, :] for k, v in values.items()},
                               broken=broken[None, :])
-    found = assembles_throughout(model, samples=samples, intervals=True).breaks
+    check = ExistenceCheck(model, structure=setup.structure, args=args, setup=setup)
+    found = check(samples=samples, intervals=True).breaks
     x = args[1].value
     modules = {c.number: c.module for c in setup.ordered}
     out = []

@@ -355,12 +355,14 @@ class SynthesisProblem:
         (:func:`~mechloop.solve.existence.assembles_throughout`, reusing the solved
         ``samples``), and the four-bar type the task asks for (``grashof``,
         ``crank_shortest``)."""
-        from mechloop.solve.existence import assembles_throughout, four_bar_type_holds
+        from mechloop.solve.existence import ExistenceCheck, four_bar_type_holds
 
+        if getattr(self, "_existence", None) is None:
+            self._existence = ExistenceCheck(self.model)  # compiled once
         overrides = self.variables.overrides(designs)
-        ok = assembles_throughout(self.model, overrides, samples=samples).feasible
+        ok = self._existence(overrides, samples=samples).feasible
         if self.task.grashof != "any" or self.task.crank_shortest:
-            ok &= four_bar_type_holds(self.model, overrides, grashof=self.task.grashof,
+            ok &= four_bar_type_holds(self._existence, overrides, grashof=self.task.grashof,
                                       crank_shortest=self.task.crank_shortest)
         return ok
 
