@@ -76,7 +76,7 @@ def four_bar_lengths(draw_sum: float, base: tuple[float, float, float, float],
     return tuple(lengths)
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=20, deadline=None)
 @given(crank=st.floats(0.05, 0.2), coupler=st.floats(0.2, 0.5), rocker=st.floats(0.2, 0.5),
        frame=st.floats(0.2, 0.5), angle=st.floats(0, 360),
        gap=st.sampled_from([-1e-2, -1e-3, -1e-4, -1e-5, 1e-5, 1e-4, 1e-3, 1e-2]),
@@ -98,7 +98,25 @@ def test_four_bar_exact_check_agrees_with_dense_solve_and_grashof(
     assert exact.feasible[0] == dense[0] == grashof
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=12, deadline=None)
+@given(crank=st.floats(0.05, 0.4), coupler=st.floats(0.05, 0.5), rocker=st.floats(0.05, 0.5),
+       frame=st.floats(0.1, 0.5), start=st.floats(-180, 180), span=st.floats(5, 300))
+def test_four_bar_over_part_of_a_turn_agrees_with_a_dense_solve(
+        crank, coupler, rocker, frame, start, span):
+    """A crank driven over part of a turn (36 positions): the closed form over the
+    argument's range decides as a solve on 1e5 positions of the same range; where the
+    verdicts would need a finer solve (a break narrower than its step), the example is
+    left out."""
+    model = FOUR_BAR.model_copy(update={"arguments": {1: FOUR_BAR.arguments[1].model_copy(
+        update={"table": {0: start, 36: start + span}})}, "positions": 36, "time": None})
+    over = {"r1": [crank], "r2": [coupler], "r3": [rocker], "r4": [frame]}
+    exact = assembles_throughout(model, over)
+    dense = solve_designs(densely(model), over, derivatives=False)
+    assume(abs(exact.margin[0]) > 1e-6)
+    assert exact.feasible[0] == dense.assembles[0]
+
+
+@settings(max_examples=12, deadline=None)
 @given(rod=st.floats(0.05, 0.3), offset=st.floats(-0.1, 0.1), guide=st.floats(170, 190),
        gap=st.sampled_from([-1e-3, -1e-4, -1e-5, 1e-5, 1e-4, 1e-3]))
 def test_slider_crank_exact_check_agrees_with_dense_solve_and_reach(rod, offset, guide, gap):
