@@ -156,6 +156,13 @@ class ExistenceCheck:
 
     def __call__(self, overrides: Mapping[str, ArrayLike] | None = None, *,
                  samples: Sampled | None = None, intervals: bool = False) -> Existence:
+        """The verdict for the population ``overrides`` (see :func:`assembles_throughout`);
+        a design whose numbers overflow is infeasible, with no warning."""
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return self._decide(overrides, samples, intervals)
+
+    def _decide(self, overrides: Mapping[str, ArrayLike] | None, samples: Sampled | None,
+                intervals: bool) -> Existence:
         model, structure, args = self.model, self.structure, self.args
         over = {k: np.atleast_1d(np.asarray(v, dtype=float))
                 for k, v in (overrides or {}).items()}
@@ -196,7 +203,8 @@ class ExistenceCheck:
                 breaks.extend(found)
         if samples is not None:
             margin = np.where(samples.broken.any(axis=-1), np.minimum(margin, -1.0), margin)
-        margin = np.where(degenerate, np.minimum(margin, -1.0), margin)
+        margin = np.where(degenerate | np.isnan(margin), np.minimum(margin, -1.0), margin)
+        margin = np.where(np.isnan(margin), -1.0, margin)
         feasible = margin > THRESHOLD
         return Existence(feasible, margin, degenerate,
                          tuple(sorted(breaks, key=lambda b: (b.design, b.start, b.contour))))
