@@ -263,3 +263,19 @@ def test_grashof_condition_of_a_synthesis_task_is_mandatory():
             row = si_row(problem, SIX_POINTS_BEST)
         verdicts[str(extra)] = bool(problem.evaluate(row[None, :]).feasible[0])
     assert list(verdicts.values()) == [False, True, True]
+
+
+def test_solve_names_a_break_of_a_loop_without_closed_form_between_positions():
+    """The six-bar's output loop with r6 1e-4 (relative) short of its lower limit: no
+    position of the 72 breaks, ``solve`` reports one break between two positions, and a
+    solve on 2e4 positions breaks there, around the point named."""
+    low, _ = six_bar_limits()
+    model = with_vectors(SIX_BAR, r6=low * (1 - 1e-4) * 1000)  # mm
+    results = mechloop.solve(model)
+    assert not results.broken.any()
+    (gap,) = results.breaks_between
+    assert gap.contour == 2 and gap.at[0] <= gap.start <= gap.at[1]
+    dense = mechloop.solve(densely(model, 20_000))
+    where = dense.arguments[1][dense.broken]
+    assert where.size and gap.at[0] <= where.min() and where.max() <= gap.at[1]
+    assert where.min() - 1e-3 <= gap.start <= where.max() + 1e-3
