@@ -22,10 +22,12 @@ decides existence over the continuous motion, for ``D`` designs at once
 
 The continuous motion between positions ``i`` and ``i + 1`` is argument 1 running linearly
 from its value at ``i`` to its value at ``i + 1``, any other argument interpolated over
-argument 1 (exact for tables; a law is followed through its sampled values).  A contour
-with ``variant: auto`` is checked exactly itself (its margin does not depend on the
-variant); contours after it are checked between positions with the variant of the last
-position (:func:`~mechloop.solve.designs.solve_designs_at`'s rule).
+argument 1 (exact for tables; a law is followed through its sampled values, and a crank
+loop is decided over the range of the argument's values at the positions).  A contour
+with ``variant: auto`` is checked itself (its margin does not depend on the variant); a
+contour that needs one (directly or through others) is checked at the positions only,
+since which variant holds between two positions is not known: give such contours a fixed
+variant for the check between positions.
 """
 
 from __future__ import annotations
@@ -59,8 +61,8 @@ THRESHOLD = SINGULAR_SIN ** 2
 #: A rotating link shorter than this times the design's largest constant length is
 #: degenerate (a crank of 3e-15 mm does not turn anything).
 DEGENERATE = 1e-6
-#: Points per zoom step, and zoom steps at most (a bracket of one position shrinks by
-#: 5 per step: 14 steps reach 1.6e-10 of a position).
+#: Points per zoom step, and zoom steps at most (a bracket of two positions shrinks by
+#: 5 per step: 14 steps reach 3.3e-10 of a position).
 ZOOM_POINTS = 9
 ZOOM_STEPS = 14
 #: A sampled local minimum is refined when its parabola's minimum is below this many
@@ -83,8 +85,8 @@ class BreakInterval:
     """Where a design's contour cannot be assembled: argument 1 in ``[start, stop]``
     (SI: rad or m).  ``after`` is the position ``i`` such that the break begins between
     positions ``i`` and ``i + 1`` (or at ``i``); ``exact`` tells a closed-form interval
-    from one located by the zoom (which knows a point of it, ``start == stop``, to
-    1e-10 of a position)."""
+    from one located by the zoom (which knows a point of it, ``start == stop``, to a
+    few 1e-10 of a position)."""
 
     design: int
     contour: int
@@ -151,6 +153,12 @@ class ExistenceCheck:
                 self.own_delta[current] = _constant_si(model, current, role.delta)
                 current = role.link
             self.chains[name] = path
+        # contours that need a contour with a tracked variant, directly or not
+        self.after_auto: set[int] = set()
+        for info in self.base.ordered:  # in solving order: needs come first
+            if any(self.structure.contours[n - 1].variant == "auto" or n in self.after_auto
+                   for n in info.needs):
+                self.after_auto.add(info.number)
         self.argument_of = {root: next(k for k, sig in self.args.items() if sig is signal)
                             for root, (signal, _) in self.base.driven.items()}
 
@@ -186,7 +194,7 @@ class ExistenceCheck:
                                                     _after(x, start), True))
 
         generic = [info for info in self.base.ordered if info.number not in loops
-                   and _checked(info, structure)]
+                   and _checked(info, structure) and info.number not in self.after_auto]
         if generic and 1 in args:
             if samples is None:
                 from mechloop.solve.designs import solve_designs
