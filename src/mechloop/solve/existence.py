@@ -226,6 +226,7 @@ class _Resolver:
     def __init__(self, check: ExistenceCheck, over: Mapping[str, Array], n_designs: int):
         self.check, self.over, self.n_designs = check, over, n_designs
         self.ordered = check.base.ordered
+        self._known: dict[str, Array | None] = {}
 
     def _delta(self, name: str) -> Array | float:
         return sum((self.over.get(link, self.check.own_delta[link])
@@ -240,11 +241,14 @@ class _Resolver:
 
     def value(self, name: str) -> Array | None:
         """A parameter constant over positions, per design; None for any other."""
-        if name not in self.check.base.constant:
-            return None
-        root = self._root(name)
-        return self._rows(self.over.get(root, self.check.base.constants[root])
-                          + self._delta(name))
+        if name not in self._known:
+            found = None
+            if name in self.check.base.constant:
+                root = self._root(name)
+                found = self._rows(self.over.get(root, self.check.base.constants[root])
+                                   + self._delta(name))
+            self._known[name] = found
+        return self._known[name]
 
     def driven(self, name: str) -> tuple[int, Array] | None:
         """(argument, offset per design) when angle ``name`` is an argument plus a
