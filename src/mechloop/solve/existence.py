@@ -85,8 +85,9 @@ class BreakInterval:
     """Where a design's contour cannot be assembled: argument 1 in ``[start, stop]``
     (SI: rad or m).  ``after`` is the position ``i`` such that the break begins between
     positions ``i`` and ``i + 1`` (or at ``i``); ``exact`` tells a closed-form interval
-    from one located by the zoom (which knows a point of it, ``start == stop``, to a
-    few 1e-10 of a position)."""
+    from one located between positions (its ends by bisection to 1e-14 of a position;
+    a break known by its margin alone, or a sign change of a Pl2 contour, gives the
+    point found or the two positions)."""
 
     design: int
     contour: int
@@ -205,7 +206,8 @@ class ExistenceCheck:
             active = margin > THRESHOLD
             if not intervals:
                 active &= ~samples.broken.any(axis=-1)
-            least, found = _between_positions(values, over, samples, generic, active)
+            least, found = _between_positions(values, over, samples, generic, active,
+                                              extent=intervals)
             margin = np.minimum(margin, least)
             if intervals:
                 breaks.extend(found)
@@ -370,10 +372,11 @@ def contour_margins(info: ContourInfo, values: Mapping[str, Array], size: Array,
 
 def _between_positions(values: _Resolver, over: Mapping[str, Array],
                        samples: Sampled, contours: list[ContourInfo],
-                       active: NDArray[np.bool_]
+                       active: NDArray[np.bool_], *, extent: bool = False
                        ) -> tuple[Array, list[BreakInterval]]:
     """The generic check: the least margin per design ``(D,)`` over ``contours`` between
-    the positions of ``samples``, and the breaks found there."""
+    the positions of ``samples``, and the breaks found there (with ``extent``, each from
+    where it begins to where it ends, else the point found)."""
     check = values.check
     args = check.args
     n_designs, n_pos = samples.broken.shape
@@ -431,12 +434,37 @@ def _between_positions(values: _Resolver, over: Mapping[str, Array],
     best, hit = _zoom(check, over, rows[cand], which, contours,
                       lo, hi, size[cand], {n: s[cand] for n, s in signs.items()})
     np.minimum.at(least, rows[cand], best)
-    for j in np.flatnonzero(best <= THRESHOLD):
-        t = hit[j]
-        value = float(np.interp(t, np.arange(n_pos), x))
-        found.append(BreakInterval(int(rows[cand[j]]), contours[which[j]].number, value,
-                                   value, int(min(np.floor(t), n_pos - 2)), False))
+    lost = np.flatnonzero(best <= THRESHOLD)
+    ends = np.stack([hit[lost], hit[lost]], axis=1)
+    if extent and lost.size:
+        ends = _edges(check, {k: v[rows[cand[lost]]] for k, v in over.items()}, hit[lost],
+                      best[lost] < 0)
+    for j, (t0, t1) in zip(lost, ends, strict=True):
+        start, stop = np.interp([t0, t1], np.arange(n_pos), x)
+        found.append(BreakInterval(int(rows[cand[j]]), contours[which[j]].number,
+                                   float(min(start, stop)), float(max(start, stop)),
+                                   int(min(np.floor(t0), n_pos - 2)), False))
     return least, found
+
+
+def _edges(check: ExistenceCheck, over: Mapping[str, Array], hit: Array,
+           unsolved: NDArray[np.bool_]) -> Array:
+    """The ends (position numbers) of the breaks around the points ``hit`` ``(B,)``
+    where the solve found no solution (``unsolved``), by bisection against the
+    positions on either side (which assemble): ``(B, 2)``.  A break known only by its
+    margin keeps its point."""
+    left, right = np.floor(hit), np.ceil(hit)
+    inner_left, inner_right = hit.copy(), hit.copy()
+    for _ in range(48):  # a position / 2**48
+        mid = np.stack([(left + inner_left) / 2, (inner_right + right) / 2], axis=1)
+        _, broken = _solve_at(check, over, np.interp(mid, np.arange(check.args[1].value.size),
+                                                     check.args[1].value))
+        inner_left = np.where(broken[:, 0], mid[:, 0], inner_left)
+        left = np.where(broken[:, 0], left, mid[:, 0])
+        inner_right = np.where(broken[:, 1], mid[:, 1], inner_right)
+        right = np.where(broken[:, 1], right, mid[:, 1])
+    return np.where(unsolved[:, None], np.stack([inner_left, inner_right], axis=1),
+                    hit[:, None])
 
 
 def _zoom(check: ExistenceCheck, over: Mapping[str, Array], designs: NDArray[np.int64],

@@ -41,9 +41,9 @@ class BreakBetween:
     """A contour that cannot be assembled somewhere between positions ``after`` and
     ``after + 1`` although neither position is broken: the sampled values would draw a
     smooth curve through a break.  ``start``/``stop`` are the values of argument 1 (SI:
-    rad or m) where assembly is lost (exact for a four-bar or slider-crank driven by a
-    crank; otherwise ``start == stop``, a point of the break located between the two
-    positions), ``at`` the argument's values at the two positions."""
+    rad or m) where assembly is lost (in closed form for a four-bar or slider-crank
+    driven by a crank, by bisection otherwise), ``at`` the argument's values at the two
+    positions."""
 
     contour: int
     module: str
