@@ -303,3 +303,22 @@ def test_generic_check_of_a_group_file_model_agrees_with_a_dense_solve():
     np.testing.assert_array_equal(exact.feasible, dense.assembles)
     np.testing.assert_array_equal(exact.feasible, rel > 0)
     assert (sampled.assembles & ~exact.feasible).any()
+
+
+def test_solve_names_a_slider_crank_break_between_positions():
+    """examples/crank_slider.yaml (crank 0.05 m, offset 0.01 m) with the guide and offset
+    turned 2.5° and a rod 1 µm short of crank + offset: the crank pin cannot be reached
+    around 92.5°, between positions 18 and 19 (90° and 95°); the interval named is where
+    a solve on 1e5 positions breaks (within its step)."""
+    model = with_vectors(SLIDER, a3=182.5, a4=92.5, r2=0.06 - 1e-6)
+    results = mechloop.solve(model)
+    assert not results.broken.any()
+    (gap,) = results.breaks_between
+    assert (gap.contour, gap.module, gap.after) == (1, "Pl3", 18)
+    dense = mechloop.solve(densely(model))
+    where = dense.arguments[1][dense.broken]
+    np.testing.assert_allclose([gap.start, gap.stop], [where.min(), where.max()],
+                               atol=np.radians(360 / DENSE))
+    half = np.degrees(np.arccos((0.06 - 1e-6 - 0.01) / 0.05))  # |0.05 cos(θ − 92.5°)|
+    np.testing.assert_allclose(np.degrees([gap.start, gap.stop]),
+                               [92.5 - half, 92.5 + half], rtol=1e-9)
