@@ -322,3 +322,26 @@ def test_solve_names_a_slider_crank_break_between_positions():
     half = np.degrees(np.arccos((0.06 - 1e-6 - 0.01) / 0.05))  # |0.05 cos(θ − 92.5°)|
     np.testing.assert_allclose(np.degrees([gap.start, gap.stop]),
                                [92.5 - half, 92.5 + half], rtol=1e-9)
+
+
+def test_a_crank_made_of_two_vectors_is_one_crank_in_the_closed_form():
+    """The four-bar's crank split in two (vector 8 rigidly on the crank, 20 mm at 30°):
+    the loop is still decided in closed form, with the crank pin at
+    c = |100 + 20·e^{i30°}| mm from its pivot; with the coupler reaching 10 µm short of
+    or beyond c + 300 − 250, the verdict equals a solve on 1e5 positions."""
+    data = FOUR_BAR.model_dump(mode="json", exclude_defaults=True)
+    data["vectors"][8] = {"r": 20, "a": {"link": "a1", "delta": 30}}
+    data["contours"][0]["vectors"] = [1, 8, 2, 3, 4]
+    model = mechloop.Model.from_dict(data)
+    c = abs(100 + 20 * np.exp(1j * np.radians(30)))
+    over = {"r2": (c + 300 - 250 + np.array([-1e-2, 1e-2])) * 1e-3}
+    exact = assembles_throughout(model, over)
+    dense = solve_designs(densely(model), over, derivatives=False)
+    np.testing.assert_array_equal(exact.feasible, [False, True])
+    np.testing.assert_array_equal(dense.assembles, [False, True])
+    # the margin is the closed form's, sin² between coupler and rocker at the extreme
+    # diagonals (c ± 300), not an estimate from the positions
+    a, b = over["r2"][1] * 1e3, 250.0
+    margin = [((a + b) ** 2 - q) * (q - (a - b) ** 2) / (4 * a * a * b * b)
+              for q in ((c - 300) ** 2, (c + 300) ** 2)]
+    assert exact.margin[1] == pytest.approx(min(margin), rel=1e-9)

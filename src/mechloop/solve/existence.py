@@ -279,50 +279,52 @@ def _after(values: Array, where: float) -> int:
 
 def crank_loops(values: _Resolver) -> list[CrankLoop]:
     """The contours that :mod:`.loop_forms` decides in closed form (four-bars and
-    slider-cranks driven by a crank of constant length), per design."""
+    slider-cranks driven by a crank), per design: every known vector is constant but
+    those of constant length whose angle is one argument plus a constant — together
+    one crank, ``c·e^{i(θ + offset)}`` with ``c e^{i·offset} = Σ r e^{i·offset_j}``."""
     n_designs = values.n_designs
     loops = []
     for info in values.ordered:
         if info.module not in ("Pl3", "Pl4"):
             continue
         v1, v2 = (int(u[1:]) for u in info.functions)
-        knowns = [n for n in info.vectors if n not in (v1, v2)]
-        crank, rest = None, 0.0 + 0.0j
-        for n in knowns:
-            r = values.value(f"r{n}")
-            a = values.value(f"a{n}")
+        rest: Array | complex = 0.0 + 0.0j
+        turning: Array | complex = 0.0 + 0.0j
+        cranks: list[int] = []
+        argument = None
+        for n in (n for n in info.vectors if n not in (v1, v2)):
+            r, a = values.value(f"r{n}"), values.value(f"a{n}")
             if r is not None and a is not None:
                 rest = rest + r * np.exp(1j * a)
                 continue
             driven = values.driven(f"a{n}")
-            if r is None or driven is None or crank is not None:
-                crank = None
+            if r is None or driven is None or argument not in (None, driven[0]):
                 break
-            crank = (n, r, *driven)
+            argument = driven[0]
+            turning = turning + r * np.exp(1j * driven[1])
+            cranks.append(n)
         else:
-            if crank is None:
+            if not cranks:
                 continue
-            n, c, argument, offset = crank
-            rest = np.broadcast_to(rest, (n_designs,))
             if info.module == "Pl4":
                 r1, r2 = values.value(f"r{v1}"), values.value(f"r{v2}")
                 guide = np.zeros(n_designs)
             else:
                 r1 = np.zeros(n_designs)
-                r2 = values.value(f"r{v2}")
-                guide = values.value(f"a{v1}")
+                r2, guide = values.value(f"r{v2}"), values.value(f"a{v1}")
             if r1 is None or r2 is None or guide is None:
                 continue
             order = list(info.vectors)
-            at = order.index(n)
+            at = order.index(cranks[0])
             neighbours = {order[at - 1], order[(at + 1) % len(order)]}
             coupler = v1 if v1 in neighbours or v2 not in neighbours else v2
+            turning = np.broadcast_to(turning, (n_designs,))
+            rest = np.broadcast_to(rest, (n_designs,))
             loops.append(CrankLoop(
                 info=info, kind="four-bar" if info.module == "Pl4" else "slider-crank",
-                crank=n, argument=argument, offset=offset, c=c, k=np.abs(rest),
-                kappa=np.angle(rest), r1=r1, r2=r2, guide=guide, coupler=coupler,
-                rocker=v2 if coupler == v1 else v1))
-            continue
+                crank=cranks[0], argument=argument, offset=np.angle(turning),
+                c=np.abs(turning), k=np.abs(rest), kappa=np.angle(rest), r1=r1, r2=r2,
+                guide=guide, coupler=coupler, rocker=v2 if coupler == v1 else v1))
     return loops
 
 
