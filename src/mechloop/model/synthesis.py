@@ -251,6 +251,14 @@ class SynthesisTask(_Frozen):
     rotation: list[Rotation] = Field(default_factory=list)
     workspace: Workspace | None = None
     criteria: list[Criterion] = Field(default_factory=list)
+    grashof: Literal["any", "grashof", "crank-rocker", "double-crank", "double-rocker",
+                     "non-grashof"] = Field(
+        "any", description="mandatory type of the crank-driven four-bar (checked exactly): "
+        "'grashof' s + l <= p + q; 'crank-rocker' Grashof with the crank shortest; "
+        "'double-crank' Grashof with the frame shortest; 'double-rocker' Grashof with the "
+        "coupler shortest; 'non-grashof' s + l > p + q")
+    crank_shortest: bool = Field(False, description="mandatory: the driven crank is the "
+                                 "shortest link of its four-bar")
     search: Search = Search()
 
     @model_validator(mode="after")

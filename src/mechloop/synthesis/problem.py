@@ -348,6 +348,24 @@ class SynthesisProblem:
         ``(D, K)``: column k is where target k is reached."""
         return self.place(at, designs, self.point)
 
+    def exists(self, designs: Array, samples: DesignResults | None = None
+               ) -> NDArray[np.bool_]:
+        """The exact mandatory conditions, ``(D,)``: the chain assembles over the whole
+        continuous input interval, no link is degenerate
+        (:func:`~mechloop.solve.existence.assembles_throughout`, reusing the solved
+        ``samples``), and the four-bar type the task asks for (``grashof``,
+        ``crank_shortest``)."""
+        from mechloop.solve.existence import ExistenceCheck, four_bar_type_holds
+
+        if getattr(self, "_existence", None) is None:
+            self._existence = ExistenceCheck(self.model)  # compiled once
+        overrides = self.variables.overrides(designs)
+        ok = self._existence(overrides, samples=samples).feasible
+        if self.task.grashof != "any" or self.task.crank_shortest:
+            ok &= four_bar_type_holds(self._existence, overrides, grashof=self.task.grashof,
+                                      crank_shortest=self.task.crank_shortest)
+        return ok
+
     def _assess(self, designs: Array) -> tuple[DesignResults, NDArray[np.bool_],
                                                 Array | None, dict[str, Array],
                                                 dict[str, Array]]:
@@ -365,6 +383,7 @@ class SynthesisProblem:
         else:
             res = self.solve(designs)
             feasible = res.assembles & res.keeps_variant
+        feasible = feasible & self.exists(designs, res)
         dev = None
         if self.target_kind:
             rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
