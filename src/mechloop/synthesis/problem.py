@@ -140,6 +140,8 @@ class SynthesisProblem:
         task, n = self.task, self.model.positions
         self.target_kind: str | None = None
         self.free_timing = False
+        #: a timed curve: the SI values of argument 1 where its targets are reached, (K,)
+        self.timed_inputs: Array | None = None
         self.q_unit = self.model.units.length
         self.weights: Array | None = None
         if task.path is not None:
@@ -153,6 +155,8 @@ class SynthesisProblem:
                 y = np.broadcast_to(evaluate_expression(targets.y, (*where, "y"), t=t), t.shape)
                 self.targets = (x + 1j * y) * self.length_unit
                 self.target_positions = None
+                if path.timing is True:  # target k where argument 1 = t_k
+                    self.timed_inputs = self._argument_si(t)
             elif isinstance(targets, dict):
                 self.targets = self._points(targets.values())
                 self.target_positions = np.array(list(targets), dtype=np.int64)
@@ -240,13 +244,36 @@ class SynthesisProblem:
         self.input_turn = 2 * np.pi if angle and span >= 2 * np.pi * (1 - 1e-9) else None
         self.input_span = span or 1.0
 
+    @property
+    def at_inputs(self) -> bool:
+        """Whether the targets are solved at inputs of their own (free timing, or a
+        timed curve) rather than at the positions."""
+        return self.free_timing or self.timed_inputs is not None
+
+    def _argument_si(self, values: Array) -> Array:
+        """Values of argument 1 in its model unit -> SI."""
+        from mechloop.model.check import argument_kind
+
+        kind = argument_kind(self.model, 1)
+        unit = self.model.arguments[1].unit or getattr(self.model.units, kind)
+        return np.asarray(values, dtype=float) * unit_factor(unit, kind)
+
     def order_violation(self, designs: Array) -> Array:
         """How far the free-timing inputs of ``designs`` ``(D, V)`` are out of the
-        targets' order, SI, ``(D,)`` (0 in order).  Increasing inputs: the sum of the
+        targets' order, SI, ``(D,)`` (0 in order; ``path.direction`` increasing,
+        decreasing, or the lesser of both for either).  Increasing inputs: the sum of the
         backward steps.  An input that turns fully: by how much the forward steps
         (modulo the turn) add up to more than one turn."""
         inputs = designs[:, self.variables.input_columns]
         steps = np.diff(inputs, axis=-1)
+        direction = self.task.path.direction
+        ways = {"increasing": (steps,), "decreasing": (-steps,),
+                "either": (steps, -steps)}[direction]
+        return np.minimum.reduce([self._backward(way) for way in ways])
+
+    def _backward(self, steps: Array) -> Array:
+        """How far steps ``(D, K - 1)`` fall short of increasing (see
+        :meth:`order_violation`), ``(D,)``."""
         if self.input_turn is None:
             return np.maximum(-steps, 0).sum(axis=-1)
         forward = np.mod(steps, self.input_turn).sum(axis=-1)
@@ -339,8 +366,10 @@ class SynthesisProblem:
         """Free timing: the kinematics at the positions, ``(D, P)``, and at each
         design's target inputs, ``(D, K)``, in one call
         (:func:`~mechloop.solve.designs.solve_designs_at`)."""
-        return solve_designs_at(self.model, self.variables.overrides(designs),
-                                designs[:, self.variables.input_columns],
+        inputs = (designs[:, self.variables.input_columns] if self.timed_inputs is None
+                  else np.broadcast_to(self.timed_inputs, (designs.shape[0],
+                                                           self.timed_inputs.size)))
+        return solve_designs_at(self.model, self.variables.overrides(designs), inputs,
                                 derivatives=self.needs_derivatives)
 
     def reached(self, at: DesignResults, designs: Array) -> NDArray[np.complex128]:
@@ -359,7 +388,7 @@ class SynthesisProblem:
         keeps the points there for :meth:`residuals`."""
         terms: dict[str, Array] = {}
         measures: dict[str, Array] = {}
-        if self.free_timing:
+        if self.at_inputs:
             res, at = self.solve_at_inputs(designs)
             feasible = res.assembles & res.keeps_variant & at.assembles & at.keeps_variant
         else:
@@ -369,7 +398,7 @@ class SynthesisProblem:
         if self.target_kind:
             rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
             dev = np.full((designs.shape[0], self._target_count()), np.nan)
-            if self.free_timing:
+            if self.at_inputs:
                 self._reached = np.full(dev.shape, np.nan, dtype=complex)
                 if rows.size:
                     self._reached[rows] = self.reached(at.subset(rows), designs[rows])
@@ -427,7 +456,7 @@ class SynthesisProblem:
         variables."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
         res, feasible, dev, terms, _ = self._assess(designs)
-        if dev is not None and self.free_timing:
+        if dev is not None and self.at_inputs:
             error = (self._reached - self.targets[None, :]) / self.length_unit
             if self.weights is not None:
                 error = error * self.weights[None, :]
@@ -452,7 +481,7 @@ class SynthesisProblem:
         With free timing ``results`` are those at the target inputs (the second of
         :meth:`solve_at_inputs`): the distance from target k to the point at its input."""
         kind = self.target_kind
-        if kind == "path" and self.free_timing:
+        if kind == "path" and self.at_inputs:
             return np.abs(self.reached(results, designs) - self.targets[None, :]) / \
                 self.length_unit
         if kind == "path":
