@@ -35,6 +35,8 @@ from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, Synt
 from mechloop.model.units import registry, to_si, unit_factor
 from mechloop.solve.designs import DesignResults, solve_designs, solve_designs_at
 from mechloop.synthesis import deviations as dv
+from mechloop.synthesis.circuits import circuit_problems, evaluate_best, residuals_best
+from mechloop.synthesis.continuous import curve_distance
 from mechloop.synthesis.variables import Variables, apply_design, compile_variables
 
 Array = NDArray[np.float64]
@@ -118,6 +120,8 @@ class SynthesisProblem:
         self.angle_unit = unit_factor(model.units.angle, "angle")
         self._compile_target()
         self._compile_conditions()
+        #: both circuits (``circuits``): a sub-problem per combination of variants
+        self.circuits = circuit_problems(self)
 
     @property
     def q_shown_unit(self) -> str:
@@ -377,9 +381,9 @@ class SynthesisProblem:
         ``(D, K)``: column k is where target k is reached."""
         return self.place(at, designs, self.point)
 
-    def _assess(self, designs: Array) -> tuple[DesignResults, NDArray[np.bool_],
-                                                Array | None, dict[str, Array],
-                                                dict[str, Array]]:
+    def _assess(self, designs: Array, *, continuous: bool = False
+                ) -> tuple[DesignResults, NDArray[np.bool_], Array | None,
+                           dict[str, Array], dict[str, Array]]:
         """Solve a population and compute what both :meth:`evaluate` and
         :meth:`residuals` need: the results, the mandatory conditions, the weighted
         deviations ``(D, K)`` (NaN rows where a design does not assemble; None without a
@@ -404,7 +408,8 @@ class SynthesisProblem:
                     self._reached[rows] = self.reached(at.subset(rows), designs[rows])
                 dev = np.abs(self._reached - self.targets[None, :]) / self.length_unit
             elif rows.size:
-                dev[rows] = self.deviations(res.subset(rows), designs[rows])
+                dev[rows] = self.deviations(res.subset(rows), designs[rows],
+                                            continuous=continuous)
             if self.weights is not None:
                 dev = dev * self.weights[None, :]
         if self.free_timing and self.task.path.ordered:
@@ -422,10 +427,17 @@ class SynthesisProblem:
             return self.function_positions.size
         return self.targets.size
 
-    def evaluate(self, designs: Array) -> Evaluation:
-        """Every term for the population ``designs`` (SI, shape ``(D, V)``)."""
+    def evaluate(self, designs: Array, *, continuous: bool = False) -> Evaluation:
+        """Every term for the population ``designs`` (SI, shape ``(D, V)``).
+
+        ``continuous``: a path without timing measures each target's distance to the
+        continuous curve (:mod:`mechloop.synthesis.continuous`; ~30 solves more), not to
+        the polyline through the positions: the error of the design as it really moves,
+        for the reported result."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
-        res, feasible, dev, terms, measures = self._assess(designs)
+        if self.circuits:  # the better circuit of each design
+            return evaluate_best(self.circuits, designs, continuous=continuous)[0]
+        res, feasible, dev, terms, measures = self._assess(designs, continuous=continuous)
         n_designs = designs.shape[0]
         broken_share = res.broken.mean(axis=-1)
         keeps = res.keeps_variant
@@ -455,6 +467,8 @@ class SynthesisProblem:
         a distance is zero, so the polish does not stall with fewer targets than
         variables."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
+        if self.circuits:
+            return residuals_best(self.circuits, designs)
         res, feasible, dev, terms, _ = self._assess(designs)
         if dev is not None and self.at_inputs:
             error = (self._reached - self.targets[None, :]) / self.length_unit
@@ -475,7 +489,8 @@ class SynthesisProblem:
         out[bad] = 1e6
         return out
 
-    def deviations(self, results: DesignResults, designs: Array) -> Array:
+    def deviations(self, results: DesignResults, designs: Array, *,
+                   continuous: bool = False) -> Array:
         """Deviations from the targets, ``(D, K)``, in the model's units.
 
         With free timing ``results`` are those at the target inputs (the second of
@@ -486,7 +501,9 @@ class SynthesisProblem:
                 self.length_unit
         if kind == "path":
             z = self.place(results, designs, self.point)
-            if self.target_positions is None:
+            if self.target_positions is None and continuous:
+                dev = curve_distance(self, designs, z, self.targets)
+            elif self.target_positions is None:
                 dev = dv.distance_to_curve(z, self.targets)
             else:
                 dev = dv.distance_at_positions(z, self.targets, self.target_positions)
@@ -612,8 +629,21 @@ class SynthesisProblem:
         return float(_reduce(column[None, :], crit.reduce)[0])
 
     def design_model(self, design: Array) -> Model:
-        """The model with one design's values (SI, shape ``(V,)``) written in."""
+        """The model with one design's values (SI, shape ``(V,)``) written in (and its
+        better circuit, with ``circuits``)."""
+        own = self.for_design(design)
+        if own is not self:
+            return own.design_model(design).model_copy(update={"synthesis": self.task})
         return apply_design(self.model, self.variables.to_model_units(np.asarray(design)))
+
+    def for_design(self, design: Array) -> SynthesisProblem:
+        """The problem on which ``design`` ``(V,)`` is scored: itself, or with
+        ``circuits`` the sub-problem of the design's better circuit (to solve or plot
+        the design as it is)."""
+        if not self.circuits:
+            return self
+        choice = evaluate_best(self.circuits, np.atleast_2d(design))[1]
+        return self.circuits[int(choice[0])][1]
 
 
 def _is_parameter(column: str, model: Model) -> bool:

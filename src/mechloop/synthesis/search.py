@@ -291,7 +291,7 @@ def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: 
     best = tracker.best_x
     if best is None:
         best = problem.variables.scale(np.full(len(problem.variables), 0.5))
-    evaluation = problem.evaluate(best[None, :])
+    evaluation = problem.evaluate(best[None, :], continuous=True)  # as it really moves
     elapsed = time.perf_counter() - tracker.started
     order = np.argsort(tracker.archive_f)
     rows, seen = [], []

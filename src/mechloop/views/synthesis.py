@@ -51,7 +51,7 @@ def plot_fit(result: SynthesisResult, *, ax: Axes | None = None) -> Figure:
     (path and motion), or the generated and the wanted function (function generation)."""
     figure = new_figure(7.0, 6.0) if ax is None else ax.figure
     ax = ax or figure.add_subplot()
-    problem = result.problem
+    problem = result.problem.for_design(result.best)  # its circuit
     design = result.best[None, :]
     res = problem.solve(design)
     unit = problem.model.units.length
