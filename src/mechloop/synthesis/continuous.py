@@ -40,10 +40,12 @@ _STEP = 1e-4
 
 def curve_distance(problem: SynthesisProblem, designs: Array, z: NDArray[np.complex128],
                    targets: NDArray[np.complex128]) -> Array:
-    """Distance (m) from each target ``(K,)`` to the continuous curve traced by the
+    """Distance (m) from each target ``(K,)`` (or ``(D, K)``, a row per design) to the
+    continuous curve traced by the
     tracing point of each design ``(D, V)``, ``(D, K)``; ``z`` ``(D, P)`` is the point at
     the positions.  Without an argument 1 that runs one way over the positions, the
     distance to the polyline is returned (nothing to refine over)."""
+    targets = np.broadcast_to(targets, (z.shape[0], targets.shape[-1]))
     polyline, s, _ = dv.nearest_on_curve(z, targets)
     args = problem.model.arguments
     if 1 not in args:
@@ -74,11 +76,11 @@ def curve_distance(problem: SynthesisProblem, designs: Array, z: NDArray[np.comp
     lo, hi = np.minimum(lo, hi), np.maximum(lo, hi)
     overrides = problem.variables.overrides(designs)
     # the nearest sample: a point of the curve, the bound of the result
-    vertex = np.abs(z[:, None, :] - targets[None, :, None])
+    vertex = np.abs(z[:, None, :] - targets[:, :, None])
     sampled = np.nan_to_num(vertex, nan=np.inf).min(axis=-1)
     x = np.clip(input_at(s), lo, hi)
     point = problem.point
-    k = targets.size
+    k = targets.shape[-1]
     for _ in range(ITERATIONS):
         h = _STEP * np.maximum(hi - lo, 1e-300)
         trial = np.concatenate([x - h, x, x + h], axis=1)            # (D, 3K)
@@ -87,7 +89,7 @@ def curve_distance(problem: SynthesisProblem, designs: Array, z: NDArray[np.comp
         before, here, after = p[:, :k], p[:, k:2 * k], p[:, 2 * k:]
         d1 = (after - before) / (2 * h)
         d2 = (after - 2 * here + before) / (h * h)
-        gap = here - targets[None, :]
+        gap = here - targets
         g = 2 * np.real(np.conj(gap) * d1)                     # f'(x)
         curv = 2 * (np.abs(d1) ** 2 + np.real(np.conj(gap) * d2))  # f''(x)
         ok = np.isfinite(g) & np.isfinite(curv)
@@ -102,6 +104,6 @@ def curve_distance(problem: SynthesisProblem, designs: Array, z: NDArray[np.comp
         if done:
             break
     _, at = solve_designs_at(problem.model, overrides, x, derivatives=False)
-    refined = np.abs(problem.place(at, designs, point) - targets[None, :])
+    refined = np.abs(problem.place(at, designs, point) - targets)
     refined = np.where(np.isfinite(refined), refined, np.inf)
     return np.minimum(refined, sampled)

@@ -35,6 +35,7 @@ from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, Synt
 from mechloop.model.units import registry, to_si, unit_factor
 from mechloop.solve.designs import DesignResults, solve_designs, solve_designs_at
 from mechloop.synthesis import deviations as dv
+from mechloop.synthesis import shape
 from mechloop.synthesis.circuits import circuit_problems, evaluate_best, residuals_best
 from mechloop.synthesis.continuous import curve_distance
 from mechloop.synthesis.variables import Variables, apply_design, compile_variables
@@ -144,6 +145,8 @@ class SynthesisProblem:
         task, n = self.task, self.model.positions
         self.target_kind: str | None = None
         self.free_timing = False
+        #: shape only (``path.frame``): what the placement on the targets may change
+        self.shape: shape.Freedom | None = None
         #: a timed curve: the SI values of argument 1 where its targets are reached, (K,)
         self.timed_inputs: Array | None = None
         self.q_unit = self.model.units.length
@@ -175,6 +178,9 @@ class SynthesisProblem:
             if path.weights is not None:
                 self.weights = np.asarray(path.weights, dtype=float)
             self.point = path.point
+            if path.frame is not None:  # shape only: the placement is free
+                shape.check_frame(self.model)
+                self.shape = shape.Freedom.of(path.frame)
         elif task.function is not None:
             fun = task.function
             self.target_kind = "function"
@@ -501,7 +507,13 @@ class SynthesisProblem:
                 self.length_unit
         if kind == "path":
             z = self.place(results, designs, self.point)
-            if self.target_positions is None and continuous:
+            if self.shape is not None:  # after the best placement on the targets
+                a, b, dev = shape.fit_placement(z, self.targets, self.shape, self.weights)
+                if continuous:  # the targets in the mechanism's frame, and back
+                    dev = curve_distance(self, designs, z, (self.targets[None, :] -
+                                                            b[:, None]) / a[:, None])
+                    dev = dev * np.abs(a)[:, None]
+            elif self.target_positions is None and continuous:
                 dev = curve_distance(self, designs, z, self.targets)
             elif self.target_positions is None:
                 dev = dv.distance_to_curve(z, self.targets)
@@ -634,7 +646,23 @@ class SynthesisProblem:
         own = self.for_design(design)
         if own is not self:
             return own.design_model(design).model_copy(update={"synthesis": self.task})
-        return apply_design(self.model, self.variables.to_model_units(np.asarray(design)))
+        model = apply_design(self.model, self.variables.to_model_units(np.asarray(design)))
+        if self.shape is not None:  # placed on the targets
+            a, b = self.placement(np.atleast_2d(design))
+            model = shape.place_model(model, complex(a[0]), complex(b[0]))
+        return model
+
+    def placement(self, designs: Array) -> tuple[NDArray[np.complex128],
+                                                 NDArray[np.complex128]]:
+        """Shape only: the similarity ``w = a·z + b`` that places each design's traced
+        curve on the targets, complex ``(D,)`` each (``a = 1, b = 0`` without
+        ``path.frame``)."""
+        n = designs.shape[0]
+        if self.shape is None:
+            return np.ones(n, complex), np.zeros(n, complex)
+        z = self.place(self.solve(designs), designs, self.point)
+        a, b, _ = shape.fit_placement(z, self.targets, self.shape, self.weights)
+        return a, b
 
     def for_design(self, design: Array) -> SynthesisProblem:
         """The problem on which ``design`` ``(V,)`` is scored: itself, or with

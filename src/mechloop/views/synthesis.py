@@ -56,7 +56,9 @@ def plot_fit(result: SynthesisResult, *, ax: Axes | None = None) -> Figure:
     res = problem.solve(design)
     unit = problem.model.units.length
     if problem.target_kind in ("path", "motion"):
-        z = problem.place(res, design, problem.point)[0] / problem.length_unit
+        a, b = problem.placement(design)  # shape only: placed on the targets
+        z = (a[0] * problem.place(res, design, problem.point)[0] + b[0]) / \
+            problem.length_unit
         targets = problem.targets / problem.length_unit
         ax.plot(z.real, z.imag, label="traced by the result")
         ax.plot(targets.real, targets.imag, "o", mfc="none", color="C3", label="targets")
