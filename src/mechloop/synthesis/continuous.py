@@ -34,7 +34,7 @@ Array = NDArray[np.float64]
 
 #: Newton iterations (each one solve of ``3 K`` extra columns per design).
 ITERATIONS = 30
-#: Central-difference step, as a share of the bracket.
+#: Central-difference step, as a share of the first bracket (two positions).
 _STEP = 1e-4
 
 
@@ -81,8 +81,8 @@ def curve_distance(problem: SynthesisProblem, designs: Array, z: NDArray[np.comp
     x = np.clip(input_at(s), lo, hi)
     point = problem.point
     k = targets.shape[-1]
+    h = _STEP * np.maximum(hi - lo, 1e-300)  # fixed: the bracket shrinks to nothing
     for _ in range(ITERATIONS):
-        h = _STEP * np.maximum(hi - lo, 1e-300)
         trial = np.concatenate([x - h, x, x + h], axis=1)            # (D, 3K)
         _, at = solve_designs_at(problem.model, overrides, trial, derivatives=False)
         p = problem.place(at, designs, point)

@@ -144,11 +144,16 @@ def _step(z: Complex, targets: Complex, a: Complex, b: Complex, freedom: Freedom
     normal = np.where(length > 0, 1j * seg / np.where(length > 0, length, 1.0), 1.0)
     # unknowns u = (Re a, Im a, Re b, Im b) where free; residual e = a c + b - t
     cols = []
-    if freedom.scale or freedom.rotate:
+    if freedom.scale:
         cols.append(c)
         if freedom.rotate:
             cols.append(1j * c)
-    fixed = np.zeros_like(c) if cols else c  # a = 1 when neither is free
+        fixed = np.zeros_like(c)
+    elif freedom.rotate:  # |a| = 1: a turn δ from a, linearized (Gauss-Newton)
+        cols.append(1j * a[:, None] * c)
+        fixed = a[:, None] * c
+    else:
+        fixed = c  # a = 1
     if freedom.translate:
         cols += [np.ones_like(c), 1j * np.ones_like(c)]
     if not cols:
@@ -171,21 +176,15 @@ def _step(z: Complex, targets: Complex, a: Complex, b: Complex, freedom: Freedom
     ridge = np.eye(normal_eq.shape[-1]) * 1e-14 * diag.max(axis=-1)[:, None, None]
     safe = np.where(solvable[:, None, None], normal_eq + ridge, np.eye(normal_eq.shape[-1]))
     solved = np.linalg.solve(safe, rhs_eq[..., None])[..., 0]
-    k = 0
-    new_a = np.ones_like(a)
-    if freedom.scale or freedom.rotate:
-        new_a = solved[:, 0] + (1j * solved[:, 1] if freedom.rotate else 0)
-        k = 2 if freedom.rotate else 1
-        if not freedom.scale:
-            new_a = new_a / np.where(np.abs(new_a) > 0, np.abs(new_a), 1.0)
-        if not freedom.rotate:
-            new_a = np.abs(new_a.real)
+    if freedom.scale and freedom.rotate:
+        new_a, k = solved[:, 0] + 1j * solved[:, 1], 2
+    elif freedom.scale:  # a positive real
+        new_a, k = np.maximum(solved[:, 0], 0.0) + 0j, 1
+    elif freedom.rotate:
+        new_a, k = a * np.exp(1j * solved[:, 0]), 1
+    else:
+        new_a, k = np.ones_like(a), 0
     new_b = solved[:, k] + 1j * solved[:, k + 1] if freedom.translate else np.zeros_like(b)
-    if freedom.translate and not freedom.scale and freedom.rotate:
-        # |a| = 1 after the projection: the translation that suits it
-        share = weight.sum(axis=-1)
-        mean = lambda u: (u * weight).sum(axis=-1) / np.where(share > 0, share, 1.0)  # noqa: E731
-        new_b = mean(targets[None, :]) - new_a * mean(c)
     keep = solvable & np.isfinite(new_a) & np.isfinite(new_b) & (np.abs(new_a) > 0)
     return np.where(keep, new_a, a), np.where(keep, new_b, b)
 

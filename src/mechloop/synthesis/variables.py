@@ -132,18 +132,19 @@ class Variables:
     def scale(self, unit: Array) -> Array:
         """Map ``[0, 1]^V`` to the bounds; a periodic column takes any unit value,
         wrapped onto its turn (``unit mod 1``), so a search may cross 0/360 freely."""
-        unit = np.where(self.periodic, np.mod(unit, 1.0), unit)
+        unit = np.where(self.periodic, _wrap(unit), unit)
         return self.low + unit * (self.high - self.low)
 
     def unscale(self, designs: Array) -> Array:
         """Map the bounds to ``[0, 1]^V`` (a periodic column wrapped onto ``[0, 1)``)."""
         unit = (designs - self.low) / (self.high - self.low)
-        return np.where(self.periodic, np.mod(unit, 1.0), unit)
+        return np.where(self.periodic, _wrap(unit), unit)
 
     def clip(self, designs: Array) -> Array:
         """SI designs ``(..., V)`` within the bounds: a periodic column wrapped onto
         ``[low, low + turn)``, any other clipped."""
-        wrapped = self.low + np.mod(designs - self.low, self.high - self.low)
+        span = self.high - self.low
+        wrapped = self.low + _wrap((designs - self.low) / span) * span
         return np.where(self.periodic, wrapped, np.clip(designs, self.low, self.high))
 
     def clip_unit(self, unit: Array) -> Array:
@@ -155,6 +156,13 @@ class Variables:
         """Bounds of a search in unit coordinates, ``(V,)`` each: ``[0, 1]``, and
         ``(-inf, inf)`` for a periodic column (:meth:`scale` wraps it)."""
         return (np.where(self.periodic, -np.inf, 0.0), np.where(self.periodic, np.inf, 1.0))
+
+
+def _wrap(unit: Array) -> Array:
+    """``unit mod 1`` in ``[0, 1)`` (a tiny negative value rounds to 1.0 in ``np.mod``:
+    it is the cut, 0)."""
+    wrapped = np.mod(unit, 1.0)
+    return np.where(wrapped >= 1.0, 0.0, wrapped)
 
 
 def compile_variables(model: Model) -> Variables:
