@@ -508,7 +508,9 @@ class SynthesisProblem:
         if kind == "path":
             z = self.place(results, designs, self.point)
             if self.shape is not None:  # after the best placement on the targets
-                a, b, dev = shape.fit_placement(z, self.targets, self.shape, self.weights)
+                a, b, dev = shape.fit_placement(
+                    z, self.targets, self.shape, self.weights,
+                    fine=shape.PRECISE if continuous else shape.FINE)
                 if continuous:  # the targets in the mechanism's frame, and back
                     dev = curve_distance(self, designs, z, (self.targets[None, :] -
                                                             b[:, None]) / a[:, None])
@@ -661,7 +663,8 @@ class SynthesisProblem:
         if self.shape is None:
             return np.ones(n, complex), np.zeros(n, complex)
         z = self.place(self.solve(designs), designs, self.point)
-        a, b, _ = shape.fit_placement(z, self.targets, self.shape, self.weights)
+        a, b, _ = shape.fit_placement(z, self.targets, self.shape, self.weights,
+                                      fine=shape.PRECISE)
         return a, b
 
     def for_design(self, design: Array) -> SynthesisProblem:

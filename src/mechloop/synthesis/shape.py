@@ -46,9 +46,12 @@ Complex = NDArray[np.complex128]
 
 #: Starting rotations of the ICP (equally spaced around the principal-axis guess).
 ROTATIONS = 8
-#: Point-to-point iterations from every start, then point-to-line ones from the best.
+#: Point-to-point iterations from every start, then point-to-line ones from the best
+#: (at most: they stop when the placement settles; quadratic near a good fit), in the
+#: search and for a precise result.
 COARSE = 6
-FINE = 25
+FINE = 8
+PRECISE = 40
 #: Positions of the curve in the point-to-point iterations (every few positions).
 _COARSE_POINTS = 48
 #: Weight of the tangential error in the point-to-line iterations.
@@ -71,13 +74,15 @@ class Freedom:
 
 
 def fit_placement(z: Complex, targets: Complex, freedom: Freedom,
-                  weights: Array | None = None) -> tuple[Complex, Complex, Array]:
+                  weights: Array | None = None, *, fine: int = FINE
+                  ) -> tuple[Complex, Complex, Array]:
     """The best placement ``w = a·z + b`` of each traced curve on the targets.
 
     ``z`` : complex ``(D, P)``, the curve in the mechanism's frame (m); ``targets`` :
     complex ``(K,)`` (m); ``weights`` ``(K,)`` (the targets' E_k; least squares of the
-    weighted distances).  Returns ``a``, ``b`` (complex ``(D,)``) and the distances from
-    the targets to the placed polyline, ``(D, K)`` (m; NaN for a curve with NaN)."""
+    weighted distances); ``fine`` point-to-line iterations at most.  Returns ``a``,
+    ``b`` (complex ``(D,)``) and the distances from the targets to the placed polyline,
+    ``(D, K)`` (m; NaN for a curve with NaN)."""
     n_designs = z.shape[0]
     w2 = np.ones(targets.size) if weights is None else np.asarray(weights, float) ** 2
     good = np.isfinite(z).all(axis=-1)
@@ -95,7 +100,7 @@ def fit_placement(z: Complex, targets: Complex, freedom: Freedom,
     pick = np.arange(n_designs) * starts + best
     a, b = a[pick], b[pick]
     size = np.sqrt(np.mean(np.abs(targets - targets.mean()) ** 2)) or 1.0
-    for _ in range(FINE):
+    for _ in range(fine):
         new_a, new_b = _step(zz, targets, a, b, freedom, w2, tangent=_TANGENT)
         moved = np.abs(new_a - a) + np.abs(new_b - b) / np.maximum(size, 1e-300)
         a, b = new_a, new_b
