@@ -347,3 +347,19 @@ def test_a_shape_task_with_timing_or_a_workspace_is_refused():
     data["synthesis"]["path"]["frame"] = "free"
     with pytest.raises(ModelError, match=r"synthesis\.workspace"):
         mechloop.Model.from_dict(data)
+
+
+def test_the_shape_example_places_the_known_design_on_its_circuit():
+    """examples/four_bar_shape_synthesis.yaml: its targets are the known curve turned by
+    130 deg, scaled by 0.4 and moved by (500, -200) mm; the file's variant is 2, the
+    known design's circuit 1 (circuits: both)."""
+    problem = SynthesisProblem(mechloop.load_model("examples/four_bar_shape_synthesis.yaml"))
+    x = known_row(problem)[None, :]
+    a, b = problem.placement(x)
+    assert a[0] == pytest.approx(0.4 * np.exp(1j * np.radians(130)), abs=1e-6)
+    assert b[0] == pytest.approx(complex(0.5, -0.2), abs=1e-6)
+    ev = problem.evaluate(x, continuous=True)
+    assert ev.q[0] < 1e-4 and ev.measures["variant1"][0] == 1  # targets rounded to 1e-4
+    placed = problem.design_model(x[0])
+    assert placed.vectors[1].r == pytest.approx(40, rel=1e-6)
+    assert placed.contours[0].variant == 1

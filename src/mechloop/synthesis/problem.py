@@ -662,6 +662,14 @@ class SynthesisProblem:
         n = designs.shape[0]
         if self.shape is None:
             return np.ones(n, complex), np.zeros(n, complex)
+        if self.circuits:  # each design on its better circuit
+            choice = evaluate_best(self.circuits, designs)[1]
+            a, b = np.ones(n, complex), np.zeros(n, complex)
+            for c, (_, sub) in enumerate(self.circuits):
+                rows = np.flatnonzero(choice == c)
+                if rows.size:
+                    a[rows], b[rows] = sub.placement(designs[rows])
+            return a, b
         z = self.place(self.solve(designs), designs, self.point)
         a, b, _ = shape.fit_placement(z, self.targets, self.shape, self.weights,
                                       fine=shape.PRECISE)
