@@ -363,3 +363,13 @@ def test_the_shape_example_places_the_known_design_on_its_circuit():
     placed = problem.design_model(x[0])
     assert placed.vectors[1].r == pytest.approx(40, rel=1e-6)
     assert placed.contours[0].variant == 1
+
+
+def test_continuous_residuals_are_the_continuous_deviations():
+    problem = SynthesisProblem(mechloop.Model.from_dict(path_data(circuits="both")))
+    x = known_row(problem)[None, :]
+    res = problem.residuals(x, continuous=True)[0]
+    assert np.max(res) == pytest.approx(problem.evaluate(x, continuous=True).q[0],
+                                        rel=1e-12)
+    assert np.max(problem.residuals(x)[0]) == pytest.approx(problem.evaluate(x).q[0],
+                                                            rel=1e-12)

@@ -110,10 +110,11 @@ def evaluate_best(subs: list[tuple[dict[int, int], SynthesisProblem]], designs: 
     return combined, choice
 
 
-def residuals_best(subs: list[tuple[dict[int, int], SynthesisProblem]], designs: Array
-                   ) -> Array:
+def residuals_best(subs: list[tuple[dict[int, int], SynthesisProblem]], designs: Array,
+                   *, continuous: bool = False) -> Array:
     """The residuals of each design on the circuit where their sum of squares (what a
     least-squares polish minimizes) is least, ``(D, R)``."""
-    res = np.stack([sub.residuals(designs) for _, sub in subs])  # (C, D, R)
+    res = np.stack([sub.residuals(designs, continuous=continuous)
+                    for _, sub in subs])  # (C, D, R)
     choice = np.argmin(np.sum(res * res, axis=-1), axis=0)
     return np.take_along_axis(res, choice[None, :, None], axis=0)[0]

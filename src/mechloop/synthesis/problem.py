@@ -464,18 +464,19 @@ class SynthesisProblem:
                           broken_share=broken_share, keeps_variant=keeps, terms=terms,
                           measures=measures)
 
-    def residuals(self, designs: Array) -> Array:
+    def residuals(self, designs: Array, *, continuous: bool = False) -> Array:
         """Deviations (weighted) and the square roots of the penalties, ``(D, K + T)``,
         for a least-squares polish; an infeasible design gets a large constant row.
 
         A path with timing (given or free) gives the x and y errors of each target
         instead of its distance, ``(D, 2K + T)``: the same sum of squares, but smooth where
         a distance is zero, so the polish does not stall with fewer targets than
-        variables."""
+        variables.  ``continuous``: distances to the continuous curve, as
+        :meth:`evaluate` (a path without timing; ~10-30 solves more per call)."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
         if self.circuits:
-            return residuals_best(self.circuits, designs)
-        res, feasible, dev, terms, _ = self._assess(designs)
+            return residuals_best(self.circuits, designs, continuous=continuous)
+        res, feasible, dev, terms, _ = self._assess(designs, continuous=continuous)
         if dev is not None and self.at_inputs:
             error = (self._reached - self.targets[None, :]) / self.length_unit
             if self.weights is not None:
