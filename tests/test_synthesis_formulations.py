@@ -373,3 +373,36 @@ def test_continuous_residuals_are_the_continuous_deviations():
                                         rel=1e-12)
     assert np.max(problem.residuals(x)[0]) == pytest.approx(problem.evaluate(x).q[0],
                                                             rel=1e-12)
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(st.integers(0, 2**32 - 1))
+def test_nearest_on_curve_agrees_with_the_polyline_distance(seed):
+    """The nearest place of nearest_on_curve is on the polyline (at its parameter s)
+    and as far from the target as distance_to_curve says."""
+    from mechloop.synthesis import deviations as dv
+
+    rng = np.random.default_rng(seed)
+    z = rng.normal(size=(3, 7)) + 1j * rng.normal(size=(3, 7))
+    targets = rng.normal(size=4) + 1j * rng.normal(size=4)
+    distance, s, point = dv.nearest_on_curve(z, targets)
+    np.testing.assert_allclose(distance, dv.distance_to_curve(z, targets), rtol=1e-12)
+    np.testing.assert_allclose(np.abs(point - targets[None, :]), distance, rtol=1e-12)
+    i = np.minimum(np.floor(s).astype(int), 5)
+    along = np.take_along_axis(z, i, 1) + (s - i) * np.diff(z, axis=1)[
+        np.arange(3)[:, None], i]
+    np.testing.assert_allclose(along, point, atol=1e-12)
+
+
+def test_each_design_keeps_its_better_circuit():
+    data = path_data(circuits="both")
+    both = SynthesisProblem(mechloop.Model.from_dict(data))
+    rng = np.random.default_rng(5)
+    designs = both.variables.scale(rng.uniform(size=(60, len(both.variables))))
+    ev = both.evaluate(designs)
+    totals = np.stack([sub.evaluate(designs).total for _, sub in both.circuits])
+    np.testing.assert_array_equal(ev.total, totals.min(axis=0))
+    chosen = ev.measures["variant1"]
+    assert set(np.unique(chosen[ev.feasible])) == {1.0, 2.0}  # both circuits win some
+    variants = np.array([v[1] for v, _ in both.circuits])
+    np.testing.assert_array_equal(chosen, variants[totals.argmin(axis=0)])
