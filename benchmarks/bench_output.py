@@ -7,12 +7,17 @@ columns, 1,803 columns at the default, solved by ``mechloop.solve``.
 
 Each format is written in a forked child process (the table is shared copy-on-write), so
 its peak memory is its own: ``peak RSS`` is the child's ``ru_maxrss`` and ``above the
-table`` that minus the resident size at the fork.  The file is read back and checked
-against the table (its row count, and the first and last 1,000 rows bit for bit, read
-without loading the whole file) and removed.
+table`` that minus the resident size at the fork.  CSV and JSON are formatted by worker
+processes the writer forks (one per core): ``worker MB`` is the largest private memory of
+one of them (their own pages, not the table they share), sampled every 20 ms.
+``MB/CPU-s`` is the size over the CPU time of the writer and its workers together (how
+fast one free core formats; ``MB/s`` depends on the machine's load and its free cores).  The file
+is read back and checked against the table (its row count, and the first and last 1,000
+rows bit for bit, read without loading the whole file) and removed.
 
     python benchmarks/bench_output.py                  # options: --contours 200
     python benchmarks/bench_output.py --contours 20 --positions 20000 --pandas
+    python benchmarks/bench_output.py --contours 50 --workers all   # or none
 
 ``--pandas`` also times pandas' own ``to_csv`` and ``to_json`` (what mechloop used before)
 for comparison.  The default size writes about 3.4 GB of CSV and 8 GB of JSON: see that
@@ -140,6 +145,8 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
         try:
             os.close(read)
             start_rss = _rss_mb()
+            cpu0 = {who: resource.getrusage(who)
+                    for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)}
             t0 = time.perf_counter()
             if how == "mechloop":
                 write_frame(frame, path)
@@ -148,9 +155,11 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
             else:
                 frame.to_json(path, orient="records", double_precision=15)
             seconds = time.perf_counter() - t0
+            cpu = sum(getattr(resource.getrusage(who), f) - getattr(cpu0[who], f)
+                      for who in cpu0 for f in ("ru_utime", "ru_stime"))
             peak = _maxrss_mb()
             verdict = _check(frame, path) if how == "mechloop" else ""
-            report = {"seconds": seconds, "peak": peak, "above": peak - start_rss,
+            report = {"seconds": seconds, "cpu": cpu, "peak": peak, "above": peak - start_rss,
                       "size": path.stat().st_size, "check": verdict}
             os.write(write, json.dumps(report).encode())
         except BaseException as exc:
@@ -159,11 +168,42 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
             os._exit(0)
     os.close(write)
     data = b""
-    while chunk := os.read(read, 65536):
+    workers = 0.0
+    os.set_blocking(read, False)
+    while True:
+        workers = max(workers, _workers_private_mb(pid))
+        try:
+            chunk = os.read(read, 65536)
+        except BlockingIOError:
+            time.sleep(0.02)
+            continue
+        if not chunk:
+            break
         data += chunk
     os.close(read)
     os.waitpid(pid, 0)
-    return json.loads(data) if data else {"check": "FAILED: the child died"}
+    report = json.loads(data) if data else {"check": "FAILED: the child died"}
+    report["workers"] = workers
+    return report
+
+
+def _workers_private_mb(pid: int) -> float:
+    """The largest private memory (pages of its own, not the table it shares with the
+    writer) of the writer's worker processes now, in MB; 0 when it has none."""
+    try:
+        children = open(f"/proc/{pid}/task/{pid}/children").read().split()
+    except OSError:
+        return 0.0
+    largest = 0.0
+    for child in children:
+        try:
+            with open(f"/proc/{child}/smaps_rollup") as f:
+                kb = sum(int(line.split()[1]) for line in f
+                         if line.startswith(("Private_Clean:", "Private_Dirty:")))
+        except (OSError, ValueError, IndexError):
+            continue
+        largest = max(largest, kb / 1024)
+    return largest
 
 
 def main() -> int:
@@ -176,7 +216,17 @@ def main() -> int:
     parser.add_argument("--dir", default=None, help="where to write (default: temp folder)")
     parser.add_argument("--pandas", action="store_true",
                         help="also time pandas' to_csv and to_json")
+    parser.add_argument("--workers", choices=("auto", "all", "none"), default="auto",
+                        help="CSV/JSON worker processes: auto (one per idle core, as "
+                        "mechloop does), all (one per core, whatever the load: to measure "
+                        "them on a busy machine), none (format in the writing process)")
     args = parser.parse_args()
+    from mechloop.output import parallel
+
+    if args.workers == "all":
+        os.getloadavg = lambda: (0.0, 0.0, 0.0)  # this process only: every core counts
+    elif args.workers == "none":
+        parallel.PARALLEL_VALUES = 1 << 62
 
     t0 = time.perf_counter()
     frame = build_frame(args.contours, args.positions)
@@ -184,12 +234,17 @@ def main() -> int:
           f"{len(frame.columns)} columns ({frame.memory_usage().sum() / 2**20:.0f} MB in "
           f"memory), built in {time.perf_counter() - t0:.1f} s; resident "
           f"{_rss_mb():.0f} MB")
+    cells = len(frame) * len(frame.columns)
+    print(f"workers ({args.workers}): {parallel.workers_for(cells, cells // 2**18)} for "
+          f"CSV and JSON; load average {os.getloadavg()[0]:.1f} on "
+          f"{len(os.sched_getaffinity(0))} cores")
     runs = [("mechloop", f) for f in args.formats.split(",")]
     if args.pandas:
         runs += [("pandas", f) for f in ("csv", "json") if f in args.formats.split(",")]
     failed = False
     print(f"{'writer':<10} {'format':<8} {'seconds':>8} {'MB':>8} {'MB/s':>7} "
-          f"{'peak RSS MB':>12} {'above table MB':>15}  check")
+          f"{'MB/CPU-s':>9} "
+          f"{'peak RSS MB':>12} {'above table MB':>15} {'worker MB':>10}  check")
     with tempfile.TemporaryDirectory(dir=args.dir) as folder:
         for how, fmt in runs:
             path = Path(folder) / f"table.{fmt}"
@@ -201,8 +256,8 @@ def main() -> int:
                 continue
             mb = r["size"] / 2**20
             print(f"{how:<10} {fmt:<8} {r['seconds']:8.1f} {mb:8.0f} "
-                  f"{mb / r['seconds']:7.0f} {r['peak']:12.0f} {r['above']:15.0f}  "
-                  f"{r['check']}")
+                  f"{mb / r['seconds']:7.0f} {mb / r['cpu']:9.0f} {r['peak']:12.0f} "
+                  f"{r['above']:15.0f} {r['workers']:10.0f}  {r['check']}")
             failed |= r["check"].startswith("FAILED")
     return 1 if failed else 0
 

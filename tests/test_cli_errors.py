@@ -169,3 +169,22 @@ def test_model_error_pickles():
     err = ModelError([], "x.yaml")
     again = pickle.loads(pickle.dumps(err))
     assert again.file == "x.yaml"
+
+
+def test_a_bad_force_unit_is_one_problem_at_the_unit_not_one_per_force(tmp_path):
+    """``units.force`` (and the other load units) wrong: said once, at the unit; the
+    forces are still checked for their own mistakes."""
+    text = (Path(__file__).resolve().parents[1] / "examples" / "crank_slider_dynamics.yaml"
+            ).read_text()
+    force = "  - {name: P, body: 3, at: {tail: 3}, value: 1000, angle: 180}"
+    assert force in text and "mass: kg, force: N}" in text
+    path = tmp_path / "m.yaml"
+    path.write_text(text.replace("mass: kg, force: N}", "mass: lbx, force: kgx}").replace(
+        force, force + "\n" + force.replace("P,", "Q,").replace("1000", "'3 kgy'")
+        + "\n" + force.replace("P,", "R,")))
+    with pytest.raises(ModelError) as info:
+        load_model(path)
+    found = sorted((p.path, p.message) for p in info.value.problems)
+    assert found == [(("forces", 1, "value"), "cannot read '3 kgy' as a force"),
+                     (("units", "force"), "unknown unit 'kgx'"),
+                     (("units", "mass"), "unknown unit 'lbx'")]

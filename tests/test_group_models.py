@@ -511,6 +511,34 @@ def test_every_problem_is_reported_at_once_with_its_fix():
     assert all(p.hint for p in problems_of(data))
 
 
+def test_broken_core_values_are_reported_with_the_structural_problems():
+    """Schema problems inside the core sections (a dimension that is a list, a pair one
+    value short, a variant out of range, a ground point without y) are reported together
+    with the builder's problems of the rest — and nothing about the stand-ins: the point
+    O stays defined, the replaced values are not called wrong twice."""
+    data = four_bar_data(at=["A", "X"], lengths=[0.25], variant=7)
+    data["input"]["length"] = [0.1]
+    data["input"]["angle"] = [3]
+    data["ground"]["O"] = [0]
+    data["groups"].append({"kind": "L1", "links": ["p", "q"], "at": ["B", "Z"],
+                           "joint": "E", "lengths": ["x", 0.2]})
+    data["points"] = {"P": {"link": "couplr", "from": "A", "distance": 0.1},
+                      "R": {"link": "coupler", "from": "A", "distance": [1]}}
+    found = {p.path for p in problems_of(data)}
+    assert found == {
+        ("input", "length"), ("input", "angle"), ("ground", "O", 1),  # schema
+        ("groups", 0, "lengths", 1), ("groups", 0, "variant"),
+        ("groups", 1, "lengths", 0), ("points", "R", "distance"),
+        ("groups", 0, "at", 1), ("groups", 1, "at", 1), ("points", "P", "link")}  # built
+    assert all(p.hint for p in problems_of(data) if p.path[0] == "groups")
+
+
+def test_a_broken_name_or_kind_still_reports_the_schema_problems_only():
+    """No stand-in for a name (it would make up a point): the schema problem alone."""
+    data = four_bar_data(at=["A", "X"], joint=["B"])
+    assert {p.path for p in problems_of(data)} == {("groups", 0, "joint")}
+
+
 def test_file_errors_name_the_file_line_and_fix(tmp_path):
     text = (EXAMPLES / "four_bar_groups.yaml").read_text()
     bad = tmp_path / "bad.yaml"
@@ -523,7 +551,8 @@ def test_file_errors_name_the_file_line_and_fix(tmp_path):
     at_line = next(i for i, s in enumerate(lines, 1) if "at: [A, C]" in s)
     length_line = next(i for i, s in enumerate(lines, 1) if "lengths: [350, 250]" in s)
     assert f"bad.yaml:{length_line}, groups[0].lengths" in message
-    # the shape error comes first: the unknown point is reported once the shape is right
+    # the shape error and the unknown point at once (the lengths get a stand-in)
+    assert f"bad.yaml:{at_line}, groups[0].at[1]: unknown point 'K'" in message
     bad.write_text(text.replace("at: [A, C]", "at: [A, K]"))
     with pytest.raises(mechloop.ModelError) as info:
         mechloop.load_model(bad)
@@ -606,3 +635,14 @@ def test_group_model_saves_as_a_vector_model(tmp_path):
     mechloop.save_model(model, tmp_path / "six.yaml")
     again = mechloop.load_model(tmp_path / "six.yaml")
     assert again == model
+
+
+def test_many_broken_values_report_the_schema_problems_without_stand_ins(monkeypatch):
+    """Past MAX_STAND_INS broken values (each stand-in costs validations) only the schema
+    problems are reported, still every one of them."""
+    from mechloop.model import salvage
+
+    monkeypatch.setattr(salvage, "MAX_STAND_INS", 1)
+    data = four_bar_data(at=["A", "X"], lengths=[0.25], variant=7)
+    assert {p.path for p in problems_of(data)} == {("groups", 0, "lengths", 1),
+                                                   ("groups", 0, "variant")}

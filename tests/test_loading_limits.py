@@ -167,6 +167,25 @@ def test_csv_size_is_capped(tmp_path, monkeypatch):
         load_model(path)
 
 
+def test_a_csv_table_is_read_once_also_when_the_file_has_problems(tmp_path, monkeypatch):
+    """On the error path the tables were read a second time for the structural check (a
+    large CSV twice); each is read once, and the problems of both kinds are reported."""
+    from mechloop.model import load
+
+    reads = []
+    real = load.read_csv_table
+    monkeypatch.setattr(load, "read_csv_table", lambda *a: reads.append(a) or real(*a))
+    (tmp_path / "t.csv").write_text("k,v\n0,0\n72,360\n")
+    path = tmp_path / "m.yaml"
+    path.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: t.csv}")
+                    .replace("rpm: 3000", "rpm: fast").replace("vectors: [1, 2, 3, 4]",
+                                                                "vectors: [1, 2, 3, 9]"))
+    with pytest.raises(ModelError) as info:
+        load_model(path)
+    assert {p.path[0] for p in info.value.problems} == {"time", "contours", "vectors"}
+    assert len(reads) == 1
+
+
 def test_readme_states_the_loading_limits():
     """The README's Limits paragraph says what the code enforces."""
     from mechloop.model import limits, numbers, signals

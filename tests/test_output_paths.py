@@ -340,3 +340,36 @@ def test_a_full_disk_is_an_output_error(tmp_path):
         handle.write(b"x")
         raise OSError(errno.ENOSPC, "No space left on device")
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0,
+                    reason="changing a file's owner needs root")
+@pytest.mark.parametrize("scheme", ["anonymous", "copied", "named"])
+def test_a_replaced_file_keeps_its_owner_by_every_scheme(tmp_path, monkeypatch, scheme):
+    """Also when the anonymous file has to be copied to a named one (no /proc link)."""
+    monkeypatch.setattr(atomic_module, "_ANONYMOUS", True)  # a copy turns it off
+    if scheme == "named":
+        monkeypatch.setattr(atomic_module, "_ANONYMOUS", False)
+    elif scheme == "copied":
+        monkeypatch.setattr(atomic_module, "_link", lambda fd, name: False)
+    target = tmp_path / "t.csv"
+    target.write_bytes(b"old\n")
+    os.chown(target, 1234, 2345)
+    target.chmod(0o640)
+    atomic_write_bytes(target, b"new\n")
+    st = target.stat()
+    assert (st.st_uid, st.st_gid, stat.S_IMODE(st.st_mode)) == (1234, 2345, 0o640)
+    assert target.read_bytes() == b"new\n" and [p.name for p in tmp_path.iterdir()] == ["t.csv"]
+
+
+@pytest.mark.skipif(not hasattr(os, "O_TMPFILE"), reason="needs O_TMPFILE (Linux)")
+def test_a_copy_that_stops_short_is_an_error_not_a_short_file(tmp_path, monkeypatch):
+    monkeypatch.setattr(atomic_module, "_ANONYMOUS", True)
+    monkeypatch.setattr(atomic_module, "_link", lambda fd, name: False)
+    monkeypatch.setattr(atomic_module.os, "sendfile", lambda out, src, at, n: 0)
+    target = tmp_path / "t.csv"
+    target.write_bytes(b"old\n")
+    with pytest.raises(OutputError, match="copied 0 of 8 bytes"):
+        atomic_write_bytes(target, b"content\n")
+    assert target.read_bytes() == b"old\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]

@@ -103,3 +103,27 @@ def test_rows_with_a_singular_force_system_are_marked_broken():
     marked = replace(dynamic, forces=replace(dynamic.forces, singular=singular))
     assert (marked.to_frame()["chain_break"].to_numpy() == singular).all()
     assert not dynamic.to_frame()["chain_break"].any()
+
+
+def test_solve_designs_marks_overflow_broken_like_solve():
+    """``solve_designs`` (synthesis' solver) marks the positions that overflow as broken,
+    where ``solve`` does, without warnings: no unbroken row holds a non-number."""
+    from mechloop.solve.designs import solve_designs, solve_designs_at
+
+    model = load_model(EXAMPLE)
+    model = model.model_copy(update={"time": model.time.model_copy(update={"rpm": 1e308})})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        single = solve(model)
+        r1 = float(np.asarray(single.values["r1"])[0])  # SI
+        designs = solve_designs(model, {"r1": np.array([r1, 0.06])})
+        _, at = solve_designs_at(model, {"r1": np.array([0.05, 0.06])},
+                                 np.array([[0.1, np.inf], [0.2, 0.3]]))
+    assert single.broken.any()
+    assert np.array_equal(designs.broken[0], single.broken)
+    assert designs.broken.any(axis=-1).all() and not designs.assembles.any()
+    for table in (designs.values, designs.rates, designs.accels):
+        for name, arr in table.items():
+            assert np.isfinite(np.broadcast_to(arr, designs.broken.shape)[~designs.broken]
+                               ).all(), name
+    assert at.broken[0, 1] and not at.broken[1].any()

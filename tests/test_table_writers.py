@@ -5,6 +5,7 @@ show, and an Excel sheet too large is refused before anything is written."""
 from __future__ import annotations
 
 import json
+import os
 import shutil
 from pathlib import Path
 
@@ -14,7 +15,7 @@ import pytest
 from typer.testing import CliRunner
 
 from mechloop.cli import app
-from mechloop.output import OutputError, tables
+from mechloop.output import OutputError, parallel, tables
 from mechloop.output.tables import check_table_size, write_frame
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -42,13 +43,18 @@ def _frame(rows: int = 53) -> pd.DataFrame:
     })
 
 
-@pytest.fixture(autouse=True)
-def small_chunks(monkeypatch):
+@pytest.fixture(autouse=True, params=["here", "forked"])
+def small_chunks(monkeypatch, request):
     """Chunks of a few rows and gathers of a few chunks (not a whole number of them), so
-    that every test crosses chunk and gather boundaries."""
+    that every test crosses chunk and gather boundaries; pieces of a few chunks formatted
+    in this process, or by three forked workers (each test runs both ways)."""
     monkeypatch.setattr(tables, "CHUNK_VALUES", 20)
     monkeypatch.setattr(tables, "GATHER_VALUES", 45)
+    monkeypatch.setattr(tables, "PIECE_VALUES", 70)
     monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
+    monkeypatch.setattr(parallel, "PARALLEL_VALUES", 0 if request.param == "forked" else 1 << 62)
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2}, raising=False)
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # three idle cores
 
 
 def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
@@ -177,3 +183,155 @@ def test_solve_writes_every_format_with_the_same_values(tmp_path, suffix):
         else:
             assert np.allclose(back[name].astype(float), frame[name].astype(float),
                                rtol=1e-15, equal_nan=True), name
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".json"])
+def test_a_pipe_or_a_buffer_gets_the_same_text_as_a_file(tmp_path, suffix):
+    """The writers also write into a pipe (spliced into, as a file is) and into a Python
+    buffer without a file descriptor (read and written), byte for byte as into a file."""
+    import io
+    import threading
+
+    frame = _frame()
+    write_frame(frame, tmp_path / f"t{suffix}")
+    expected = (tmp_path / f"t{suffix}").read_bytes()
+    writer = tables.write_csv if suffix == ".csv" else tables.write_json
+    buffer = io.BytesIO()
+    writer(frame, buffer)
+    assert buffer.getvalue() == expected
+    read, write = os.pipe()
+    received: list[bytes] = []
+    reader = threading.Thread(target=lambda: received.append(os.fdopen(read, "rb").read()))
+    reader.start()
+    with open(write, "wb") as handle:
+        writer(frame, handle)
+    reader.join(timeout=30)
+    assert received == [expected]
+
+
+def test_a_failing_worker_is_raised_and_leaves_nothing(tmp_path, monkeypatch, request):
+    """A failure while formatting (in a forked worker or here) reaches the caller, with
+    the worker's traceback; the old file stays and no worker or temporary file is left."""
+    real = tables._csv_chunk
+
+    def failing(columns, start, stop):
+        if start >= 40:
+            raise ValueError("formatting failed at row 40")
+        return real(columns, start, stop)
+
+    monkeypatch.setattr(tables, "_csv_chunk", failing)
+    target = tmp_path / "t.csv"
+    target.write_bytes(b"old\n")
+    with pytest.raises((RuntimeError, ValueError), match="formatting failed at row 40"):
+        write_frame(_frame(), target)
+    assert target.read_bytes() == b"old\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]
+    with pytest.raises(ChildProcessError):
+        os.waitpid(-1, os.WNOHANG)  # every worker was waited for
+
+
+_KILLED_TABLE_WRITER = """
+import os, sys, time
+import numpy as np, pandas as pd
+from mechloop.output import parallel, tables
+parallel.PARALLEL_VALUES = 0
+os.sched_getaffinity = lambda pid: {0, 1}
+os.getloadavg = lambda: (0.0, 0.0, 0.0)
+tables.PIECE_VALUES = 2000
+real_chunk, real_copier = tables._csv_chunk, parallel._copier
+
+def slow_chunk(columns, start, stop):
+    time.sleep(0.05)
+    return real_chunk(columns, start, stop)
+
+def copier(handle):
+    copy = real_copier(handle)
+    def told(source, size):
+        copy(source, size)
+        if not sys.stdout.closed:
+            print("writing", flush=True)
+            sys.stdout.close()
+    return told
+
+tables._csv_chunk, parallel._copier = slow_chunk, copier
+frame = pd.DataFrame(np.random.default_rng(1).normal(size=(4000, 50)))
+tables.write_frame(frame, sys.argv[1])
+"""
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="needs Linux /proc")
+def test_a_killed_parallel_writer_leaves_no_file_and_no_worker(tmp_path, request):
+    if request.node.callspec.params["small_chunks"] != "forked":
+        pytest.skip("one run is enough")
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    target = tmp_path / "big.csv"
+    child = subprocess.Popen([sys.executable, "-c", _KILLED_TABLE_WRITER, str(target)],
+                             stdout=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline() == "writing\n"
+        workers = [int(p) for p in Path(f"/proc/{child.pid}/task/{child.pid}/children")
+                   .read_text().split()]
+        assert len(workers) == 2
+        child.send_signal(signal.SIGKILL)
+        child.wait(timeout=30)
+    finally:
+        child.kill()
+        child.wait()
+
+    def running(pid: int) -> bool:
+        try:
+            return Path(f"/proc/{pid}/stat").read_text().split(") ")[1][0] != "Z"
+        except (FileNotFoundError, ProcessLookupError):
+            return False
+
+    deadline = time.monotonic() + 20
+    while any(running(pid) for pid in workers) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not any(running(pid) for pid in workers)  # they found the pipe closed
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("rows", [1, 2])
+@pytest.mark.parametrize("columns", [["x"], ["i", "x", "b"], ["x", "y"]])
+def test_one_or_two_rows_and_single_columns(tmp_path, rows, columns):
+    """The brackets of orjson's text come off a one-value run too."""
+    whole = pd.DataFrame({"i": np.arange(rows) + 7, "x": np.arange(rows) + 0.5,
+                          "y": -np.arange(rows) / 3, "b": np.arange(rows) % 2 == 0})
+    frame = whole[columns]
+    write_frame(frame, tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_text() == frame.to_csv(index=False)
+    write_frame(frame, tmp_path / "t.json")
+    expected = [{k: getattr(v, "item", lambda v=v: v)() for k, v in r.items()}
+                for r in frame.to_dict("records")]
+    back = json.loads((tmp_path / "t.json").read_text())
+    assert back == expected
+    assert [[type(v) for v in r.values()] for r in back] == [
+        [type(v) for v in r.values()] for r in expected]
+
+
+def test_workers_only_for_idle_cores(monkeypatch):
+    """A worker per idle core (cores less the load), none below two or for a small table."""
+    monkeypatch.setattr(parallel, "PARALLEL_VALUES", 1000)
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(4)), raising=False)
+    for load, workers in ((0.0, 4), (0.6, 3), (1.4, 3), (2.4, 2), (2.6, 0), (9.0, 0)):
+        monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, 0.0, 0.0))
+        assert parallel.workers_for(10**6, 100) == workers, load
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    assert parallel.workers_for(999, 100) == 0 and parallel.workers_for(10**6, 3) == 3
+
+
+def test_a_failed_fork_formats_here(tmp_path, monkeypatch, request):
+    if request.node.callspec.params["small_chunks"] != "forked":
+        pytest.skip("one run is enough")
+
+    def no_fork():
+        raise OSError(12, "Cannot allocate memory")
+
+    write_frame(_frame(), tmp_path / "a.csv")
+    monkeypatch.setattr(parallel.os, "fork", no_fork)
+    write_frame(_frame(), tmp_path / "b.csv")
+    assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()

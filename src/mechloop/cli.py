@@ -206,6 +206,10 @@ def solve(
     for brk in results.breaks:
         err.print(f"[yellow]chain break:[/] {brk.describe()} — check the kinematic chain "
                   "for a break (dimensions, variant, argument range)")
+    for gap in results.breaks_between:
+        err.print(f"[yellow]chain break between positions:[/] {gap.describe()} — the "
+                  "values of these two positions are joined across a break; refine the "
+                  "positions there or change the dimensions")
     if output is None:
         out.print(frame.to_string(max_rows=20, max_cols=12))
         return

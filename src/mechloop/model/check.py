@@ -12,7 +12,7 @@ import numpy as np
 
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import VectorPoint
-from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument
+from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument, Units
 from mechloop.model.signals import MIN_TIME_STEP
 from mechloop.model.structure import Structure, analyze
 from mechloop.model.synthesis import check_synthesis
@@ -154,6 +154,12 @@ def _check_loads(model: Model) -> list[Problem]:
     joints and forces) and every fixed contour start with a readable length."""
     problems: list[Problem] = []
     units = model.units
+    for kind in ("force", "moment", "mass", "inertia", "acceleration"):
+        try:
+            unit_factor(getattr(units, kind), kind)
+        except UnitProblem as exc:  # said once, here; the values are checked without it
+            problems.append(_unit_problem(("units", kind), exc))
+            units = units.model_copy(update={kind: Units.model_fields[kind].default})
     for key, kind in (("forces", "force"), ("moments", "moment")):
         for i, load in enumerate(getattr(model, key)):
             path = (key, i, "value")

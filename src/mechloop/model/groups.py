@@ -549,7 +549,7 @@ def mechanism_of(path: str | Path) -> GroupMechanism | None:
 def _from_group_data(data: dict[str, Any], file: str | None,
                      lines: dict[tuple[Any, ...], int] | None, *, build_it: bool) -> Any:
     from mechloop.model.load import located_error, validate_data
-    from mechloop.model.salvage import GROUP_CORE, salvage
+    from mechloop.model.salvage import GROUP_CORE, GROUP_PATCHED, salvage, set_aside
 
     lines = lines or {}
 
@@ -563,13 +563,14 @@ def _from_group_data(data: dict[str, Any], file: str | None,
                              for key in mixed], file, lines)
     mech, problems = validate_data(GroupMechanism, data, file, _group_hint)
     if problems:
-        partial, dropped = salvage(data, problems, GroupMechanism, GROUP_CORE)
+        partial, dropped = salvage(data, problems, GroupMechanism, GROUP_CORE,
+                                   GROUP_PATCHED)
         if partial is not None:  # what else is wrong, in the parts that validated
             try:
                 build_model(partial)
             except ModelError as exc:
                 problems += [p for p in exc.problems if p.path and p.path[0] in data
-                             and str(p.path[0]) not in dropped]
+                             and not set_aside(p.path, dropped)]
         raise located_error(problems, file, lines)
     try:
         model = build_model(mech)

@@ -22,7 +22,7 @@ from pydantic import ValidationError
 from mechloop.errors import ModelError, ModelFileError, Problem
 from mechloop.model.check import check_model
 from mechloop.model.limits import check_events, read_text
-from mechloop.model.salvage import salvage
+from mechloop.model.salvage import salvage, set_aside
 from mechloop.model.schema import MAX_POSITIONS, Model
 from mechloop.model.signals import read_csv_table
 from mechloop.output.atomic import atomic_write_bytes, atomic_write_text  # noqa: F401 (re-exported)
@@ -219,8 +219,18 @@ def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
     """``cls`` validated from the plain data of a file, its CSV tables read first (paths
     relative to the file); or None and every problem, not yet located by line.  ``hint``
     may rewrite the message and fix of a validation error."""
+    value, problems, _, _ = _validate_tables(cls, data, file, hint)
+    return value, problems
+
+
+def _validate_tables(cls: type[T], data: dict[str, Any], file: str | None,
+                     hint: Callable[[dict[str, Any], str, str], tuple[str, str]] | None = None
+                     ) -> tuple[T | None, list[Problem], dict[str, Any], list[Problem]]:
+    """:func:`validate_data`, and the data with its CSV tables read and the problems of
+    the tables that could not be read (each CSV file is read once)."""
     base = Path(file).resolve().parent if file else Path.cwd()
-    data, problems = _import_csv_tables(data, base)  # an unread table stays {csv: ...}
+    data, unread = _import_csv_tables(data, base)  # an unread table stays {csv: ...}
+    problems = list(unread)
     try:
         value = cls.model_validate(data)
     except ValidationError as exc:
@@ -229,8 +239,8 @@ def validate_data(cls: type[T], data: dict[str, Any], file: str | None,
             if hint is not None:
                 message, fix = hint(error, message, fix)
             problems.append(Problem(_data_path(error["loc"], data), message, fix))
-        return None, problems
-    return (None, problems) if problems else (value, [])
+        return None, problems, data, unread
+    return (None, problems, data, unread) if problems else (value, [], data, unread)
 
 
 def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None = None
@@ -244,14 +254,12 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
         from mechloop.model.groups import model_from_group_data
 
         return model_from_group_data(data, file=file, lines=lines)
-    model, problems = validate_data(Model, data, file)
-    if problems:
-        base = Path(file).resolve().parent if file else Path.cwd()
-        tables, unread = _import_csv_tables(data, base)  # an unread table validates as is
+    model, problems, tables, unread = _validate_tables(Model, data, file)
+    if problems:  # an unread table validates as is
         partial, dropped = salvage(tables, [p for p in problems if p not in unread])
         if partial is not None:  # what else is wrong, in the parts that validated
             problems += [p for p in check_model(partial)[1]
-                         if not (p.path and str(p.path[0]) in dropped)]
+                         if not (p.path and set_aside(p.path, dropped))]
         raise located_error(problems, file, lines)
     _, problems = check_model(model)
     if problems:

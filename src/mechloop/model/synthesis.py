@@ -79,6 +79,16 @@ class Curve(_Frozen):
     count: int = Field(10, ge=2, description="number of target points")
 
 
+class Frame(_Frozen):
+    """Which parts of the targets' placement a shape-only path task leaves free: the
+    mechanism is compared with the targets after the best similarity transform of this
+    kind (:mod:`mechloop.synthesis.shape`), and the written model is placed on them."""
+
+    translate: bool = Field(True, description="the targets' position is free")
+    rotate: bool = Field(True, description="the targets' orientation is free")
+    scale: bool = Field(True, description="the targets' size is free")
+
+
 class PathTask(_Frozen):
     """Path generation: a point of the mechanism passes through target points.
 
@@ -90,7 +100,15 @@ class PathTask(_Frozen):
     bounded by the argument's range over the positions), and the deviation is the
     distance to the point solved at that input; with ``ordered`` (the default) the
     inputs must follow the targets' order (increasing, modulo a turn for an input that
-    turns fully), and a design out of order is penalized by the overlap.
+    turns fully), and a design out of order is penalized by the overlap; ``direction``
+    lets them decrease instead (``decreasing``) or either way (``either``).
+
+    A parametric ``Curve`` with ``timing: true`` places target k at ``t_k`` (``count``
+    values evenly over ``t``), reached where argument 1 equals ``t_k`` (model units of
+    the argument): solved exactly there, not at the nearest position.
+
+    ``frame`` (no timing): shape only; the deviation is measured after the best
+    placement of the traced curve on the targets (see :class:`Frame`).
     """
 
     point: Point = Field(description="the tracing point: {head: K} or {tail: K}")
@@ -101,7 +119,14 @@ class PathTask(_Frozen):
         False, description="targets are reached at given positions (true), anywhere on "
         "the curve (false), or at inputs that the synthesis chooses (free)")
     ordered: bool = Field(True, description="with timing: free, the inputs of the "
-                          "targets increase in the targets' order (within one turn)")
+                          "targets follow the targets' order (within one turn)")
+    direction: Literal["increasing", "decreasing", "either"] = Field(
+        "increasing", description="with timing: free and ordered, the inputs of the "
+        "targets increase in the targets' order, decrease, or either (the better of the "
+        "two: the crank may turn either way)")
+    frame: Frame | Literal["free"] | None = Field(
+        None, description="shape only: the targets' position (translate), orientation "
+        "(rotate) and size (scale) are free; 'free' frees all three. Without timing")
     weights: list[Number] | None = Field(None, description="E_k: a weight per target")
 
 
@@ -235,10 +260,16 @@ class Search(_Frozen):
 class SynthesisTask(_Frozen):
     """What a synthesis varies, reaches and respects, and how it searches."""
 
-    vary: dict[str, tuple[Scalar, Scalar]] = Field(
+    vary: dict[str, tuple[Scalar, Scalar] | Literal["periodic"]] = Field(
         description="design variables with their bounds [low, high]: constants of the model "
         "('r3' / 'a5': a constant, a link's delta, an argument's offset; 'start2.x' / "
-        "'start2.y': the fixed start of contour 2) or names of 'dimensions'")
+        "'start2.y': the fixed start of contour 2) or names of 'dimensions'; an angle "
+        "may be 'periodic' (any value, no bound at 0/360 deg), as is an angle whose "
+        "bounds span a full turn")
+    circuits: Literal["given", "both"] | list[int] = Field(
+        "given", description="assembly circuits: the contours' own variants (given), "
+        "or the synthesis chooses the better variant per design for every contour with "
+        "two (both) or for the listed contours")
     dimensions: dict[str, Dimension] = Field(
         default_factory=dict, description="named dimensions that set several constants "
         "together (written by the builder of a model made of Assur groups)")
@@ -251,6 +282,14 @@ class SynthesisTask(_Frozen):
     rotation: list[Rotation] = Field(default_factory=list)
     workspace: Workspace | None = None
     criteria: list[Criterion] = Field(default_factory=list)
+    grashof: Literal["any", "grashof", "crank-rocker", "double-crank", "double-rocker",
+                     "non-grashof"] = Field(
+        "any", description="mandatory type of the crank-driven four-bar (checked exactly): "
+        "'grashof' s + l <= p + q; 'crank-rocker' Grashof with the crank shortest; "
+        "'double-crank' Grashof with the frame shortest; 'double-rocker' Grashof with the "
+        "coupler shortest; 'non-grashof' s + l > p + q")
+    crank_shortest: bool = Field(False, description="mandatory: the driven crank is the "
+                                 "shortest link of its four-bar")
     search: Search = Search()
 
     @model_validator(mode="after")
@@ -322,8 +361,14 @@ def check_synthesis(model: Model) -> list[Problem]:
         for i, tie in enumerate(dim.sets):
             check_constant(tie.set, (*base, "dimensions", name, "sets", i, "set"))
             set_by.setdefault(tie.set, name)
-    for name, (low, high) in task.vary.items():
+    for name, bounds in task.vary.items():
         path = (*base, "vary", name)
+        low, high = (0.0, 1.0) if bounds == "periodic" else bounds
+        if bounds == "periodic" and _target_kind(
+                task.dimensions[name].sets[0].set if name in task.dimensions else name
+        ) != "angle":
+            problems.append(Problem(path, f"{name} is a length: only an angle is periodic",
+                                    "give it bounds [low, high]"))
         if name in task.dimensions:
             pass
         elif not VARIABLE.match(name):
@@ -383,10 +428,16 @@ def check_synthesis(model: Model) -> list[Problem]:
                         "(auto); timing: free solves the targets' inputs apart from the "
                         "positions, where a tracked variant is not defined",
                         "give the contour variant: 1 or 2"))
-        elif "ordered" in task.path.model_fields_set:
-            problems.append(Problem((*base, "path", "ordered"), "ordered applies to "
-                                    "timing: free only", "remove ordered, or set "
-                                    "timing: free"))
+        else:
+            for key in ("ordered", "direction"):
+                if key in task.path.model_fields_set:
+                    problems.append(Problem((*base, "path", key), f"{key} applies to "
+                                            "timing: free only", f"remove {key}, or set "
+                                            "timing: free"))
+        if task.path.timing is True and isinstance(targets, Curve):
+            problems.extend(_timed_curve_problems(model, base))
+        if task.path.frame is not None:
+            problems.extend(_frame_problems(task, base))
         count = (targets.count if isinstance(targets, Curve) else len(targets))
         if task.path.weights is not None and len(task.path.weights) != count:
             problems.append(Problem((*base, "path", "weights"), f"{len(task.path.weights)} "
@@ -424,6 +475,7 @@ def check_synthesis(model: Model) -> list[Problem]:
         if crit.max is None and crit.min is None and crit.minimize is None:
             problems.append(Problem((*base, "criteria", i), f"criterion {crit.label} "
                                     "has no max, min or minimize", "give one of them"))
+    problems.extend(_circuit_problems(model, base))
     given = task.search.start
     for i, design in enumerate([given] if isinstance(given, dict) else given or []):
         where = (*base, "search", "start", *(() if isinstance(given, dict) else (i,)))
@@ -434,6 +486,8 @@ def check_synthesis(model: Model) -> list[Problem]:
                                         f"the variables are {', '.join(task.vary)}: add "
                                         f"{name} to vary, or leave it out of the start"))
                 continue
+            if task.vary[name] == "periodic":
+                continue  # any angle
             low, high = task.vary[name]
             dim = task.dimensions.get(name)
             kind = _target_kind(name if dim is None else dim.sets[0].set)
@@ -454,3 +508,63 @@ def check_synthesis(model: Model) -> list[Problem]:
 def _target_kind(name: str) -> str:
     """``'angle'`` for 'aK', ``'length'`` for 'rK', 'startK.x' and 'vK.x'."""
     return "angle" if name[0] == "a" else "length"
+
+
+def _timed_curve_problems(model: Model, base: tuple) -> list[Problem]:
+    """A parametric curve with timing: true is solved at argument 1 = t_k: the model needs
+    argument 1, and a contour may not track its variant (auto)."""
+    problems = []
+    if 1 not in model.arguments:
+        problems.append(Problem((*base, "path", "timing"), "a curve with timing: true "
+                                "reaches target k where argument 1 equals t_k, and the "
+                                "model has no argument 1", "add arguments: {1: {table: "
+                                "...}}, or timing: false"))
+    for i, contour in enumerate(model.contours):
+        if contour.variant == "auto":
+            problems.append(Problem(("contours", i, "variant"), f"contour {i + 1} tracks "
+                                    "its variant (auto); a timed curve is solved at the "
+                                    "targets' inputs apart from the positions, where a "
+                                    "tracked variant is not defined",
+                                    "give the contour variant: 1 or 2"))
+    return problems
+
+
+def _frame_problems(task: SynthesisTask, base: tuple) -> list[Problem]:
+    """A shape-only path (frame) compares shapes: no timing, and no condition on a
+    point's place in the plane (the mechanism is placed on the targets afterwards)."""
+    problems = []
+    where = (*base, "path", "frame")
+    if task.path.timing is not False:
+        problems.append(Problem(where, "frame (shape only) applies to a path without "
+                                "timing", "remove frame, or set timing: false"))
+    if task.workspace is not None:
+        problems.append(Problem((*base, "workspace"), "a workspace fixes where the "
+                                "mechanism lies, and frame leaves its placement free",
+                                "remove the workspace or the frame"))
+    for i, crit in enumerate(task.criteria):
+        if crit.point is not None:
+            problems.append(Problem((*base, "criteria", i, "point"), "a point's "
+                                    "coordinate depends on the placement, which frame "
+                                    "leaves free", "remove the criterion or the frame"))
+    return problems
+
+
+def _circuit_problems(model: Model, base: tuple) -> list[Problem]:
+    """``circuits``: the listed contours exist and have a fixed variant."""
+    circuits = model.synthesis.circuits
+    if circuits == "given":
+        return []
+    problems = []
+    where = (*base, "circuits")
+    count = len(model.contours)
+    numbers = range(1, count + 1) if circuits == "both" else circuits
+    for j, number in enumerate(numbers):
+        if not 1 <= number <= count:
+            problems.append(Problem((*where, j), f"there is no contour {number}",
+                                    f"contours are 1..{count}"))
+        elif model.contours[number - 1].variant == "auto" and circuits != "both":
+            problems.append(Problem(("contours", number - 1, "variant"), f"contour "
+                                    f"{number} tracks its variant (auto): its circuit is "
+                                    "not a choice", "give it variant: 1 or 2, or leave it "
+                                    "out of circuits"))
+    return problems

@@ -115,18 +115,24 @@ class _Stage:
         """A path by which another program (ffmpeg) can open the staged file to write."""
         return str(self.named) if self.named is not None else f"/proc/{os.getpid()}/fd/{self.fd}"
 
+    def _keep_mode(self) -> None:
+        """Give the staged file the mode and (where allowed) the owner of the file it
+        replaces; before its fsync, so that they are on disk with it."""
+        if self.mode is None:
+            return
+        os.fchmod(self.fd, self.mode)
+        if self.owner is not None and hasattr(os, "fchown"):
+            st = os.fstat(self.fd)
+            if (st.st_uid, st.st_gid) != self.owner:
+                try:
+                    os.fchown(self.fd, *self.owner)
+                except PermissionError:
+                    pass
+
     def commit(self) -> None:
         """Put the staged file, complete and on disk, in place of the target."""
+        self._keep_mode()
         os.fsync(self.fd)
-        if self.mode is not None:
-            os.fchmod(self.fd, self.mode)
-            if self.owner is not None and hasattr(os, "fchown"):
-                st = os.fstat(self.fd)
-                if (st.st_uid, st.st_gid) != self.owner:
-                    try:
-                        os.fchown(self.fd, *self.owner)
-                    except PermissionError:
-                        pass
         if self.named is None:
             try:
                 linked = _link(self.fd, self.dest)
@@ -161,12 +167,12 @@ class _Stage:
                 copied = 0
                 while copied < size:
                     done = os.sendfile(self.fd, anonymous, copied, size - copied)
-                    if done == 0:
-                        break
+                    if done == 0:  # never a short file in place of the target
+                        raise OSError(errno.EIO, f"copied {copied} of {size} bytes",
+                                      str(self.named))
                     copied += done
+                self._keep_mode()  # the mode and the owner, as the anonymous file had them
                 os.fsync(self.fd)
-                if self.mode is not None:
-                    os.fchmod(self.fd, self.mode)
                 os.replace(self.named, self.dest)  # type: ignore[arg-type]
             finally:
                 os.close(anonymous)

@@ -2,8 +2,10 @@
 
 A table of a million rows and thousands of columns is written in chunks of rows, each
 formatted by C code (orjson for the numbers of CSV and JSON, pyarrow for Parquet) and
-written at once, so memory stays bounded by one chunk and the speed by the disk.  Every
-float is written in its shortest form that reads back to the same double (bit for bit).
+written at once, so memory stays bounded by a few chunks.  A large CSV or JSON table is
+formatted on every core, by forked workers each taking pieces of rows in turn
+(:mod:`mechloop.output.parallel`).  Every float is written in its shortest form that reads
+back to the same double (bit for bit).
 
 Formats (as before the writers streamed):
 
@@ -27,6 +29,7 @@ from typing import TYPE_CHECKING, BinaryIO
 import numpy as np
 
 from mechloop.output.atomic import atomic_file
+from mechloop.output.parallel import Render, workers_for, write_ordered
 from mechloop.output.paths import TABLE_SUFFIXES, OutputError
 
 if TYPE_CHECKING:
@@ -44,6 +47,10 @@ CHUNK_VALUES = 1 << 12
 
 #: Values gathered from the columns of a run at once (8 MB of doubles).
 GATHER_VALUES = 1 << 20
+
+#: Values in one piece of rows, formatted and held by one worker process (about 5 MB of
+#: CSV text; gathers of columns do not cross pieces).
+PIECE_VALUES = 1 << 18
 
 #: Values in one Parquet row group (about 64 MB of doubles: fewer, larger groups write
 #: faster and read better; the group is held in memory while it is written).
@@ -109,6 +116,7 @@ class _Columns:
         self.arrays = [_exact(a, k) for a, k in zip(arrays, kinds, strict=True)]
         self.rows, self.width = len(frame), len(arrays)
         self._gathered: dict[int, tuple[int, int, np.ndarray]] = {}
+        self._bound = self.rows  # gathers stop here (the end of the piece being formatted)
         self.runs: list[tuple[int, int, str]] = []  # (first column, end, kind)
         for j, kind in enumerate(kinds):
             if self.runs and self.runs[-1][2] == kind:
@@ -116,10 +124,24 @@ class _Columns:
             else:
                 self.runs.append((j, j + 1, kind))
 
-    def chunks(self) -> Iterator[tuple[int, int]]:
-        step = max(16, CHUNK_VALUES // max(1, self.width))
-        for start in range(0, self.rows, step):
-            yield start, min(start + step, self.rows)
+    def step(self) -> int:
+        """Rows in one chunk: about CHUNK_VALUES values, at least 16 rows."""
+        return max(16, CHUNK_VALUES // max(1, self.width))
+
+    def pieces(self) -> list[tuple[int, int]]:
+        """The rows cut into pieces of whole chunks, about PIECE_VALUES values each (the
+        unit a worker formats and holds, see :mod:`mechloop.output.parallel`)."""
+        step = self.step()
+        rows = max(1, -(-(PIECE_VALUES // max(1, self.width)) // step)) * step
+        return [(start, min(start + rows, self.rows)) for start in range(0, self.rows, rows)]
+
+    def chunks(self, first: int = 0, last: int | None = None) -> Iterator[tuple[int, int]]:
+        """Rows ``first:last`` (default: all) in chunks; gathers stay inside them."""
+        last = self.rows if last is None else last
+        self._bound = last
+        step = self.step()
+        for start in range(first, last, step):
+            yield start, min(start + step, last)
 
     def block(self, run: tuple[int, int, str], start: int, stop: int) -> np.ndarray:
         """Rows ``start:stop`` of a run as one C-ordered array, shape (rows, columns).
@@ -131,7 +153,7 @@ class _Columns:
         cached = self._gathered.get(first)
         if cached is None or not cached[0] <= start < stop <= cached[1]:
             rows = max(stop - start, GATHER_VALUES // (end - first))
-            top = min(self.rows, start + rows)
+            top = max(stop, min(self._bound, start + rows))
             cached = (start, top, np.stack([a[start:top] for a in self.arrays[first:end]],
                                            axis=1))
             self._gathered[first] = cached
@@ -175,28 +197,62 @@ def _csv_lines(columns: _Columns, run: tuple[int, int, str], start: int, stop: i
         return [b",".join(_csv_value(v) for v in row)
                 for row in zip(*(a[start:stop] for a in columns.arrays[first:end]),
                                strict=True)]
-    text = _dump(block)[2:-2]
-    if kind == "f":
+    text = _dump(block)
+    if kind == "f" and np.isnan(block).any():
         text = text.replace(b"null", b"")
     elif kind == "b":
         text = text.replace(b"true", b"True").replace(b"false", b"False")
-    return text.split(b"],[")
+    return _unbracket(text.split(b"],["), 2)
+
+
+def _unbracket(items: list[bytes], brackets: int) -> list[bytes]:
+    """The pieces of a split orjson text with its ``brackets`` opening and closing
+    brackets taken off the ends (splitting the whole text, then trimming the first and
+    last piece, spares a copy of the whole text)."""
+    if len(items) == 1:
+        items[0] = items[0][brackets:-brackets]
+    else:
+        items[0], items[-1] = items[0][brackets:], items[-1][:-brackets]
+    return items
+
+
+def _csv_chunk(columns: _Columns, start: int, stop: int) -> list[bytes | memoryview]:
+    """Rows ``start:stop`` as CSV lines (each ending in a newline)."""
+    if len(columns.runs) == 1 and columns.runs[0][2] == "f":  # floats only: no line split
+        block = columns.block(columns.runs[0], start, stop)
+        if not np.isinf(block).any():
+            text = _dump(block)
+            if np.isnan(block).any():
+                text = text.replace(b"null", b"")
+            return [memoryview(text.replace(b"],[", b"\n"))[2:-2], b"\n"]
+    runs = [_csv_lines(columns, run, start, stop) for run in columns.runs]
+    parts: list[bytes] = [b","] * (2 * len(runs) * (stop - start))
+    for i, lines in enumerate(runs):
+        parts[2 * i::2 * len(runs)] = lines
+    parts[2 * len(runs) - 1::2 * len(runs)] = [b"\n"] * (stop - start)
+    return [b"".join(parts)]
 
 
 def write_csv(frame: pd.DataFrame, handle: BinaryIO) -> None:
-    """``frame`` as CSV (header, then one line per row) into the binary ``handle``."""
+    """``frame`` as CSV (header, then one line per row) into the binary ``handle``,
+    formatted on every core for a large table (:mod:`mechloop.output.parallel`)."""
     handle.write(b",".join(_csv_value(str(c)) for c in frame.columns) + b"\n")
     columns = _Columns(frame)
     if not columns.runs:
         handle.write(b"\n" * columns.rows)
         return
-    for start, stop in columns.chunks():
-        runs = [_csv_lines(columns, run, start, stop) for run in columns.runs]
-        parts: list[bytes] = [b","] * (2 * len(runs) * (stop - start))
-        for i, lines in enumerate(runs):
-            parts[2 * i::2 * len(runs)] = lines
-        parts[2 * len(runs) - 1::2 * len(runs)] = [b"\n"] * (stop - start)
-        handle.write(b"".join(parts))
+
+    def render(first: int, last: int) -> Iterator[list[bytes | memoryview]]:
+        for start, stop in columns.chunks(first, last):
+            yield _csv_chunk(columns, start, stop)
+
+    _write_pieces(columns, handle, render)
+
+
+def _write_pieces(columns: _Columns, handle: BinaryIO, render: Render) -> None:
+    pieces = columns.pieces()
+    write_ordered(handle, pieces, render,
+                  workers_for(columns.rows * columns.width, len(pieces)))
 
 
 def _json_tokens(columns: _Columns, start: int, stop: int) -> list[bytes]:
@@ -210,7 +266,7 @@ def _json_tokens(columns: _Columns, start: int, stop: int) -> list[bytes]:
                 tokens[j::columns.width] = [_json_value(v)
                                             for v in columns.arrays[j][start:stop]]
             continue
-        found = _dump(columns.block(run, start, stop))[2:-2].replace(b"],[", b",").split(b",")
+        found = _unbracket(_dump(columns.block(run, start, stop).ravel()).split(b","), 1)
         size = end - first
         if size == columns.width:
             return found
@@ -239,12 +295,16 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
     opener = b"},\n{"
     prefixes = [opener + keys[0] + b":"] + [b"," + key + b":" for key in keys[1:]]
     handle.write(b"[\n")
-    for start, stop in columns.chunks():
-        parts: list[bytes] = [b""] * (2 * (stop - start) * columns.width)
-        parts[0::2] = prefixes * (stop - start)
-        parts[1::2] = _json_tokens(columns, start, stop)
-        block = b"".join(parts)
-        handle.write(memoryview(block)[len(opener) - 1:] if start == 0 else block)
+
+    def render(first: int, last: int) -> Iterator[list[bytes | memoryview]]:
+        for start, stop in columns.chunks(first, last):
+            parts: list[bytes] = [b""] * (2 * (stop - start) * columns.width)
+            parts[0::2] = prefixes * (stop - start)
+            parts[1::2] = _json_tokens(columns, start, stop)
+            block = b"".join(parts)
+            yield [memoryview(block)[len(opener) - 1:] if start == 0 else block]
+
+    _write_pieces(columns, handle, render)
     handle.write(b"}\n]\n")
 
 

@@ -62,7 +62,8 @@ class DesignResults:
     ``values``, ``rates`` and ``accels`` map a parameter name to an array shaped
     ``(D, P)`` in SI (m, rad; per second, or per unit of argument 1 without model time).
     Broken positions are NaN and marked in ``broken``; ``no_solution`` and ``dead`` say
-    per contour where it has no real solution or a singular Jacobian; ``branch_changes``
+    per contour where it has no real solution or a singular Jacobian (a position where
+    floating point overflowed is broken too, in neither); ``branch_changes``
     per contour and design whether the assembly branch (the sign of the loop's Jacobian)
     changes between positions where it is regular.  Parameters that stay constant
     (constants and links of constants) are read-only broadcast views: their values, and
@@ -293,7 +294,8 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
                 _setup(model, structure, args, {k: v[lo:hi] for k, v in over.items()}))
         if n_extra:
             part = _with_extra_columns(part, args, extra_at, lo, hi)
-        block = _solve_block(part, 0, n_cols, shape, {}, derivatives=derivatives)
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see below
+            block = _solve_block(part, 0, n_cols, shape, {}, derivatives=derivatives)
         for c in numbers:
             no_solution[c][lo:hi] = block.no_solution[c][:, :n_pos]
             dead[c][lo:hi] = block.dead[c][:, :n_pos]
@@ -319,6 +321,10 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
     for c in numbers:
         broken |= no_solution[c]
         broken |= dead[c]
+    clock = [] if time is None else [time.value]
+    inputs_of = [*clock, *(f for s in args.values() for f in (s.value, s.rate, s.accel))]
+    _mark_overflow(broken, [*inputs_of, *(table[name] for name in setup.varying for table in (
+        (values, rates, accels) if derivatives else (values,)))])
     if positions is None:  # chosen positions need not be neighbours: angles stay wrapped
         _finish_angles(setup, {name: values[name] for name in setup.varying})
     if broken.any():
@@ -343,6 +349,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
     extra_broken = np.zeros((n_designs, n_extra), dtype=bool)
     for c in numbers:
         extra_broken |= extra_none[c] | extra_dead[c]
+    _mark_overflow(extra_broken, [extra[name] for name in setup.varying])
     _finish_angles(setup, {name: extra[name] for name in setup.varying})
     for name in setup.varying:
         np.copyto(extra[name], np.nan, where=extra_broken)
@@ -370,6 +377,17 @@ def _prepared(model: Model):
             _PREPARED.pop(next(iter(_PREPARED)))
         _PREPARED[id(model)] = found
     return found[1:]
+
+
+def _mark_overflow(broken: NDArray[np.bool_], arrays: list[Array]) -> None:
+    """Mark broken, as :func:`mechloop.solve.solve` does, the positions where one of
+    ``arrays`` (broadcast to ``broken``'s shape) is not finite: floating point overflowed
+    (a dimension, an input or a speed too large), so no row not marked broken holds a
+    non-number.  One pass per array when everything is finite."""
+    for arr in arrays:
+        finite = np.isfinite(arr)
+        if not finite.all():
+            broken |= ~np.broadcast_to(finite, broken.shape)
 
 
 def _extra_arguments(args: Mapping[int, Signal], inputs: Array) -> dict[int, Array]:

@@ -36,7 +36,7 @@ from mechloop.modules.planar import (
 )
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.memory import require_memory
-from mechloop.solve.results import ChainBreak, Results
+from mechloop.solve.results import BreakBetween, ChainBreak, Results
 
 Array = NDArray[np.float64]
 
@@ -349,6 +349,7 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         value = setup.constants[root] + deltas.get(name, 0.0)
         values[name], rates[name], accels[name] = np.broadcast_to(value, (n_pos,)), zero, zero
     arg_kinds = {k: argument_kind(model, k) for k in model.arguments}
+    between = _breaks_between(model, setup, values, broken, args, arg_kinds)
     return Results(
         model=model,
         structure=structure,
@@ -362,7 +363,37 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         broken=broken,
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)),
         analogs_of=analogs_of,
+        breaks_between=between,
     )
+
+
+def _breaks_between(model: Model, setup: _Setup, values: dict[str, Array],
+                    broken: NDArray[np.bool_], args: dict[int, Signal],
+                    kinds: dict[int, str]) -> tuple[BreakBetween, ...]:
+    """The breaks of the exact existence check
+    (:func:`~mechloop.solve.existence.assembles_throughout`) that no broken position
+    shows: between two positions that assemble."""
+    from types import SimpleNamespace
+
+    from mechloop.solve.existence import ExistenceCheck
+
+    if 1 not in args or broken.size < 2:
+        return ()
+    samples = SimpleNamespace(values={k: np.asarray(v)[None, :] for k, v in values.items()},
+                              broken=broken[None, :])
+    check = ExistenceCheck(model, structure=setup.structure, args=args, setup=setup)
+    found = check(samples=samples, intervals=True).breaks
+    x = args[1].value
+    modules = {c.number: c.module for c in setup.ordered}
+    out = []
+    for brk in found:
+        inside = (x >= brk.start) & (x <= brk.stop)
+        if broken[inside].any() or brk.after >= x.size - 1:
+            continue  # a position shows it
+        i = brk.after
+        out.append(BreakBetween(brk.contour, modules[brk.contour], i, brk.start, brk.stop,
+                                (float(x[i]), float(x[i + 1])), kinds.get(1, "angle")))
+    return tuple(out)
 
 
 def _overflow(setup: _Setup, out: dict[str, tuple[Array, Array, Array]],

@@ -36,6 +36,34 @@ class ChainBreak:
                 f"{compress_positions(self.positions)}: {self.reason}")
 
 
+@dataclass(frozen=True)
+class BreakBetween:
+    """A contour that cannot be assembled somewhere between positions ``after`` and
+    ``after + 1`` although neither position is broken: the sampled values would draw a
+    smooth curve through a break.  ``start``/``stop`` are the values of argument 1 (SI:
+    rad or m) where assembly is lost (in closed form for a four-bar or slider-crank
+    driven by a crank, by bisection otherwise), ``at`` the argument's values at the two
+    positions."""
+
+    contour: int
+    module: str
+    after: int
+    start: float
+    stop: float
+    at: tuple[float, float]
+    kind: str = "angle"
+
+    def describe(self) -> str:
+        def shown(value: float) -> str:
+            return f"{np.degrees(value):.6g} deg" if self.kind == "angle" else f"{value:.6g} m"
+
+        where = (f"argument 1 = {shown(self.start)}" if self.start == self.stop else
+                 f"argument 1 from {shown(self.start)} to {shown(self.stop)}")
+        return (f"contour {self.contour} ({self.module}) cannot be assembled between "
+                f"positions {self.after} and {self.after + 1} (argument 1 "
+                f"{shown(self.at[0])} and {shown(self.at[1])}): no solution at {where}")
+
+
 def compress_positions(positions: NDArray[np.int64] | list[int]) -> str:
     """``[3, 4, 5, 9]`` -> ``'3-5, 9'``."""
     pos = [int(p) for p in positions]
@@ -73,6 +101,8 @@ class Results:
     broken: NDArray[np.bool_]
     breaks: tuple[ChainBreak, ...] = field(default_factory=tuple)
     analogs_of: int | None = None
+    #: breaks that fall between two positions that both assemble (exact existence check)
+    breaks_between: tuple[BreakBetween, ...] = field(default_factory=tuple)
 
     @property
     def positions(self) -> NDArray[np.int64]:

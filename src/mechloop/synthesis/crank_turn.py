@@ -14,12 +14,14 @@ The share of the turn where it breaks follows in closed form as well (``arccos``
 With a fixed assembly variant and no break the Jacobian's sign cannot change, so such
 a design keeps its variant over the whole turn.
 
-This is the closed-form four-bar case of the existence check; a model it does not
-recognise (another module with an unknown, a crank that does not turn fully, an input
-other than argument 1) gets ``None`` from :func:`compile_turn_check`, and synthesis then
-solves every position and decides at them.  A Pl1 contour (the closing vector to a
-traced point) has a solution wherever that vector has a length: it is checked at the
-positions solved.
+Synthesis takes its feasibility verdict from :mod:`mechloop.solve.existence` (which
+has the same closed form, the degenerate links and the four-bar type conditions); this
+module tells it that a model needs no solved positions for that verdict — a model it
+does not recognise (another module with an unknown, a crank that does not turn fully, an
+input other than argument 1) gets ``None`` from :func:`compile_turn_check`, and synthesis
+then solves every position — and gives the share of the turn where an infeasible design
+breaks, which ranks infeasible designs in the search.  A Pl1 contour (the closing vector
+to a traced point) has a solution wherever that vector has a length.
 """
 
 from __future__ import annotations

@@ -49,6 +49,34 @@ def distance_to_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]
     return np.sqrt(rx.min(axis=-1))
 
 
+def nearest_on_curve(z: NDArray[np.complex128], targets: NDArray[np.complex128]
+                     ) -> tuple[Array, Array, NDArray[np.complex128]]:
+    """Where the traced polyline comes nearest each target: the distance, the position
+    parameter ``s`` (position ``floor(s)`` plus the share of the segment to the next),
+    and the nearest point, each ``(D, K)``.  ``z`` : complex ``(D, P)``, ``targets`` :
+    complex ``(K,)`` or one row per design ``(D, K)``; the distance is that of
+    :func:`distance_to_curve`."""
+    targets = np.broadcast_to(targets, (z.shape[0], targets.shape[-1]))
+    if z.shape[0] > _ROWS:
+        parts = [nearest_on_curve(z[i:i + _ROWS], targets[i:i + _ROWS])
+                 for i in range(0, z.shape[0], _ROWS)]
+        return tuple(np.concatenate(p) for p in zip(*parts, strict=True))
+    a = z[:, None, :-1]                                        # (D, 1, S)
+    seg = np.diff(z, axis=-1)[:, None, :]
+    length2 = seg.real ** 2 + seg.imag ** 2
+    inv = np.divide(1.0, length2, out=np.zeros_like(length2), where=length2 > _TINY)
+    rel = targets[:, :, None] - a                               # (D, K, S)
+    t = np.clip((rel.real * seg.real + rel.imag * seg.imag) * inv, 0.0, 1.0)
+    gap = rel - t * seg
+    d2 = gap.real ** 2 + gap.imag ** 2
+    best = np.nan_to_num(d2, nan=np.inf).argmin(axis=-1)[..., None]     # (D, K, 1)
+    share = np.take_along_axis(t, best, axis=-1)[..., 0]
+    start = np.take_along_axis(np.broadcast_to(a, d2.shape), best, axis=-1)[..., 0]
+    step = np.take_along_axis(np.broadcast_to(seg, d2.shape), best, axis=-1)[..., 0]
+    distance = np.sqrt(np.take_along_axis(d2, best, axis=-1)[..., 0])
+    return distance, best[..., 0] + share, start + share * step
+
+
 def distance_at_positions(z: NDArray[np.complex128], targets: NDArray[np.complex128],
                           positions: NDArray[np.int64]) -> Array:
     """Distance from target ``k`` to the traced point at position ``positions[k]``

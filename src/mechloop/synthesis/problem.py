@@ -33,7 +33,7 @@ import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from mechloop.errors import ModelError, Problem, SolveError
 from mechloop.model.dynamic import HeadPoint
@@ -42,6 +42,9 @@ from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, Synt
 from mechloop.model.units import registry, to_si, unit_factor
 from mechloop.solve.designs import DesignResults, solve_designs, solve_designs_at
 from mechloop.synthesis import deviations as dv
+from mechloop.synthesis import shape
+from mechloop.synthesis.circuits import circuit_problems, evaluate_best, residuals_best
+from mechloop.synthesis.continuous import curve_distance
 from mechloop.synthesis.crank_turn import compile_turn_check
 from mechloop.synthesis.variables import Variables, apply_design, compile_variables
 
@@ -127,9 +130,11 @@ class SynthesisProblem:
         self.angle_unit = unit_factor(model.units.angle, "angle")
         self._compile_target()
         self._compile_conditions()
+        #: both circuits (``circuits``): a sub-problem per combination of variants
+        self.circuits = circuit_problems(self)
         self.objective_positions = self._positions_read()
         #: free timing whose objective reads the target inputs only
-        self.inputs_only = self.free_timing and self._reads_targets_only()
+        self.inputs_only = self.at_inputs and self._reads_targets_only()
         self._turn_check = (compile_turn_check(model) if self.objective_positions is not None
                             or self.inputs_only else None)
         self._exact_share: Array | None = None
@@ -155,6 +160,10 @@ class SynthesisProblem:
         task, n = self.task, self.model.positions
         self.target_kind: str | None = None
         self.free_timing = False
+        #: shape only (``path.frame``): what the placement on the targets may change
+        self.shape: shape.Freedom | None = None
+        #: a timed curve: the SI values of argument 1 where its targets are reached, (K,)
+        self.timed_inputs: Array | None = None
         self.q_unit = self.model.units.length
         self.weights: Array | None = None
         if task.path is not None:
@@ -168,6 +177,8 @@ class SynthesisProblem:
                 y = np.broadcast_to(evaluate_expression(targets.y, (*where, "y"), t=t), t.shape)
                 self.targets = (x + 1j * y) * self.length_unit
                 self.target_positions = None
+                if path.timing is True:  # target k where argument 1 = t_k
+                    self.timed_inputs = self._argument_si(t)
             elif isinstance(targets, dict):
                 self.targets = self._points(targets.values())
                 self.target_positions = np.array(list(targets), dtype=np.int64)
@@ -182,6 +193,9 @@ class SynthesisProblem:
             if path.weights is not None:
                 self.weights = np.asarray(path.weights, dtype=float)
             self.point = path.point
+            if path.frame is not None:  # shape only: the placement is free
+                shape.check_frame(self.model)
+                self.shape = shape.Freedom.of(path.frame)
         elif task.function is not None:
             fun = task.function
             self.target_kind = "function"
@@ -255,13 +269,36 @@ class SynthesisProblem:
         self.input_turn = 2 * np.pi if angle and span >= 2 * np.pi * (1 - 1e-9) else None
         self.input_span = span or 1.0
 
+    @property
+    def at_inputs(self) -> bool:
+        """Whether the targets are solved at inputs of their own (free timing, or a
+        timed curve) rather than at the positions."""
+        return self.free_timing or self.timed_inputs is not None
+
+    def _argument_si(self, values: Array) -> Array:
+        """Values of argument 1 in its model unit -> SI."""
+        from mechloop.model.check import argument_kind
+
+        kind = argument_kind(self.model, 1)
+        unit = self.model.arguments[1].unit or getattr(self.model.units, kind)
+        return np.asarray(values, dtype=float) * unit_factor(unit, kind)
+
     def order_violation(self, designs: Array) -> Array:
         """How far the free-timing inputs of ``designs`` ``(D, V)`` are out of the
-        targets' order, SI, ``(D,)`` (0 in order).  Increasing inputs: the sum of the
+        targets' order, SI, ``(D,)`` (0 in order; ``path.direction`` increasing,
+        decreasing, or the lesser of both for either).  Increasing inputs: the sum of the
         backward steps.  An input that turns fully: by how much the forward steps
         (modulo the turn) add up to more than one turn."""
         inputs = designs[:, self.variables.input_columns]
         steps = np.diff(inputs, axis=-1)
+        direction = self.task.path.direction
+        ways = {"increasing": (steps,), "decreasing": (-steps,),
+                "either": (steps, -steps)}[direction]
+        return np.minimum.reduce([self._backward(way) for way in ways])
+
+    def _backward(self, steps: Array) -> Array:
+        """How far steps ``(D, K - 1)`` fall short of increasing (see
+        :meth:`order_violation`), ``(D,)``."""
         if self.input_turn is None:
             return np.maximum(-steps, 0).sum(axis=-1)
         forward = np.mod(steps, self.input_turn).sum(axis=-1)
@@ -342,7 +379,7 @@ class SynthesisProblem:
         """The positions the objective reads, sorted, when it reads no others (targets
         with their positions, and no condition or criterion over the motion); else None.
         """
-        if not self._reads_targets_only() or self.free_timing:
+        if not self._reads_targets_only() or self.at_inputs:
             return None
         if self.target_kind in ("path", "motion") and self.target_positions is not None:
             return np.unique(self.target_positions)
@@ -353,16 +390,25 @@ class SynthesisProblem:
         task = self.task
         return not (task.pressure_angle is not None or task.rotation
                     or task.workspace is not None or task.criteria
-                    or self.needs_derivatives)
+                    or self.needs_derivatives or getattr(self, "shape", None) is not None)
 
     def exact_feasibility(self, designs: Array) -> tuple[NDArray[np.bool_], Array] | None:
         """Whether each design ``(D, V)`` assembles, on one branch, over the whole
         continuous input — decided exactly, not at samples —, ``(D,)``, and the share of
         the input range where it breaks, ``(D,)``; None where no exact decision is
-        available for this model (then it is decided at the positions)."""
+        available for this model without solving every position (then it is decided at
+        the positions and between them).
+
+        The decision is :meth:`exists` (:mod:`mechloop.solve.existence`); it needs no
+        solved positions where :mod:`mechloop.synthesis.crank_turn` recognizes the model
+        (a four-bar driven by its crank, traced points), whose closed form also gives the
+        share of the turn where an infeasible design breaks (the search's ranking of
+        infeasible designs)."""
         if self._turn_check is None:
             return None
-        return self._turn_check(self.variables.overrides(designs), designs.shape[0])
+        _, share = self._turn_check(self.variables.overrides(designs), designs.shape[0])
+        feasible = self.exists(designs)
+        return feasible, np.where(feasible, 0.0, np.maximum(share, 1.0 / 360))
 
     # ---- evaluating ------------------------------------------------------------------
     def solve(self, designs: Array) -> DesignResults:
@@ -376,22 +422,43 @@ class SynthesisProblem:
         """Global position (m, as x + iy) of a point at every position, ``(D, P)``."""
         return _place(self.model, results, self.variables.starts(designs), point)
 
-    def solve_at_inputs(self, designs: Array) -> tuple[DesignResults, DesignResults]:
+    def solve_at_inputs(self, designs: Array, positions: ArrayLike | None = None
+                        ) -> tuple[DesignResults, DesignResults]:
         """Free timing: the kinematics at the positions, ``(D, P)``, and at each
         design's target inputs, ``(D, K)``, in one call
         (:func:`~mechloop.solve.designs.solve_designs_at`)."""
-        return solve_designs_at(self.model, self.variables.overrides(designs),
-                                designs[:, self.variables.input_columns],
-                                derivatives=self.needs_derivatives)
+        inputs = (designs[:, self.variables.input_columns] if self.timed_inputs is None
+                  else np.broadcast_to(self.timed_inputs, (designs.shape[0],
+                                                           self.timed_inputs.size)))
+        return solve_designs_at(self.model, self.variables.overrides(designs), inputs,
+                                derivatives=self.needs_derivatives, positions=positions)
 
     def reached(self, at: DesignResults, designs: Array) -> NDArray[np.complex128]:
         """Free timing: the tracing point (m, x + iy) at each design's target inputs,
         ``(D, K)``: column k is where target k is reached."""
         return self.place(at, designs, self.point)
 
-    def _assess(self, designs: Array) -> tuple[DesignResults, NDArray[np.bool_],
-                                                Array | None, dict[str, Array],
-                                                dict[str, Array]]:
+    def exists(self, designs: Array, samples: DesignResults | None = None
+               ) -> NDArray[np.bool_]:
+        """The exact mandatory conditions, ``(D,)``: the chain assembles over the whole
+        continuous input interval, no link is degenerate
+        (:func:`~mechloop.solve.existence.assembles_throughout`, reusing the solved
+        ``samples``), and the four-bar type the task asks for (``grashof``,
+        ``crank_shortest``)."""
+        from mechloop.solve.existence import ExistenceCheck, four_bar_type_holds
+
+        if getattr(self, "_existence", None) is None:
+            self._existence = ExistenceCheck(self.model)  # compiled once
+        overrides = self.variables.overrides(designs)
+        ok = self._existence(overrides, samples=samples).feasible
+        if self.task.grashof != "any" or self.task.crank_shortest:
+            ok &= four_bar_type_holds(self._existence, overrides, grashof=self.task.grashof,
+                                      crank_shortest=self.task.crank_shortest)
+        return ok
+
+    def _assess(self, designs: Array, *, continuous: bool = False
+                ) -> tuple[DesignResults, NDArray[np.bool_], Array | None,
+                           dict[str, Array], dict[str, Array]]:
         """Solve a population and compute what both :meth:`evaluate` and
         :meth:`residuals` need: the results, the mandatory conditions, the weighted
         deviations ``(D, K)`` (NaN rows where a design does not assemble; None without a
@@ -400,39 +467,38 @@ class SynthesisProblem:
         keeps the points there for :meth:`residuals`."""
         terms: dict[str, Array] = {}
         measures: dict[str, Array] = {}
-        if self.free_timing:
+        if self.at_inputs:
             exact = self.exact_feasibility(designs) if self.inputs_only else None
             if exact is None:
                 res, at = self.solve_at_inputs(designs)
                 feasible = res.assembles & res.keeps_variant & at.assembles & at.keeps_variant
+                feasible = feasible & self.exists(designs, res)
             else:  # position 0 and the target inputs, and the exact check
-                res, at = solve_designs_at(self.model, self.variables.overrides(designs),
-                                           designs[:, self.variables.input_columns],
-                                           derivatives=False, positions=[0])
+                res, at = self.solve_at_inputs(designs, positions=[0])
                 feasible = exact[0] & res.assembles & at.assembles & at.keeps_variant
-            self._exact_share = None if exact is None else exact[1]
         else:
             exact = (self.exact_feasibility(designs) if self.objective_positions is not None
                      else None)
-            if exact is None:  # every position, decided at them
+            if exact is None:  # every position, decided at them and between them
                 res = self.solve(designs)
-                feasible = res.assembles & res.keeps_variant
+                feasible = res.assembles & res.keeps_variant & self.exists(designs, res)
             else:  # the positions the objective reads, and the exact check
                 res = solve_designs(self.model, self.variables.overrides(designs),
                                     derivatives=False, positions=self.objective_positions)
                 feasible = exact[0] & res.assembles & res.keeps_variant
-            self._exact_share = None if exact is None else exact[1]
+        self._exact_share = None if exact is None else exact[1]
         dev = None
         if self.target_kind:
             rows = np.flatnonzero(feasible)  # deviations of designs that assemble only
             dev = np.full((designs.shape[0], self._target_count()), np.nan)
-            if self.free_timing:
+            if self.at_inputs:
                 self._reached = np.full(dev.shape, np.nan, dtype=complex)
                 if rows.size:
                     self._reached[rows] = self.reached(at.subset(rows), designs[rows])
                 dev = np.abs(self._reached - self.targets[None, :]) / self.length_unit
             elif rows.size:
-                dev[rows] = self.deviations(res.subset(rows), designs[rows])
+                dev[rows] = self.deviations(res.subset(rows), designs[rows],
+                                            continuous=continuous)
             if self.weights is not None:
                 dev = dev * self.weights[None, :]
         if self.free_timing and self.task.path.ordered:
@@ -450,10 +516,17 @@ class SynthesisProblem:
             return self.function_positions.size
         return self.targets.size
 
-    def evaluate(self, designs: Array) -> Evaluation:
-        """Every term for the population ``designs`` (SI, shape ``(D, V)``)."""
+    def evaluate(self, designs: Array, *, continuous: bool = False) -> Evaluation:
+        """Every term for the population ``designs`` (SI, shape ``(D, V)``).
+
+        ``continuous``: a path without timing measures each target's distance to the
+        continuous curve (:mod:`mechloop.synthesis.continuous`; ~30 solves more), not to
+        the polyline through the positions: the error of the design as it really moves,
+        for the reported result."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
-        res, feasible, dev, terms, measures = self._assess(designs)
+        if self.circuits:  # the better circuit of each design
+            return evaluate_best(self.circuits, designs, continuous=continuous)[0]
+        res, feasible, dev, terms, measures = self._assess(designs, continuous=continuous)
         n_designs = designs.shape[0]
         broken_share = (res.broken.mean(axis=-1) if self._exact_share is None
                         else np.maximum(self._exact_share, res.broken.mean(axis=-1)))
@@ -475,17 +548,20 @@ class SynthesisProblem:
                           broken_share=broken_share, keeps_variant=keeps, terms=terms,
                           measures=measures)
 
-    def residuals(self, designs: Array) -> Array:
+    def residuals(self, designs: Array, *, continuous: bool = False) -> Array:
         """Deviations (weighted) and the square roots of the penalties, ``(D, K + T)``,
         for a least-squares polish; an infeasible design gets a large constant row.
 
         A path with timing (given or free) gives the x and y errors of each target
         instead of its distance, ``(D, 2K + T)``: the same sum of squares, but smooth where
         a distance is zero, so the polish does not stall with fewer targets than
-        variables."""
+        variables.  ``continuous``: distances to the continuous curve, as
+        :meth:`evaluate` (a path without timing; ~10-30 solves more per call)."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
-        res, feasible, dev, terms, _ = self._assess(designs)
-        if dev is not None and self.free_timing:
+        if self.circuits:
+            return residuals_best(self.circuits, designs, continuous=continuous)
+        res, feasible, dev, terms, _ = self._assess(designs, continuous=continuous)
+        if dev is not None and self.at_inputs:
             error = (self._reached - self.targets[None, :]) / self.length_unit
             if self.weights is not None:
                 error = error * self.weights[None, :]
@@ -504,18 +580,29 @@ class SynthesisProblem:
         out[bad] = 1e6
         return out
 
-    def deviations(self, results: DesignResults, designs: Array) -> Array:
+    def deviations(self, results: DesignResults, designs: Array, *,
+                   continuous: bool = False) -> Array:
         """Deviations from the targets, ``(D, K)``, in the model's units.
 
         With free timing ``results`` are those at the target inputs (the second of
         :meth:`solve_at_inputs`): the distance from target k to the point at its input."""
         kind = self.target_kind
-        if kind == "path" and self.free_timing:
+        if kind == "path" and self.at_inputs:
             return np.abs(self.reached(results, designs) - self.targets[None, :]) / \
                 self.length_unit
         if kind == "path":
             z = self.place(results, designs, self.point)
-            if self.target_positions is None:
+            if self.shape is not None:  # after the best placement on the targets
+                a, b, dev = shape.fit_placement(
+                    z, self.targets, self.shape, self.weights,
+                    fine=shape.PRECISE if continuous else shape.FINE)
+                if continuous:  # the targets in the mechanism's frame, and back
+                    dev = curve_distance(self, designs, z, (self.targets[None, :] -
+                                                            b[:, None]) / a[:, None])
+                    dev = dev * np.abs(a)[:, None]
+            elif self.target_positions is None and continuous:
+                dev = curve_distance(self, designs, z, self.targets)
+            elif self.target_positions is None:
                 dev = dv.distance_to_curve(z, self.targets)
             else:
                 dev = dv.distance_at_positions(z, self.targets,
@@ -644,8 +731,46 @@ class SynthesisProblem:
         return float(_reduce(column[None, :], crit.reduce)[0])
 
     def design_model(self, design: Array) -> Model:
-        """The model with one design's values (SI, shape ``(V,)``) written in."""
-        return apply_design(self.model, self.variables.to_model_units(np.asarray(design)))
+        """The model with one design's values (SI, shape ``(V,)``) written in (and its
+        better circuit, with ``circuits``)."""
+        own = self.for_design(design)
+        if own is not self:
+            return own.design_model(design).model_copy(update={"synthesis": self.task})
+        model = apply_design(self.model, self.variables.to_model_units(np.asarray(design)))
+        if self.shape is not None:  # placed on the targets
+            a, b = self.placement(np.atleast_2d(design))
+            model = shape.place_model(model, complex(a[0]), complex(b[0]))
+        return model
+
+    def placement(self, designs: Array) -> tuple[NDArray[np.complex128],
+                                                 NDArray[np.complex128]]:
+        """Shape only: the similarity ``w = a·z + b`` that places each design's traced
+        curve on the targets, complex ``(D,)`` each (``a = 1, b = 0`` without
+        ``path.frame``)."""
+        n = designs.shape[0]
+        if self.shape is None:
+            return np.ones(n, complex), np.zeros(n, complex)
+        if self.circuits:  # each design on its better circuit
+            choice = evaluate_best(self.circuits, designs)[1]
+            a, b = np.ones(n, complex), np.zeros(n, complex)
+            for c, (_, sub) in enumerate(self.circuits):
+                rows = np.flatnonzero(choice == c)
+                if rows.size:
+                    a[rows], b[rows] = sub.placement(designs[rows])
+            return a, b
+        z = self.place(self.solve(designs), designs, self.point)
+        a, b, _ = shape.fit_placement(z, self.targets, self.shape, self.weights,
+                                      fine=shape.PRECISE)
+        return a, b
+
+    def for_design(self, design: Array) -> SynthesisProblem:
+        """The problem on which ``design`` ``(V,)`` is scored: itself, or with
+        ``circuits`` the sub-problem of the design's better circuit (to solve or plot
+        the design as it is)."""
+        if not self.circuits:
+            return self
+        choice = evaluate_best(self.circuits, np.atleast_2d(design))[1]
+        return self.circuits[int(choice[0])][1]
 
 
 def _is_parameter(column: str, model: Model) -> bool:

@@ -78,8 +78,7 @@ class _Tracker:
 
     def evaluate(self, designs: Array) -> Evaluation:
         """Evaluate a generation (SI designs ``(D, V)``) and remember the best."""
-        designs = np.clip(np.atleast_2d(designs), self.problem.variables.low,
-                          self.problem.variables.high)
+        designs = self.problem.variables.clip(np.atleast_2d(designs))
         ev = self.problem.evaluate(designs)
         self.evaluations += designs.shape[0]
         order = np.argsort(ev.total)
@@ -292,7 +291,7 @@ def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: 
     best = tracker.best_x
     if best is None:
         best = problem.variables.scale(np.full(len(problem.variables), 0.5))
-    evaluation = problem.evaluate(best[None, :])
+    evaluation = problem.evaluate(best[None, :], continuous=True)  # as it really moves
     elapsed = time.perf_counter() - tracker.started
     order = np.argsort(tracker.archive_f)
     rows, seen = [], []
@@ -368,11 +367,14 @@ def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, sta
 
     variables = problem.variables
     seed = int(rng.integers(1, 2**31 - 1))
-    options = {"bounds": [0.0, 1.0], "popsize": search.population, "seed": seed,
-               "verbose": -9, "maxiter": search.iterations + 1, "tolfun": 0, "tolx": 1e-14,
+    lower, upper = variables.unit_bounds()
+    options = {"bounds": [[None if np.isinf(v) else 0.0 for v in lower],
+                          [None if np.isinf(v) else 1.0 for v in upper]],
+               "popsize": search.population, "seed": seed, "verbose": -9,
+               "maxiter": search.iterations + 1, "tolfun": 0, "tolx": 1e-14,
                "tolfunhist": 0, "tolstagnation": 10**9}
     ev = tracker.evaluate(starts)
-    best = np.clip(starts[int(np.argmin(ev.total))], variables.low, variables.high)
+    best = variables.clip(starts[int(np.argmin(ev.total))])
     x0 = np.clip(variables.unscale(best), 0.05, 0.95)
     restarts = 0
     sigma = 0.1 if given else 0.3
@@ -380,7 +382,7 @@ def _run_cmaes(problem: SynthesisProblem, search: Search, tracker: _Tracker, sta
         es = cma.CMAEvolutionStrategy(x0, sigma, options)
         while not es.stop():
             before = tracker.best_total
-            unit = np.clip(np.array(es.ask()), 0.0, 1.0)
+            unit = variables.clip_unit(np.array(es.ask()))
             ev = tracker.evaluate(variables.scale(unit))
             es.tell(list(unit), list(ev.total))
             tracker.generation_done(before)
@@ -396,13 +398,14 @@ def _local(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
     variables = problem.variables
 
     def func(unit: Array) -> float:
-        return evaluate(variables.scale(np.clip(unit, 0.0, 1.0)))
+        return evaluate(variables.scale(variables.clip_unit(unit)))
 
+    lower, upper = variables.unit_bounds()
     found = minimize(func, x0_unit, method="Nelder-Mead",
-                     bounds=[(0.0, 1.0)] * len(variables),
+                     bounds=list(zip(lower, upper, strict=True)),
                      options={"maxfev": max_evals, "xatol": 1e-10, "fatol": 1e-14,
                               "adaptive": len(variables) > 4})
-    return variables.scale(np.clip(found.x, 0.0, 1.0)), float(found.fun)
+    return variables.scale(variables.clip_unit(found.x)), float(found.fun)
 
 
 def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: Search
@@ -427,7 +430,8 @@ def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: S
 
     x0 = variables.unscale(best)
     if np.all(np.abs(fun(x0)) < 1e6):
-        found = least_squares(fun, x0, jac=jac, bounds=(0.0, 1.0), x_scale="jac",
+        found = least_squares(fun, x0, jac=jac, bounds=variables.unit_bounds(),
+                              x_scale="jac",
                               xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=50 * n_vars)
         tracker.evaluations += found.nfev * (n_vars + 2)
         tracker.evaluate(variables.scale(found.x)[None, :])

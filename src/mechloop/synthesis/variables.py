@@ -18,7 +18,10 @@ over the positions) and are reported with the result, but they set no constant o
 model: :func:`apply_design` leaves them out, the written model is the mechanism.
 
 Inside the search every value is SI (m, rad); bounds and saved models are in the model's
-units.
+units.  A *periodic* angle (``vary: {a4: periodic}``, or bounds spanning a full turn) has
+no bound at its cut: :meth:`Variables.scale` wraps its unit coordinate (any real number)
+onto the turn, :meth:`Variables.clip` wraps an SI value, and
+:meth:`Variables.unit_bounds` leaves it unbounded for a search that honours bounds.
 """
 
 from __future__ import annotations
@@ -62,8 +65,11 @@ class Variables:
     ties: tuple[tuple[str, int, float, float], ...] = ()
     components: Mapping[int, tuple[float, float]] | None = None
     internal: Mapping[str, str] | None = None
+    periodic: NDArray[np.bool_] | None = None
 
     def __post_init__(self) -> None:
+        if self.periodic is None:
+            object.__setattr__(self, "periodic", np.zeros(len(self.names), dtype=bool))
         if not self.ties:  # plain variables: each sets the constant it names
             object.__setattr__(self, "ties", tuple(
                 (name, i, 1.0, 0.0) for i, name in enumerate(self.names)
@@ -124,12 +130,39 @@ class Variables:
         return kind_of(target)
 
     def scale(self, unit: Array) -> Array:
-        """Map ``[0, 1]^V`` to the bounds."""
+        """Map ``[0, 1]^V`` to the bounds; a periodic column takes any unit value,
+        wrapped onto its turn (``unit mod 1``), so a search may cross 0/360 freely."""
+        unit = np.where(self.periodic, _wrap(unit), unit)
         return self.low + unit * (self.high - self.low)
 
     def unscale(self, designs: Array) -> Array:
-        """Map the bounds to ``[0, 1]^V``."""
-        return (designs - self.low) / (self.high - self.low)
+        """Map the bounds to ``[0, 1]^V`` (a periodic column wrapped onto ``[0, 1)``)."""
+        unit = (designs - self.low) / (self.high - self.low)
+        return np.where(self.periodic, _wrap(unit), unit)
+
+    def clip(self, designs: Array) -> Array:
+        """SI designs ``(..., V)`` within the bounds: a periodic column wrapped onto
+        ``[low, low + turn)``, any other clipped."""
+        span = self.high - self.low
+        wrapped = self.low + _wrap((designs - self.low) / span) * span
+        return np.where(self.periodic, wrapped, np.clip(designs, self.low, self.high))
+
+    def clip_unit(self, unit: Array) -> Array:
+        """Unit coordinates ``(..., V)`` clipped to ``[0, 1]``, a periodic column left
+        as it is (:meth:`scale` wraps it)."""
+        return np.where(self.periodic, unit, np.clip(unit, 0.0, 1.0))
+
+    def unit_bounds(self) -> tuple[Array, Array]:
+        """Bounds of a search in unit coordinates, ``(V,)`` each: ``[0, 1]``, and
+        ``(-inf, inf)`` for a periodic column (:meth:`scale` wraps it)."""
+        return (np.where(self.periodic, -np.inf, 0.0), np.where(self.periodic, np.inf, 1.0))
+
+
+def _wrap(unit: Array) -> Array:
+    """``unit mod 1`` in ``[0, 1)`` (a tiny negative value rounds to 1.0 in ``np.mod``:
+    it is the cut, 0)."""
+    wrapped = np.mod(unit, 1.0)
+    return np.where(wrapped >= 1.0, 0.0, wrapped)
 
 
 def compile_variables(model: Model) -> Variables:
@@ -151,10 +184,7 @@ def compile_variables(model: Model) -> Variables:
             ties.append((target, column, float(factor),
                          to_si(shift, kind_of(target), getattr(model.units,
                                                                  kind_of(target)))))
-    low = np.array([to_si(task.vary[n][0], k, u) for n, k, u in zip(names, kinds, units,
-                                                                     strict=True)])
-    high = np.array([to_si(task.vary[n][1], k, u) for n, k, u in zip(names, kinds, units,
-                                                                      strict=True)])
+    low, high, periodic = _bounds(task.vary, names, kinds, units)
     components: dict[int, tuple[float, float]] = {}
     for target, *_ in ties:
         if target[0] == "v":
@@ -171,8 +201,36 @@ def compile_variables(model: Model) -> Variables:
         low = np.concatenate([low, np.full(count, lowest)])
         high = np.concatenate([high, np.full(count, highest)])
         internal = dict.fromkeys(inputs, kind)
+        # an input that turns fully is periodic too (the order is kept modulo the turn)
+        turns = kind == "angle" and highest - lowest >= TURN * (1 - _SLACK)
+        if turns:
+            high[-count:] = low[-count:] + TURN
+        periodic = np.concatenate([periodic, np.full(count, turns)])
     return Variables(names, low, high, tuple(units), tuple(ties), components,
-                     internal or None)
+                     internal or None, periodic)
+
+
+#: A turn, rad, and the relative slack for bounds that span one.
+TURN = 2 * math.pi
+_SLACK = 1e-9
+
+
+def _bounds(vary, names, kinds, units) -> tuple[Array, Array, NDArray[np.bool_]]:
+    """SI bounds and the periodic mask of the variables: ``'periodic'`` is an angle on
+    ``[0, 360 deg)``; an angle with bounds spanning a full turn (or more) is periodic
+    on ``[low, low + 360 deg)``."""
+    low, high, periodic = [], [], []
+    for name, kind, unit in zip(names, kinds, units, strict=True):
+        bounds = vary[name]
+        if bounds == "periodic":
+            lo, hi = 0.0, TURN
+        else:
+            lo, hi = (to_si(v, kind, unit) for v in bounds)
+        turn = kind == "angle" and hi - lo >= TURN * (1 - _SLACK)
+        low.append(lo)
+        high.append(lo + TURN if turn else hi)
+        periodic.append(turn)
+    return np.array(low), np.array(high), np.array(periodic, dtype=bool)
 
 
 def input_name(k: int) -> str:
@@ -246,7 +304,7 @@ def current_values(model: Model, variables: Variables) -> Array:
         raw = dims[name].value if name in dims else _constant(model, name)
         unit = variables.units[i]
         values.append(raw * unit_factor(unit, variables.kind(i)))
-    return np.clip(np.array(values), variables.low, variables.high)
+    return variables.clip(np.array(values))
 
 
 def apply_design(model: Model, values: Mapping[str, float]) -> Model:

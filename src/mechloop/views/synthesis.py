@@ -51,12 +51,14 @@ def plot_fit(result: SynthesisResult, *, ax: Axes | None = None) -> Figure:
     (path and motion), or the generated and the wanted function (function generation)."""
     figure = new_figure(7.0, 6.0) if ax is None else ax.figure
     ax = ax or figure.add_subplot()
-    problem = result.problem
+    problem = result.problem.for_design(result.best)  # its circuit
     design = result.best[None, :]
     res = problem.solve(design)
     unit = problem.model.units.length
     if problem.target_kind in ("path", "motion"):
-        z = problem.place(res, design, problem.point)[0] / problem.length_unit
+        a, b = problem.placement(design)  # shape only: placed on the targets
+        z = (a[0] * problem.place(res, design, problem.point)[0] + b[0]) / \
+            problem.length_unit
         targets = problem.targets / problem.length_unit
         ax.plot(z.real, z.imag, label="traced by the result")
         ax.plot(targets.real, targets.imag, "o", mfc="none", color="C3", label="targets")
