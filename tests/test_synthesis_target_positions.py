@@ -191,3 +191,26 @@ def test_some_positions_need_a_fixed_variant_and_increasing_numbers():
         solve_designs(tracked, {"r2": np.array([0.35])}, positions=[0, 10])
     with pytest.raises(SolveError, match="must increase"):
         solve_designs(model, {"r2": np.array([0.35])}, positions=[10, 0])
+
+
+def test_a_timed_curve_at_its_inputs_only_equals_every_position():
+    """A timed parametric curve (its targets at inputs of their own): position 0 and the
+    inputs solved, the verdict exact; the same evaluation as solving every position."""
+    from test_synthesis_formulations import coupler_expressions, path_data
+
+    data = path_data()
+    data["synthesis"]["path"].update(targets={**coupler_expressions(), "t": [10, 300],
+                                              "count": 7}, timing=True)
+    model = mechloop.Model.from_dict(data)
+    fast, general = SynthesisProblem(model), SynthesisProblem(model)
+    assert fast.inputs_only and fast.exact_feasibility(
+        fast.variables.scale(np.full((1, len(fast.variables)), 0.5))) is not None
+    general.inputs_only = False
+    rng = np.random.default_rng(2)
+    designs = fast.variables.scale(rng.uniform(size=(400, len(fast.variables))))
+    a, b = fast.evaluate(designs), general.evaluate(designs)
+    assert a.feasible.any()
+    np.testing.assert_array_equal(a.feasible, b.feasible)
+    np.testing.assert_allclose(a.q[a.feasible], b.q[b.feasible], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(fast.residuals(designs)[a.feasible],
+                               general.residuals(designs)[b.feasible], rtol=1e-12, atol=0)
