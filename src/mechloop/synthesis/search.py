@@ -48,6 +48,13 @@ class Progress:
     feasible: bool
 
 
+#: Share of a time budget kept for the final polish (DE and CMA-ES with polish), and the
+#: margin kept otherwise (the final evaluation and the result's assembly): the whole run,
+#: polish included, stays within the budget (the polish stops at the budget's end).
+POLISH_SHARE = 0.1
+MARGIN_SHARE = 0.02
+
+
 class _Stop(Exception):
     """Raised inside the search to end it; carries the reason."""
 
@@ -56,13 +63,19 @@ class _Tracker:
     """Counts evaluations, keeps the best designs, applies the stopping rules."""
 
     def __init__(self, problem: SynthesisProblem, search: Search, keep: int,
-                 progress: Callable[[Progress], None] | None, budget: float | None):
+                 progress: Callable[[Progress], None] | None, budget: float | None,
+                 started: float | None = None, reserve: float = 0.0):
         self.problem = problem
         self.search = search
         self.keep = keep
         self.progress = progress
-        self.started = time.perf_counter()
-        self.budget = budget
+        self.started = time.perf_counter() if started is None else started
+        # the hard wall-clock limit of the whole run (perf_counter, s), and the part of
+        # the budget the global phase may use (the rest is kept for the polish)
+        self.deadline = math.inf if budget is None else self.started + budget
+        self.budget = None if budget is None else budget * (1.0 - reserve)
+        self.polish_evaluations = 0
+        self.polish_note = ""
         self.evaluations = 0
         self.iteration = 0
         self.best_x: Array | None = None
@@ -78,6 +91,8 @@ class _Tracker:
 
     def evaluate(self, designs: Array) -> Evaluation:
         """Evaluate a generation (SI designs ``(D, V)``) and remember the best."""
+        if time.perf_counter() >= self.deadline:
+            raise _Stop("time budget spent")
         designs = np.clip(np.atleast_2d(designs), self.problem.variables.low,
                           self.problem.variables.high)
         ev = self.problem.evaluate(designs)
@@ -207,6 +222,7 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
     multi-start runs its first local searches from them (then from the best samples,
     ``search.starts`` runs at least).
     """
+    started = time.perf_counter()  # the budget counts from here, compiling included
     problem = SynthesisProblem(model)
     search = problem.task.search
     update = {k: v for k, v in {"method": method, "seed": seed, "iterations": iterations,
@@ -214,7 +230,9 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
                                 "polish": polish}.items() if v is not None}
     if update:  # validated like the file's own settings (method, bounds of counts)
         search = type(search).model_validate({**search.model_dump(), **update})
-    tracker = _Tracker(problem, search, keep, progress, search.time)
+    polishing = search.polish and search.method != "multistart"
+    tracker = _Tracker(problem, search, keep, progress, search.time, started,
+                       POLISH_SHARE if polishing else MARGIN_SHARE)
     rng = np.random.default_rng(search.seed)
     given = start_designs(problem, start)
     starts = current_values(model, problem.variables)[None, :] if given is None else given
@@ -231,12 +249,13 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
         stopped = str(stop)
     except KeyboardInterrupt:
         stopped = "interrupted"
-    if search.polish and stopped not in ("interrupted",) and tracker.best_x is not None \
-            and search.method != "multistart":
+    if polishing and stopped not in ("interrupted",) and tracker.best_x is not None:
         try:
             _polish(problem, tracker, tracker.best_x, search)
         except KeyboardInterrupt:
             stopped = "interrupted"
+        except _Stop:
+            tracker.polish_note += " (stopped by the time budget)"
     return _result(problem, tracker, stopped, search.method)
 
 
@@ -407,35 +426,74 @@ def _local(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
 
 def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: Search
             ) -> None:
-    """Least squares on the deviations from the best design (the Jacobian by forward
-    differences, all V + 1 designs in one vectorized call), then Nelder–Mead on the
+    """Least squares on the residuals from the best design, then Nelder–Mead on the
     objective itself; every result goes through the tracker, so the best design only
-    ever improves."""
-    variables = problem.variables
-    n_vars = len(variables)
-    step = 1e-7
+    ever improves, and every evaluation checks the run's hard deadline (raising
+    :class:`_Stop` past it).
 
-    def fun(unit: Array) -> Array:
-        return problem.residuals(variables.scale(unit)[None, :])[0]
-
-    def jac(unit: Array) -> Array:
-        probes = np.repeat(unit[None, :], n_vars + 1, axis=0)
-        steps = np.where(unit + step <= 1.0, step, -step)
-        probes[np.arange(1, n_vars + 1), np.arange(n_vars)] += steps
-        res = problem.residuals(variables.scale(probes))
-        return ((res[1:] - res[0]) / steps[:, None]).T
-
-    x0 = variables.unscale(best)
-    if np.all(np.abs(fun(x0)) < 1e6):
-        found = least_squares(fun, x0, jac=jac, bounds=(0.0, 1.0), x_scale="jac",
-                              xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=50 * n_vars)
-        tracker.evaluations += found.nfev * (n_vars + 2)
-        tracker.evaluate(variables.scale(found.x)[None, :])
+    The least squares' Jacobian is exact where the target allows it (a timed path:
+    implicit differentiation, :mod:`mechloop.synthesis.gradient`), else forward
+    differences (all V + 1 designs in one vectorized call)."""
+    x_best, ok = _least_squares(problem, tracker, best, 50 * len(problem.variables))
+    if ok:
+        tracker.evaluate(x_best[None, :])
 
     def evaluate(x: Array) -> float:
         return float(tracker.evaluate(x[None, :]).total[0])
 
-    _local(problem, variables.unscale(tracker.best_x), 100 * n_vars, evaluate)
+    before = tracker.evaluations
+    _local(problem, problem.variables.unscale(tracker.best_x), 100 * len(problem.variables),
+           evaluate)
+    tracker.polish_evaluations += tracker.evaluations - before
+
+
+def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
+                   max_nfev: int) -> tuple[Array, bool]:
+    """One least-squares run (SciPy's trust region reflective, in the unit box) from
+    ``start`` (SI); returns the design it ends at (SI) and whether it ran.  Raises
+    :class:`_Stop` past the run's deadline (the evaluations are counted)."""
+    from mechloop.synthesis.gradient import exact_jacobian_available, residual_jacobian
+
+    variables = problem.variables
+    n_vars = len(variables)
+    span = variables.high - variables.low
+    step = 1e-7
+    exact = exact_jacobian_available(problem)
+    tracker.polish_note = ("least squares with the exact Jacobian (implicit "
+                           "differentiation), then Nelder-Mead" if exact else
+                           "least squares with a forward-difference Jacobian, then "
+                           "Nelder-Mead")
+    def check_time() -> None:
+        if time.perf_counter() >= tracker.deadline:
+            raise _Stop("time budget spent")
+
+    def fun(unit: Array) -> Array:
+        check_time()
+        tracker.evaluations += 1
+        tracker.polish_evaluations += 1
+        return problem.residuals(variables.scale(unit)[None, :])[0]
+
+    def jac(unit: Array) -> Array:
+        check_time()
+        if exact:
+            tracker.evaluations += 1
+            tracker.polish_evaluations += 1
+            _, jacobian = residual_jacobian(problem, variables.scale(unit))
+            return jacobian * span[None, :]
+        probes = np.repeat(unit[None, :], n_vars + 1, axis=0)
+        steps = np.where(unit + step <= 1.0, step, -step)
+        probes[np.arange(1, n_vars + 1), np.arange(n_vars)] += steps
+        res = problem.residuals(variables.scale(probes))
+        tracker.evaluations += n_vars + 1
+        tracker.polish_evaluations += n_vars + 1
+        return ((res[1:] - res[0]) / steps[:, None]).T
+
+    x0 = np.clip(variables.unscale(start), 0.0, 1.0)
+    if not np.all(np.abs(fun(x0)) < 1e6):
+        return start, False
+    found = least_squares(fun, x0, jac=jac, bounds=(0.0, 1.0), x_scale="jac",
+                          xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=max_nfev)
+    return variables.scale(found.x), True
 
 
 class _OutOfTime(Exception):
