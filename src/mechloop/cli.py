@@ -725,6 +725,9 @@ def _print_objective(result: Any, objective: str) -> None:
     out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
               f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
               f"{result.method})")
+    for line in result.summary():
+        if line.startswith(("local search:", "note:", "feasible:")):
+            out.print(line)
 
 
 def _table(title: str, headers: list[str]) -> Table:

@@ -76,6 +76,7 @@ class _Tracker:
         self.budget = None if budget is None else budget * (1.0 - reserve)
         self.polish_evaluations = 0
         self.polish_note = ""
+        self.notes: list[str] = []
         self.evaluations = 0
         self.iteration = 0
         self.best_x: Array | None = None
@@ -165,10 +166,30 @@ class SynthesisResult:
     evaluations: int
     elapsed: float
     method: str
+    polish: str = ""
+    polish_evaluations: int = 0
+    notes: tuple[str, ...] = ()
 
     @property
     def feasible(self) -> bool:
+        """The feasibility verdict of the best design (the problem's own decision: every
+        mandatory condition holds)."""
         return bool(self.evaluation.feasible[0])
+
+    def summary(self) -> list[str]:
+        """The run in a few lines: method, evaluations, time, why it stopped, the polish,
+        every term of the best design and the feasibility verdict (the lines the CLI
+        prints and a written model's header repeats)."""
+        lines = [f"method: {self.method}; {self.evaluations} evaluations "
+                 f"({self.polish_evaluations} in the local search/polish) in "
+                 f"{self.elapsed:.2f} s; stopped: {self.stopped}"]
+        if self.polish:
+            lines.append(f"local search: {self.polish}")
+        lines += [f"note: {note}" for note in self.notes]
+        lines.append("terms: " + ", ".join(f"{k} = {v:.6g}" for k, v in self.terms().items()))
+        lines.append("feasible: " + ("yes, every mandatory condition holds" if self.feasible
+                                     else "no"))
+        return lines
 
     @property
     def q(self) -> float:
@@ -333,7 +354,9 @@ def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: 
                            model=problem.design_model(best),
                            history=pd.DataFrame(tracker.history), designs=designs,
                            stopped=stopped, evaluations=tracker.evaluations,
-                           elapsed=elapsed, method=method)
+                           elapsed=elapsed, method=method, polish=tracker.polish_note,
+                           polish_evaluations=tracker.polish_evaluations,
+                           notes=tuple(tracker.notes))
 
 
 def _run_de(problem: SynthesisProblem, search: Search, tracker: _Tracker, starts: Array,
@@ -491,9 +514,28 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
     x0 = np.clip(variables.unscale(start), 0.0, 1.0)
     if not np.all(np.abs(fun(x0)) < 1e6):
         return start, False
-    found = least_squares(fun, x0, jac=jac, bounds=(0.0, 1.0), x_scale="jac",
-                          xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=max_nfev)
-    return variables.scale(found.x), True
+    turn = periodic_columns(problem)
+    low, high = np.where(turn, -np.inf, 0.0), np.where(turn, np.inf, 1.0)
+    found = least_squares(lambda u: fun(_wrap_unit(u, turn)),
+                          x0, jac=lambda u: jac(_wrap_unit(u, turn)), bounds=(low, high),
+                          x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15,
+                          max_nfev=max_nfev)
+    return variables.scale(_wrap_unit(found.x, turn)), True
+
+
+def periodic_columns(problem: SynthesisProblem) -> NDArray[np.bool_]:
+    """The angle variables whose bounds span a full turn, ``(V,)``: the local search
+    moves them freely and takes them modulo the turn (a design at 359° is next to one at
+    1°), instead of stopping at the cut."""
+    variables = problem.variables
+    span = variables.high - variables.low
+    return np.array([variables.kind(i) == "angle" and span[i] >= 2 * np.pi * (1 - 1e-9)
+                     for i in range(len(variables))], dtype=bool)
+
+
+def _wrap_unit(unit: Array, turn: NDArray[np.bool_]) -> Array:
+    """Unit coordinates with the periodic columns taken modulo 1 (the turn)."""
+    return np.where(turn, np.mod(unit, 1.0), unit)
 
 
 class _OutOfTime(Exception):
@@ -530,9 +572,13 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
     searches from the best distinct samples, on Dask workers when asked; ``given``
     starting designs are the first local starts (then the best samples, ``search.starts``
     runs at least)."""
+    from mechloop.synthesis.gradient import exact_jacobian_available
     from mechloop.synthesis.parallel import map_tasks
 
     variables = problem.variables
+    if exact_jacobian_available(problem) and scheduler in (None, "serial"):
+        _run_multistart_lsq(problem, search, tracker, starts, rng, given)
+        return
     sampler = qmc.Sobol(len(variables), seed=rng)
     samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 4, 16))))
     before = tracker.best_total
@@ -554,6 +600,31 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
         before = tracker.best_total
         tracker.evaluate(x[None, :])
         tracker.evaluations += count - 1
+        tracker.generation_done(before)
+
+
+def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tracker,
+                        starts: Array, rng: np.random.Generator, given: bool) -> None:
+    """Multi-start by least squares with the exact Jacobian (a timed path): Sobol
+    samples (one vectorized call), then local least-squares runs from the best feasible
+    samples in order — ``search.starts`` at least, and with a time budget as many more as
+    it allows (one generation per run)."""
+    variables = problem.variables
+    sampler = qmc.Sobol(len(variables), seed=rng)
+    samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 64, 1024))))
+    before = tracker.best_total
+    tracker.evaluate(starts)
+    ev = tracker.evaluate(variables.scale(samples))
+    tracker.generation_done(before)
+    order = [i for i in np.argsort(ev.total) if ev.feasible[i]]
+    local = (list(variables.scale(np.clip(variables.unscale(starts), 0.0, 1.0)))
+             if given else []) + [variables.scale(samples[i]) for i in order]
+    limit = len(local) if tracker.budget is not None else min(len(local), search.starts)
+    for x0 in local[:limit]:
+        before = tracker.best_total
+        found, ok = _least_squares(problem, tracker, x0, 100 * len(variables))
+        if ok:
+            tracker.evaluate(found[None, :])
         tracker.generation_done(before)
 
 
