@@ -223,6 +223,9 @@ class Search(_Frozen):
     time: Number | None = Field(None, gt=0, description="time budget, s")
     polish: bool = Field(True, description="polish the best design by a local search")
     starts: int = Field(8, ge=1, description="multistart: local searches")
+    atlas: bool = Field(True, description="add starting designs from the atlas of four-bar "
+                        "coupler curves where the task is a four-bar path problem it applies "
+                        "to (see mechloop.synthesis.atlas)")
     start: dict[str, Scalar] | list[dict[str, Scalar]] | None = Field(
         None, description="starting design(s), e.g. a classical solution: {r1: 52.3, a1: "
         "40} or a list of them; names of vary, values in the model's units within the "

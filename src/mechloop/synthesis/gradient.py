@@ -117,4 +117,81 @@ def residual_jacobian(problem: SynthesisProblem, design: Array, step: float = 1e
     return res, jac
 
 
-__all__ = ["exact_jacobian_available", "point_tangents", "residual_jacobian"]
+
+
+
+#: The crank guard keeps the Grashof margin and the crank's lead over the other links
+#: above this share of the four links' total length.
+GUARD_SHARE = 0.01
+#: Weight of a guard row (a length in the model's unit times this).
+GUARD_WEIGHT = 10.0
+
+
+class CrankGuard:
+    """Rows that keep a local search off the edge of a four-bar's full crank rotation.
+
+    For a model with a four-bar contour (:func:`mechloop.synthesis.atlas.
+    fourbar_contour`) whose crank turns a full turn over the positions and whose links
+    are design variables, two residual rows: ``w · max(0, τ − m)`` for the Grashof margin
+    ``m = p + q − s − l`` and for the crank's lead ``min(other links) − crank``, with
+    ``τ`` = :data:`GUARD_SHARE` of the links' total and ``w`` = :data:`GUARD_WEIGHT`, in
+    the model's length unit, with their exact Jacobian.  They are zero wherever the
+    crank turns fully with some margin, so a design with zero error there keeps zero
+    residual; they only stop the least squares from sliding to the Grashof limit, where
+    the chain breaks (the designs it ends at are scored by the problem itself, without
+    these rows).
+    """
+
+    def __init__(self, problem: SynthesisProblem, vectors: tuple[int, int, int, int]):
+        from mechloop.model.units import to_si
+
+        self.problem = problem
+        self.names = [f"r{n}" for n in vectors]  # crank, coupler, rocker, frame
+        model = problem.model
+        self.fixed = np.array([to_si(model.vectors[n].r, "length", model.units.length)
+                               for n in vectors])
+
+    @classmethod
+    def of(cls, problem: SynthesisProblem) -> CrankGuard | None:
+        from mechloop.synthesis.atlas import fourbar_contour
+        from mechloop.synthesis.variables import input_range
+
+        found = fourbar_contour(problem.model)
+        if found is None or 1 not in problem.model.arguments:
+            return None
+        _, _, lowest, highest = input_range(problem.model)
+        if highest - lowest < 2 * np.pi * (1 - 1e-9):  # the crank need not turn fully
+            return None
+        guard = cls(problem, found[1:])
+        return guard if any(n in problem.variables.overrides(
+            problem.variables.low[None, :]) for n in guard.names) else None
+
+    def rows(self, design: Array) -> tuple[Array, Array]:
+        """The two rows ``(2,)`` and their Jacobian ``(2, V)`` (per SI unit)."""
+        variables = self.problem.variables
+        over = variables.overrides(design[None, :])
+        seeds, _ = override_seeds(self.problem.model, variables, design[None, :])
+        unit = self.problem.length_unit
+        lengths = np.array([over[n][0] if n in over else f
+                            for n, f in zip(self.names, self.fixed, strict=True)]) / unit
+        grads = np.array([seeds[n][:, 0, 0] if n in seeds else np.zeros(len(variables))
+                          for n in self.names]) / unit  # (4, V)
+        total = lengths.sum()
+        tau = GUARD_SHARE * total
+        i_max, i_min = int(np.argmax(lengths)), int(np.argmin(lengths))
+        g1 = np.ones(4)
+        g1[i_max] -= 2.0
+        g1[i_min] -= 2.0
+        m1 = float(g1 @ lengths)
+        j = 1 + int(np.argmin(lengths[1:]))
+        g2 = np.zeros(4)
+        g2[j], g2[0] = 1.0, -1.0
+        m2 = float(g2 @ lengths)
+        rows = np.zeros(2)
+        jac = np.zeros((2, len(variables)))
+        for k, (m, g) in enumerate(((m1, g1), (m2, g2))):
+            if tau - m > 0:
+                rows[k] = GUARD_WEIGHT * (tau - m)
+                jac[k] = GUARD_WEIGHT * ((GUARD_SHARE * np.ones(4) - g) @ grads)
+        return rows, jac
+__all__ = ["CrankGuard", "exact_jacobian_available", "point_tangents", "residual_jacobian"]

@@ -223,7 +223,8 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
                time_budget: float | None = None, polish: bool | None = None,
                progress: Callable[[Progress], None] | None = None,
                scheduler: str | None = None, keep: int = 10,
-               start: StartDesigns | None = None) -> SynthesisResult:
+               start: StartDesigns | None = None, atlas: bool | None = None
+               ) -> SynthesisResult:
     """Run the synthesis task of ``model`` (its ``synthesis:`` section).
 
     Keyword arguments override the task's ``search`` settings.  ``scheduler`` spreads the
@@ -242,13 +243,18 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
     them with a step of 0.1 of the box instead of 0.3 (restarts stay random), and the
     multi-start runs its first local searches from them (then from the best samples,
     ``search.starts`` runs at least).
+
+    ``atlas`` (default: the task's ``search.atlas``) adds starting designs from the
+    atlas of four-bar coupler curves (:mod:`mechloop.synthesis.atlas`) where the problem
+    is a four-bar path problem it applies to; the result's ``notes`` say how many, or why
+    it was skipped.
     """
     started = time.perf_counter()  # the budget counts from here, compiling included
     problem = SynthesisProblem(model)
     search = problem.task.search
     update = {k: v for k, v in {"method": method, "seed": seed, "iterations": iterations,
                                 "population": population, "time": time_budget,
-                                "polish": polish}.items() if v is not None}
+                                "polish": polish, "atlas": atlas}.items() if v is not None}
     if update:  # validated like the file's own settings (method, bounds of counts)
         search = type(search).model_validate({**search.model_dump(), **update})
     polishing = search.polish and search.method != "multistart"
@@ -257,15 +263,26 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
     rng = np.random.default_rng(search.seed)
     given = start_designs(problem, start)
     starts = current_values(model, problem.variables)[None, :] if given is None else given
+    has_starts = given is not None
+    if search.atlas:
+        from mechloop.synthesis.atlas import atlas_starts
+
+        found, why = atlas_starts(problem)
+        if found is None:
+            tracker.notes.append(f"atlas skipped: {why}")
+        else:
+            starts = found if given is None else np.vstack([given, found])
+            has_starts = True
+            tracker.notes.append(f"atlas: {len(found)} starting designs from the coupler-"
+                                 "curve atlas")
     stopped = "iteration limit"
     try:
         if search.method == "de":
-            _run_de(problem, search, tracker, starts, rng, given is not None)
+            _run_de(problem, search, tracker, starts, rng, has_starts)
         elif search.method == "cmaes":
-            _run_cmaes(problem, search, tracker, starts, rng, given is not None)
+            _run_cmaes(problem, search, tracker, starts, rng, has_starts)
         else:
-            _run_multistart(problem, search, tracker, starts, rng, scheduler,
-                            given is not None)
+            _run_multistart(problem, search, tracker, starts, rng, scheduler, has_starts)
     except _Stop as stop:
         stopped = str(stop)
     except KeyboardInterrupt:
@@ -475,7 +492,11 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
     """One least-squares run (SciPy's trust region reflective, in the unit box) from
     ``start`` (SI); returns the design it ends at (SI) and whether it ran.  Raises
     :class:`_Stop` past the run's deadline (the evaluations are counted)."""
-    from mechloop.synthesis.gradient import exact_jacobian_available, residual_jacobian
+    from mechloop.synthesis.gradient import (
+        CrankGuard,
+        exact_jacobian_available,
+        residual_jacobian,
+    )
 
     variables = problem.variables
     n_vars = len(variables)
@@ -490,18 +511,28 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
         if time.perf_counter() >= tracker.deadline:
             raise _Stop("time budget spent")
 
+    guard = CrankGuard.of(problem) if exact else None
+    if guard is not None:
+        tracker.polish_note += ("; the least squares keeps the four-bar's crank off the "
+                                "Grashof limit (guard rows, zero inside)")
+
     def fun(unit: Array) -> Array:
         check_time()
         tracker.evaluations += 1
         tracker.polish_evaluations += 1
-        return problem.residuals(variables.scale(unit)[None, :])[0]
+        x = variables.scale(unit)
+        res = problem.residuals(x[None, :])[0]
+        return res if guard is None else np.concatenate([res, guard.rows(x)[0]])
 
     def jac(unit: Array) -> Array:
         check_time()
         if exact:
             tracker.evaluations += 1
             tracker.polish_evaluations += 1
-            _, jacobian = residual_jacobian(problem, variables.scale(unit))
+            x = variables.scale(unit)
+            _, jacobian = residual_jacobian(problem, x)
+            if guard is not None:
+                jacobian = np.vstack([jacobian, guard.rows(x)[1]])
             return jacobian * span[None, :]
         probes = np.repeat(unit[None, :], n_vars + 1, axis=0)
         steps = np.where(unit + step <= 1.0, step, -step)
@@ -518,8 +549,8 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
     low, high = np.where(turn, -np.inf, 0.0), np.where(turn, np.inf, 1.0)
     found = least_squares(lambda u: fun(_wrap_unit(u, turn)),
                           x0, jac=lambda u: jac(_wrap_unit(u, turn)), bounds=(low, high),
-                          x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15,
-                          max_nfev=max_nfev)
+                          x_scale=1.0 if exact else "jac", xtol=1e-15, ftol=1e-15,
+                          gtol=1e-15, max_nfev=max_nfev)
     return variables.scale(_wrap_unit(found.x, turn)), True
 
 
@@ -622,7 +653,7 @@ def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tra
     limit = len(local) if tracker.budget is not None else min(len(local), search.starts)
     for x0 in local[:limit]:
         before = tracker.best_total
-        found, ok = _least_squares(problem, tracker, x0, 100 * len(variables))
+        found, ok = _least_squares(problem, tracker, x0, max(200, 20 * len(variables)))
         if ok:
             tracker.evaluate(found[None, :])
         tracker.generation_done(before)
