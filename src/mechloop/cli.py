@@ -759,11 +759,16 @@ def synthesize(
     iterations: Annotated[int | None, typer.Option(help="number of generations at most "
                           "(default: the model's search.iterations)")] = None,
     time_budget: Annotated[float | None, typer.Option("--time", help="time budget in "
-                           "seconds; a run stopped by time depends on the machine's speed "
+                           "seconds, a hard wall-clock limit of the whole run, polish "
+                           "included; a run stopped by time depends on the machine's speed "
                            "(default: the model's search.time, else none)")] = None,
     polish: Annotated[bool | None, typer.Option("--polish/--no-polish", help="polish the "
                       "best design by least squares and Nelder–Mead at the end (default: "
                       "the model's search.polish, else yes)", show_default=False)] = None,
+    atlas: Annotated[bool | None, typer.Option("--atlas/--no-atlas", help="add starting "
+                     "designs from the atlas of four-bar coupler curves where the task is a "
+                     "four-bar path problem it applies to (default: the model's "
+                     "search.atlas, else yes)", show_default=False)] = None,
     scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
                          "or a dask scheduler address tcp://host:8786 (default: chosen by "
                          "the work's size)")] = None,
@@ -815,7 +820,7 @@ def synthesize(
         try:
             result = run(m, method=method, seed=seed, iterations=iterations,
                          time_budget=time_budget, polish=polish, progress=report,
-                         scheduler=scheduler)
+                         scheduler=scheduler, atlas=atlas)
         except ModelError as exc:
             raise locate(exc, model) from None
     rows = _table("Best design", ["variable", "value", "unit"])
