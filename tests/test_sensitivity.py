@@ -113,3 +113,18 @@ def test_time_budget_holds_with_the_polish() -> None:
     assert result.stopped == "time budget spent"
     assert result.feasible and result.elapsed <= elapsed
     assert "exact Jacobian" in result.polish
+
+
+def test_multistart_least_squares_reports_itself() -> None:
+    """Multistart on a timed path runs least squares with the exact Jacobian: a short
+    budget gives a feasible design better than every one of the first samples, and the
+    result says how it was found and what it is worth."""
+    model = load_model(FIVE)
+    result = synthesize(model, method="multistart", time_budget=3.0, seed=2, atlas=False)
+    assert result.feasible and result.method == "multistart"
+    assert result.q < float(result.history["q"].iloc[0])
+    assert "exact Jacobian" in result.polish and result.polish_evaluations > 0
+    assert "atlas" not in " ".join(result.notes)
+    lines = result.summary()
+    assert lines[0].startswith("method: multistart;") and lines[-1].startswith("feasible: yes")
+    assert any(f"Q = {result.q:.6g}" in line for line in lines)

@@ -474,9 +474,12 @@ def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: S
     The least squares' Jacobian is exact where the target allows it (a timed path:
     implicit differentiation, :mod:`mechloop.synthesis.gradient`), else forward
     differences (all V + 1 designs in one vectorized call)."""
-    x_best, ok = _least_squares(problem, tracker, best, 50 * len(problem.variables))
+    x_best, ok = _least_squares(problem, tracker, best, 50 * len(problem.variables),
+                                _polish_deadline(tracker))
     if ok:
         tracker.evaluate(x_best[None, :])
+
+    tracker.polish_note += ", then Nelder-Mead"
 
     def evaluate(x: Array) -> float:
         return float(tracker.evaluate(x[None, :]).total[0])
@@ -487,11 +490,20 @@ def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: S
     tracker.polish_evaluations += tracker.evaluations - before
 
 
+def _polish_deadline(tracker: _Tracker) -> float:
+    """When the polish's least squares must hand back its best design: the hard
+    deadline less the margin kept for the final evaluations."""
+    if not math.isfinite(tracker.deadline):
+        return math.inf
+    budget = tracker.deadline - tracker.started
+    return tracker.deadline - MARGIN_SHARE * budget
+
+
 def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
-                   max_nfev: int) -> tuple[Array, bool]:
+                   max_nfev: int, deadline: float) -> tuple[Array, bool]:
     """One least-squares run (SciPy's trust region reflective, in the unit box) from
-    ``start`` (SI); returns the design it ends at (SI) and whether it ran.  Raises
-    :class:`_Stop` past the run's deadline (the evaluations are counted)."""
+    ``start`` (SI); returns the design it ends at (SI) — at ``deadline``
+    (``perf_counter``) the best one it has seen — and whether it ran."""
     from mechloop.synthesis.gradient import (
         CrankGuard,
         exact_jacobian_available,
@@ -504,12 +516,13 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
     step = 1e-7
     exact = exact_jacobian_available(problem)
     tracker.polish_note = ("least squares with the exact Jacobian (implicit "
-                           "differentiation), then Nelder-Mead" if exact else
-                           "least squares with a forward-difference Jacobian, then "
-                           "Nelder-Mead")
+                           "differentiation)" if exact else
+                           "least squares with a forward-difference Jacobian")
+    seen: list = [start, math.inf]  # the best design seen and its sum of squares
+
     def check_time() -> None:
-        if time.perf_counter() >= tracker.deadline:
-            raise _Stop("time budget spent")
+        if time.perf_counter() >= deadline:
+            raise _OutOfTime
 
     guard = CrankGuard.of(problem) if exact else None
     if guard is not None:
@@ -522,7 +535,12 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
         tracker.polish_evaluations += 1
         x = variables.scale(unit)
         res = problem.residuals(x[None, :])[0]
-        return res if guard is None else np.concatenate([res, guard.rows(x)[0]])
+        if guard is not None:
+            res = np.concatenate([res, guard.rows(x)[0]])
+        size = float(res @ res)
+        if size < seen[1]:
+            seen[:] = [x, size]
+        return res
 
     def jac(unit: Array) -> Array:
         check_time()
@@ -543,14 +561,17 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
         return ((res[1:] - res[0]) / steps[:, None]).T
 
     x0 = np.clip(variables.unscale(start), 0.0, 1.0)
-    if not np.all(np.abs(fun(x0)) < 1e6):
-        return start, False
-    turn = periodic_columns(problem)
-    low, high = np.where(turn, -np.inf, 0.0), np.where(turn, np.inf, 1.0)
-    found = least_squares(lambda u: fun(_wrap_unit(u, turn)),
-                          x0, jac=lambda u: jac(_wrap_unit(u, turn)), bounds=(low, high),
-                          x_scale=1.0 if exact else "jac", xtol=1e-15, ftol=1e-15,
-                          gtol=1e-15, max_nfev=max_nfev)
+    try:
+        if not np.all(np.abs(fun(x0)) < 1e6):
+            return start, False
+        turn = periodic_columns(problem)
+        low, high = np.where(turn, -np.inf, 0.0), np.where(turn, np.inf, 1.0)
+        found = least_squares(lambda u: fun(_wrap_unit(u, turn)),
+                              x0, jac=lambda u: jac(_wrap_unit(u, turn)),
+                              bounds=(low, high), x_scale=1.0 if exact else "jac",
+                              xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=max_nfev)
+    except _OutOfTime:
+        return seen[0], math.isfinite(seen[1])
     return variables.scale(_wrap_unit(found.x, turn)), True
 
 
@@ -642,7 +663,7 @@ def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tra
     it allows (one generation per run)."""
     variables = problem.variables
     sampler = qmc.Sobol(len(variables), seed=rng)
-    samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 64, 1024))))
+    samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 16, 1024))))
     before = tracker.best_total
     tracker.evaluate(starts)
     ev = tracker.evaluate(variables.scale(samples))
@@ -653,7 +674,10 @@ def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tra
     limit = len(local) if tracker.budget is not None else min(len(local), search.starts)
     for x0 in local[:limit]:
         before = tracker.best_total
-        found, ok = _least_squares(problem, tracker, x0, max(200, 20 * len(variables)))
+        soft = (math.inf if tracker.budget is None
+                else tracker.started + tracker.budget)
+        found, ok = _least_squares(problem, tracker, x0, max(200, 20 * len(variables)),
+                                   soft)
         if ok:
             tracker.evaluate(found[None, :])
         tracker.generation_done(before)
