@@ -122,7 +122,7 @@ def residual_jacobian(problem: SynthesisProblem, design: Array, step: float = 1e
 
 #: The crank guard keeps the Grashof margin and the crank's lead over the other links
 #: above this share of the four links' total length.
-GUARD_SHARE = 0.01
+GUARD_SHARE = 1e-3
 #: Weight of a guard row (a length in the model's unit times this).
 GUARD_WEIGHT = 10.0
 

@@ -500,10 +500,14 @@ def _polish_deadline(tracker: _Tracker) -> float:
 
 
 def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
-                   max_nfev: int, deadline: float) -> tuple[Array, bool]:
+                   max_nfev: int, deadline: float, guarded: bool = False
+                   ) -> tuple[Array, bool]:
     """One least-squares run (SciPy's trust region reflective, in the unit box) from
     ``start`` (SI); returns the design it ends at (SI) — at ``deadline``
-    (``perf_counter``) the best one it has seen — and whether it ran."""
+    (``perf_counter``) the best one it has seen — and whether it ran.  ``guarded``: add
+    the crank guard's rows where it applies (the multistart's runs from afar; the polish
+    of a design already found goes without, so that it may reach a design close to the
+    Grashof limit)."""
     from mechloop.synthesis.gradient import (
         CrankGuard,
         exact_jacobian_available,
@@ -524,7 +528,7 @@ def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
         if time.perf_counter() >= deadline:
             raise _OutOfTime
 
-    guard = CrankGuard.of(problem) if exact else None
+    guard = CrankGuard.of(problem) if exact and guarded else None
     if guard is not None:
         tracker.polish_note += ("; the least squares keeps the four-bar's crank off the "
                                 "Grashof limit (guard rows, zero inside)")
@@ -676,8 +680,8 @@ def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tra
         before = tracker.best_total
         soft = (math.inf if tracker.budget is None
                 else tracker.started + tracker.budget)
-        found, ok = _least_squares(problem, tracker, x0, max(200, 20 * len(variables)),
-                                   soft)
+        found, ok = _least_squares(problem, tracker, x0, max(150, 10 * len(variables)),
+                                   soft, guarded=True)
         if ok:
             tracker.evaluate(found[None, :])
         tracker.generation_done(before)
