@@ -208,7 +208,7 @@ def fmt(value: float) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", type=int, default=5)
-    parser.add_argument("--method", default="multistart")
+    parser.add_argument("--method", default="auto")
     parser.add_argument("--compare", action="store_true",
                         help="also compare DE, CMA-ES and multistart, with/without atlas")
     parser.add_argument("--compare-seeds", type=int, default=2)

@@ -752,7 +752,7 @@ def synthesize(
                     "default: none")] = None,
     fit: Annotated[Path | None, typer.Option(help="the result against its targets "
                    "(.png, .svg, .pdf); default: none")] = None,
-    method: Annotated[str | None, typer.Option(help="de, cmaes or multistart (default: the "
+    method: Annotated[str | None, typer.Option(help="auto, de, cmaes or multistart (default: the "
                       "model's search.method, else de)")] = None,
     seed: Annotated[int | None, typer.Option(help="random seed (default: the model's "
                     "search.seed)")] = None,
@@ -795,8 +795,8 @@ def synthesize(
     from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
     from mechloop.views.synthesis import plot_convergence, plot_fit
 
-    if method is not None and method not in ("de", "cmaes", "multistart"):
-        raise typer.BadParameter(f"{method!r}: use de, cmaes or multistart",
+    if method is not None and method not in ("auto", "de", "cmaes", "multistart"):
+        raise typer.BadParameter(f"{method!r}: use auto, de, cmaes or multistart",
                                  param_hint="--method")
     _outputs(model, force, (output, (".yaml", ".yml", ".json")), (table, SUFFIXES),
              (plot, FIGURE_SUFFIXES), (fit, FIGURE_SUFFIXES))

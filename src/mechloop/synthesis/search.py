@@ -246,8 +246,8 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
 
     ``atlas`` (default: the task's ``search.atlas``) adds starting designs from the
     atlas of four-bar coupler curves (:mod:`mechloop.synthesis.atlas`) where the problem
-    is a four-bar path problem it applies to; the result's ``notes`` say how many, or why
-    it was skipped.
+    is a four-bar path problem it applies to and no starting design is given; the
+    result's ``notes`` say how many, or why it was skipped.
     """
     started = time.perf_counter()  # the budget counts from here, compiling included
     problem = SynthesisProblem(model)
@@ -257,21 +257,28 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
                                 "polish": polish, "atlas": atlas}.items() if v is not None}
     if update:  # validated like the file's own settings (method, bounds of counts)
         search = type(search).model_validate({**search.model_dump(), **update})
+    method, why = choose_method(problem, search.method)
+    if why:
+        search = type(search).model_validate({**search.model_dump(), "method": method})
     polishing = search.polish and search.method != "multistart"
     tracker = _Tracker(problem, search, keep, progress, search.time, started,
                        POLISH_SHARE if polishing else MARGIN_SHARE)
+    if why:
+        tracker.notes.append(f"method auto: {method} ({why})")
     rng = np.random.default_rng(search.seed)
     given = start_designs(problem, start)
     starts = current_values(model, problem.variables)[None, :] if given is None else given
     has_starts = given is not None
-    if search.atlas:
+    if search.atlas and given is not None:
+        tracker.notes.append("atlas not used: starting designs are given")
+    elif search.atlas:
         from mechloop.synthesis.atlas import atlas_starts
 
         found, why = atlas_starts(problem)
         if found is None:
             tracker.notes.append(f"atlas skipped: {why}")
         else:
-            starts = found if given is None else np.vstack([given, found])
+            starts = np.vstack([starts, found])  # the model's own design first
             has_starts = True
             tracker.notes.append(f"atlas: {len(found)} starting designs from the coupler-"
                                  "curve atlas")
@@ -295,6 +302,24 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
         except _Stop:
             tracker.polish_note += " (stopped by the time budget)"
     return _result(problem, tracker, stopped, search.method)
+
+
+def choose_method(problem: SynthesisProblem, method: str) -> tuple[str, str]:
+    """The method ``auto`` stands for on ``problem``, and why (``(method, '')`` for any
+    other).  Measured on the bundled four-bar path problems
+    (``benchmarks/bench_synthesis_problems.py --compare``): the multistart by exact least
+    squares from the atlas's starting designs where the atlas applies; CMA-ES on a timed
+    path it does not apply to; DE, the earlier default, elsewhere (not measured)."""
+    if method != "auto":
+        return method, ""
+    from mechloop.synthesis.atlas import recognize
+    from mechloop.synthesis.gradient import exact_jacobian_available
+
+    if exact_jacobian_available(problem):
+        if recognize(problem.model, problem)[0] is not None:
+            return "multistart", "a four-bar path the atlas applies to"
+        return "cmaes", "a timed path the atlas does not apply to"
+    return "de", "no timed path"
 
 
 def start_designs(problem: SynthesisProblem, start: StartDesigns | None = None
