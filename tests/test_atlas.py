@@ -35,14 +35,14 @@ def test_atlas_size_and_crank_rockers(small) -> None:
     lengths = np.stack([np.ones_like(g), g, c, k], axis=1)
     assert np.all(lengths.min(axis=1) == 1.0)
     assert np.all(lengths.max(axis=1) + 1.0 < lengths.sum(axis=1) - lengths.max(axis=1) - 1)
-    assert small.params.shape[0] > 1900 and np.isfinite(small.curves).all()
+    assert small.params.shape[0] > 1900 and np.isfinite(small.curves()).all()
 
 
 def test_descriptors_are_invariant(small) -> None:
     """A curve moved, turned, scaled and started elsewhere has the same descriptors
     (under one of the two start normalizations), and another curve does not."""
     rng = np.random.default_rng(1)
-    curves = small.curves[:50]
+    curves = small.curves(slice(0, 50))
     base = descriptors(coefficients(curves))
     a = 3.7 * np.exp(1.1j)
     moved = np.roll(a * curves + (5 - 2j), rng.integers(1, 60), axis=1)

@@ -9,7 +9,8 @@ Fourier descriptors invariant to position, orientation, scale and starting point
 (:func:`descriptors`: the curve resampled by arc length, its complex Fourier
 coefficients ``Z_k`` divided by ``Z_1``, the start turned so that ``Z_{-1}/Z_1`` is real
 and positive).  It is built once in a few seconds, vectorized, and cached on disk
-(``platformdirs.user_cache_dir('mechloop')``).
+(``platformdirs.user_cache_dir('mechloop')``, or the directory ``MECHLOOP_CACHE_DIR``
+names; about 20 MB).
 
 A query (:func:`atlas_starts`) describes the targets the same way (a point set as the
 closed polygon through the points in order), takes the nearest curves in descriptor
@@ -54,22 +55,26 @@ HARMONICS = 6
 #: Crank angles per turn when a matched curve is mapped onto the targets.
 DENSE = 720
 #: Version of the atlas's recipe (part of the cache file's name).
-VERSION = 1
+VERSION = 2
 
 
 @dataclass(frozen=True)
 class Atlas:
-    """``params`` ``(M, 5)``: g, c, k, px, py of each normalized mechanism; ``curves``
-    ``(M, SAMPLES)`` its coupler curve (x + iy) at crank angles ``angles``;
-    ``features`` ``(M, F)`` its descriptors."""
+    """``params`` ``(M, 5)``: g, c, k, px, py of each normalized mechanism; ``features``
+    ``(M, F)`` the descriptors of its coupler curve (the curves themselves are computed
+    again when needed, :meth:`curves`, so the cache holds only these two arrays)."""
 
     params: Array
-    curves: Complex
     features: Array
 
     @property
     def angles(self) -> Array:
         return np.linspace(0.0, 2 * np.pi, SAMPLES, endpoint=False)
+
+    def curves(self, rows: NDArray[np.int64] | slice = slice(None)) -> Complex:
+        """The coupler curves of mechanisms ``rows`` at the ``SAMPLES`` crank angles,
+        ``(len(rows), SAMPLES)`` (x + iy)."""
+        return coupler_curves(self.params[rows], self.angles)[0]
 
 
 def coupler_curves(params: Array, angles: Array) -> tuple[Complex, NDArray[np.bool_]]:
@@ -158,7 +163,7 @@ def build_atlas(count: int = ATLAS_SIZE, seed: int = 0) -> Atlas:
     curves, ok = coupler_curves(params, angles)
     good = ok.all(axis=1)
     params, curves = params[good], curves[good]
-    return Atlas(params, curves, descriptors(coefficients(curves)))
+    return Atlas(params, descriptors(coefficients(curves)))
 
 
 def cache_path() -> Path:
@@ -182,7 +187,7 @@ def load_atlas() -> Atlas:
     if path.exists():
         try:
             with np.load(path) as data:
-                atlas = Atlas(data["params"], data["curves"], data["features"])
+                atlas = Atlas(data["params"], data["features"])
         except (OSError, ValueError, KeyError):
             atlas = None
     if atlas is None:
@@ -190,8 +195,7 @@ def load_atlas() -> Atlas:
         try:
             path.parent.mkdir(parents=True, exist_ok=True)
             tmp = path.with_suffix(f".{os.getpid()}.tmp.npz")
-            np.savez(tmp, params=atlas.params, curves=atlas.curves,
-                     features=atlas.features)
+            np.savez(tmp, params=atlas.params, features=atlas.features)
             os.replace(tmp, path)
         except OSError:
             pass
@@ -340,7 +344,7 @@ def match(atlas: Atlas, targets: Complex, count: int = 200, rounds: int = 6
         _, shift_t = _normalized(coef, flip)
         ab.append(shift_t[0])
     rows = np.concatenate(rows_list)
-    curves = atlas.curves[rows]
+    curves = atlas.curves(rows)
     # initial similarity: the coefficients (start normalized) of both curves
     ccoef = coefficients(curves)
     a0, b0 = [], []
