@@ -50,6 +50,7 @@ WITHOUT_BODIES = {
     "four_bar_path_synthesis.yaml",
     "hydraulic_rocker.yaml", "log10_function_generator.yaml", "six_bar.yaml",
     "six_points_free_timing_synthesis.yaml", "six_points_line_synthesis.yaml",
+    "six_points_timing_synthesis.yaml",
     "slider_crank_stroke_synthesis.yaml",
     "sparse_argument.yaml", "v_engine.yaml",
 }
