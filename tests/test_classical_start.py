@@ -181,9 +181,13 @@ def test_without_a_start_the_models_own_design_goes_first(monkeypatch):
     model = mechloop.load_model(PATH)
     problem = SynthesisProblem(model)
     spy = _Spy(monkeypatch)
-    synthesize(model, method="de", seed=2, iterations=1, polish=False)
+    synthesize(model, method="de", seed=2, iterations=1, polish=False, atlas=False)
     own = search_module.current_values(model, problem.variables)
     np.testing.assert_array_equal(spy.calls[0], own[None, :])
+    spy.calls.clear()  # with the atlas, the own design is the first starting design
+    synthesize(model, method="de", seed=2, iterations=1, polish=False)
+    np.testing.assert_array_equal(spy.calls[1][:1], own[None, :])
+    assert len(spy.calls[1]) > 1
 
 
 # ------------------------------------------------- the slider-crank: stroke and K

@@ -140,7 +140,8 @@ def test_deviations_equal_circle_intersections(seed):
 @pytest.fixture(scope="module")
 def searched():
     """A short search of the example (a few seconds)."""
-    return synthesize(mechloop.load_model(FREE), seed=1, population=60, iterations=120)
+    return synthesize(mechloop.load_model(FREE), method="de", seed=1, population=60,
+                      iterations=120)
 
 
 def test_written_result_passes_through_targets_at_reported_inputs(searched, tmp_path):

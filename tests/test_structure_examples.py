@@ -46,10 +46,12 @@ HAND = {
 }
 
 WITHOUT_BODIES = {
-    "crank_slider.yaml", "five_points_timing_synthesis.yaml", "four_bar.yaml",
+    "crank_slider.yaml", "eighteen_points_timing_synthesis.yaml",
+    "five_points_timing_synthesis.yaml", "four_bar.yaml",
     "four_bar_path_synthesis.yaml", "four_bar_shape_synthesis.yaml",
     "hydraulic_rocker.yaml", "log10_function_generator.yaml", "six_bar.yaml",
     "six_points_free_timing_synthesis.yaml", "six_points_line_synthesis.yaml",
+    "six_points_timing_synthesis.yaml",
     "slider_crank_stroke_synthesis.yaml",
     "sparse_argument.yaml", "v_engine.yaml",
 }

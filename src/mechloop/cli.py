@@ -729,6 +729,9 @@ def _print_objective(result: Any, objective: str) -> None:
     out.print(f"{verdict}; {result.stopped}; {result.evaluations} designs in "
               f"{result.elapsed:.1f} s ({result.evaluations_per_second:.0f}/s, "
               f"{result.method})")
+    for line in result.summary():
+        if line.startswith(("local search:", "note:", "feasible:")):
+            out.print(line)
 
 
 def _table(title: str, headers: list[str]) -> Table:
@@ -753,18 +756,23 @@ def synthesize(
                     "default: none")] = None,
     fit: Annotated[Path | None, typer.Option(help="the result against its targets "
                    "(.png, .svg, .pdf); default: none")] = None,
-    method: Annotated[str | None, typer.Option(help="de, cmaes or multistart (default: the "
+    method: Annotated[str | None, typer.Option(help="auto, de, cmaes or multistart (default: the "
                       "model's search.method, else de)")] = None,
     seed: Annotated[int | None, typer.Option(help="random seed (default: the model's "
                     "search.seed)")] = None,
     iterations: Annotated[int | None, typer.Option(help="number of generations at most "
                           "(default: the model's search.iterations)")] = None,
     time_budget: Annotated[float | None, typer.Option("--time", help="time budget in "
-                           "seconds; a run stopped by time depends on the machine's speed "
+                           "seconds, a hard wall-clock limit of the whole run, polish "
+                           "included; a run stopped by time depends on the machine's speed "
                            "(default: the model's search.time, else none)")] = None,
     polish: Annotated[bool | None, typer.Option("--polish/--no-polish", help="polish the "
                       "best design by least squares and Nelder–Mead at the end (default: "
                       "the model's search.polish, else yes)", show_default=False)] = None,
+    atlas: Annotated[bool | None, typer.Option("--atlas/--no-atlas", help="add starting "
+                     "designs from the atlas of four-bar coupler curves where the task is a "
+                     "four-bar path problem it applies to (default: the model's "
+                     "search.atlas, else yes)", show_default=False)] = None,
     scheduler: Annotated[str | None, typer.Option(help="multistart only: serial, processes "
                          "or a dask scheduler address tcp://host:8786 (default: chosen by "
                          "the work's size)")] = None,
@@ -791,8 +799,8 @@ def synthesize(
     from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
     from mechloop.views.synthesis import plot_convergence, plot_fit
 
-    if method is not None and method not in ("de", "cmaes", "multistart"):
-        raise typer.BadParameter(f"{method!r}: use de, cmaes or multistart",
+    if method is not None and method not in ("auto", "de", "cmaes", "multistart"):
+        raise typer.BadParameter(f"{method!r}: use auto, de, cmaes or multistart",
                                  param_hint="--method")
     _outputs(model, force, (output, (".yaml", ".yml", ".json")), (table, SUFFIXES),
              (plot, FIGURE_SUFFIXES), (fit, FIGURE_SUFFIXES))
@@ -816,7 +824,7 @@ def synthesize(
         try:
             result = run(m, method=method, seed=seed, iterations=iterations,
                          time_budget=time_budget, polish=polish, progress=report,
-                         scheduler=scheduler)
+                         scheduler=scheduler, atlas=atlas)
         except ModelError as exc:
             raise locate(exc, model) from None
     rows = _table("Best design", ["variable", "value", "unit"])

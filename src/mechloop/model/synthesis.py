@@ -238,7 +238,10 @@ class Criterion(_Frozen):
 class Search(_Frozen):
     """Search strategy and stopping rules."""
 
-    method: Literal["de", "cmaes", "multistart"] = "de"
+    method: Literal["auto", "de", "cmaes", "multistart"] = Field(
+        "auto", description="auto (chosen by the problem, measured on the bundled "
+        "four-bar path problems: multistart where the coupler-curve atlas applies, CMA-ES "
+        "on another timed path, DE otherwise), de, cmaes or multistart")
     seed: int | None = 1
     population: int = Field(40, ge=4, description="designs per generation")
     iterations: int = Field(300, ge=1, description="generations at most")
@@ -248,6 +251,9 @@ class Search(_Frozen):
     time: Number | None = Field(None, gt=0, description="time budget, s")
     polish: bool = Field(True, description="polish the best design by a local search")
     starts: int = Field(8, ge=1, description="multistart: local searches")
+    atlas: bool = Field(True, description="add starting designs from the atlas of four-bar "
+                        "coupler curves where the task is a four-bar path problem it applies "
+                        "to and no start is given (see mechloop.synthesis.atlas)")
     start: dict[str, Scalar] | list[dict[str, Scalar]] | None = Field(
         None, description="starting design(s), e.g. a classical solution: {r1: 52.3, a1: "
         "40} or a list of them; names of vary, values in the model's units within the "

@@ -67,6 +67,8 @@ def write_model(result: SynthesisResult, path: str | os.PathLike[str], *,
 
         text = yaml.safe_dump(model_to_data(result.model), sort_keys=False,
                               allow_unicode=True)
+    if not json_form:  # how the design was found, and its verdict
+        text = "".join(f"# {line}\n" for line in result.summary()) + text
     if inputs and not json_form:
         unit = result.problem.variables.units[result.problem.variables.input_columns[0]]
         lines = [f"# free timing: target k is reached at argument 1 = input@targetk ({unit})"]

@@ -48,6 +48,13 @@ class Progress:
     feasible: bool
 
 
+#: Share of a time budget kept for the final polish (DE and CMA-ES with polish), and the
+#: margin kept otherwise (the final evaluation and the result's assembly): the whole run,
+#: polish included, stays within the budget (the polish stops at the budget's end).
+POLISH_SHARE = 0.1
+MARGIN_SHARE = 0.02
+
+
 class _Stop(Exception):
     """Raised inside the search to end it; carries the reason."""
 
@@ -56,13 +63,20 @@ class _Tracker:
     """Counts evaluations, keeps the best designs, applies the stopping rules."""
 
     def __init__(self, problem: SynthesisProblem, search: Search, keep: int,
-                 progress: Callable[[Progress], None] | None, budget: float | None):
+                 progress: Callable[[Progress], None] | None, budget: float | None,
+                 started: float | None = None, reserve: float = 0.0):
         self.problem = problem
         self.search = search
         self.keep = keep
         self.progress = progress
-        self.started = time.perf_counter()
-        self.budget = budget
+        self.started = time.perf_counter() if started is None else started
+        # the hard wall-clock limit of the whole run (perf_counter, s), and the part of
+        # the budget the global phase may use (the rest is kept for the polish)
+        self.deadline = math.inf if budget is None else self.started + budget
+        self.budget = None if budget is None else budget * (1.0 - reserve)
+        self.polish_evaluations = 0
+        self.polish_note = ""
+        self.notes: list[str] = []
         self.evaluations = 0
         self.iteration = 0
         self.best_x: Array | None = None
@@ -78,6 +92,8 @@ class _Tracker:
 
     def evaluate(self, designs: Array) -> Evaluation:
         """Evaluate a generation (SI designs ``(D, V)``) and remember the best."""
+        if time.perf_counter() >= self.deadline:
+            raise _Stop("time budget spent")
         designs = self.problem.variables.clip(np.atleast_2d(designs))
         ev = self.problem.evaluate(designs)
         self.evaluations += designs.shape[0]
@@ -149,10 +165,30 @@ class SynthesisResult:
     evaluations: int
     elapsed: float
     method: str
+    polish: str = ""
+    polish_evaluations: int = 0
+    notes: tuple[str, ...] = ()
 
     @property
     def feasible(self) -> bool:
+        """The feasibility verdict of the best design (the problem's own decision: every
+        mandatory condition holds)."""
         return bool(self.evaluation.feasible[0])
+
+    def summary(self) -> list[str]:
+        """The run in a few lines: method, evaluations, time, why it stopped, the polish,
+        every term of the best design and the feasibility verdict (the lines the CLI
+        prints and a written model's header repeats)."""
+        lines = [f"method: {self.method}; {self.evaluations} evaluations "
+                 f"({self.polish_evaluations} in the local search/polish) in "
+                 f"{self.elapsed:.2f} s; stopped: {self.stopped}"]
+        if self.polish:
+            lines.append(f"local search: {self.polish}")
+        lines += [f"note: {note}" for note in self.notes]
+        lines.append("terms: " + ", ".join(f"{k} = {v:.6g}" for k, v in self.terms().items()))
+        lines.append("feasible: " + ("yes, every mandatory condition holds" if self.feasible
+                                     else "no"))
+        return lines
 
     @property
     def q(self) -> float:
@@ -186,7 +222,8 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
                time_budget: float | None = None, polish: bool | None = None,
                progress: Callable[[Progress], None] | None = None,
                scheduler: str | None = None, keep: int = 10,
-               start: StartDesigns | None = None) -> SynthesisResult:
+               start: StartDesigns | None = None, atlas: bool | None = None
+               ) -> SynthesisResult:
     """Run the synthesis task of ``model`` (its ``synthesis:`` section).
 
     Keyword arguments override the task's ``search`` settings.  ``scheduler`` spreads the
@@ -205,38 +242,83 @@ def synthesize(model: Model, *, method: str | None = None, seed: int | None = No
     them with a step of 0.1 of the box instead of 0.3 (restarts stay random), and the
     multi-start runs its first local searches from them (then from the best samples,
     ``search.starts`` runs at least).
+
+    ``atlas`` (default: the task's ``search.atlas``) adds starting designs from the
+    atlas of four-bar coupler curves (:mod:`mechloop.synthesis.atlas`) where the problem
+    is a four-bar path problem it applies to and no starting design is given; the
+    result's ``notes`` say how many, or why it was skipped.
     """
+    started = time.perf_counter()  # the budget counts from here, compiling included
     problem = SynthesisProblem(model)
     search = problem.task.search
     update = {k: v for k, v in {"method": method, "seed": seed, "iterations": iterations,
                                 "population": population, "time": time_budget,
-                                "polish": polish}.items() if v is not None}
+                                "polish": polish, "atlas": atlas}.items() if v is not None}
     if update:  # validated like the file's own settings (method, bounds of counts)
         search = type(search).model_validate({**search.model_dump(), **update})
-    tracker = _Tracker(problem, search, keep, progress, search.time)
+    method, why = choose_method(problem, search.method)
+    if why:
+        search = type(search).model_validate({**search.model_dump(), "method": method})
+    polishing = search.polish and search.method != "multistart"
+    tracker = _Tracker(problem, search, keep, progress, search.time, started,
+                       POLISH_SHARE if polishing else MARGIN_SHARE)
+    if why:
+        tracker.notes.append(f"method auto: {method} ({why})")
     rng = np.random.default_rng(search.seed)
     given = start_designs(problem, start)
     starts = current_values(model, problem.variables)[None, :] if given is None else given
+    has_starts = given is not None
+    if search.atlas and given is not None:
+        tracker.notes.append("atlas not used: starting designs are given")
+    elif search.atlas:
+        from mechloop.synthesis.atlas import atlas_starts
+
+        found, why = atlas_starts(problem)
+        if found is None:
+            tracker.notes.append(f"atlas skipped: {why}")
+        else:
+            starts = np.vstack([starts, found])  # the model's own design first
+            has_starts = True
+            tracker.notes.append(f"atlas: {len(found)} starting designs from the coupler-"
+                                 "curve atlas")
     stopped = "iteration limit"
     try:
         if search.method == "de":
-            _run_de(problem, search, tracker, starts, rng, given is not None)
+            _run_de(problem, search, tracker, starts, rng, has_starts)
         elif search.method == "cmaes":
-            _run_cmaes(problem, search, tracker, starts, rng, given is not None)
+            _run_cmaes(problem, search, tracker, starts, rng, has_starts)
         else:
-            _run_multistart(problem, search, tracker, starts, rng, scheduler,
-                            given is not None)
+            _run_multistart(problem, search, tracker, starts, rng, scheduler, has_starts)
     except _Stop as stop:
         stopped = str(stop)
     except KeyboardInterrupt:
         stopped = "interrupted"
-    if search.polish and stopped not in ("interrupted",) and tracker.best_x is not None \
-            and search.method != "multistart":
+    if polishing and stopped not in ("interrupted",) and tracker.best_x is not None:
         try:
             _polish(problem, tracker, tracker.best_x, search)
         except KeyboardInterrupt:
             stopped = "interrupted"
+        except _Stop:
+            tracker.polish_note += " (stopped by the time budget)"
     return _result(problem, tracker, stopped, search.method)
+
+
+def choose_method(problem: SynthesisProblem, method: str) -> tuple[str, str]:
+    """The method ``auto`` stands for on ``problem``, and why (``(method, '')`` for any
+    other).  Measured on the bundled four-bar path problems
+    (``benchmarks/bench_synthesis_problems.py --compare``): the multistart by exact least
+    squares from the atlas's starting designs where the atlas applies; CMA-ES on a timed
+    path it does not apply to; DE, the earlier default, elsewhere (not measured)."""
+    if method != "auto":
+        return method, ""
+    from mechloop.synthesis.atlas import recognize
+    from mechloop.synthesis.gradient import exact_jacobian_available
+
+    if exact_jacobian_available(problem):
+        if recognize(problem.model, problem)[0] is not None:
+            return "multistart", "a four-bar path the atlas applies to"
+        return "cmaes", "a timed path the atlas does not apply to"
+    return "de", "no timed path"
 
 
 def start_designs(problem: SynthesisProblem, start: StartDesigns | None = None
@@ -313,7 +395,9 @@ def _result(problem: SynthesisProblem, tracker: _Tracker, stopped: str, method: 
                            model=problem.design_model(best),
                            history=pd.DataFrame(tracker.history), designs=designs,
                            stopped=stopped, evaluations=tracker.evaluations,
-                           elapsed=elapsed, method=method)
+                           elapsed=elapsed, method=method, polish=tracker.polish_note,
+                           polish_evaluations=tracker.polish_evaluations,
+                           notes=tuple(tracker.notes))
 
 
 def _run_de(problem: SynthesisProblem, search: Search, tracker: _Tracker, starts: Array,
@@ -410,36 +494,130 @@ def _local(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
 
 def _polish(problem: SynthesisProblem, tracker: _Tracker, best: Array, search: Search
             ) -> None:
-    """Least squares on the deviations from the best design (the Jacobian by forward
-    differences, all V + 1 designs in one vectorized call), then Nelder–Mead on the
+    """Least squares on the residuals from the best design, then Nelder–Mead on the
     objective itself; every result goes through the tracker, so the best design only
-    ever improves."""
-    variables = problem.variables
-    n_vars = len(variables)
-    step = 1e-7
+    ever improves, and every evaluation checks the run's hard deadline (raising
+    :class:`_Stop` past it).
 
-    def fun(unit: Array) -> Array:
-        return problem.residuals(variables.scale(unit)[None, :])[0]
+    The least squares' Jacobian is exact where the target allows it (a timed path:
+    implicit differentiation, :mod:`mechloop.synthesis.gradient`), else forward
+    differences (all V + 1 designs in one vectorized call)."""
+    x_best, ok = _least_squares(problem, tracker, best, 50 * len(problem.variables),
+                                _polish_deadline(tracker))
+    if ok:
+        tracker.evaluate(x_best[None, :])
 
-    def jac(unit: Array) -> Array:
-        probes = np.repeat(unit[None, :], n_vars + 1, axis=0)
-        steps = np.where(unit + step <= 1.0, step, -step)
-        probes[np.arange(1, n_vars + 1), np.arange(n_vars)] += steps
-        res = problem.residuals(variables.scale(probes))
-        return ((res[1:] - res[0]) / steps[:, None]).T
-
-    x0 = variables.unscale(best)
-    if np.all(np.abs(fun(x0)) < 1e6):
-        found = least_squares(fun, x0, jac=jac, bounds=variables.unit_bounds(),
-                              x_scale="jac",
-                              xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=50 * n_vars)
-        tracker.evaluations += found.nfev * (n_vars + 2)
-        tracker.evaluate(variables.scale(found.x)[None, :])
+    tracker.polish_note += ", then Nelder-Mead"
 
     def evaluate(x: Array) -> float:
         return float(tracker.evaluate(x[None, :]).total[0])
 
-    _local(problem, variables.unscale(tracker.best_x), 100 * n_vars, evaluate)
+    before = tracker.evaluations
+    _local(problem, problem.variables.unscale(tracker.best_x), 100 * len(problem.variables),
+           evaluate)
+    tracker.polish_evaluations += tracker.evaluations - before
+
+
+def _polish_deadline(tracker: _Tracker) -> float:
+    """When the polish's least squares must hand back its best design: the hard
+    deadline less the margin kept for the final evaluations."""
+    if not math.isfinite(tracker.deadline):
+        return math.inf
+    budget = tracker.deadline - tracker.started
+    return tracker.deadline - MARGIN_SHARE * budget
+
+
+def _least_squares(problem: SynthesisProblem, tracker: _Tracker, start: Array,
+                   max_nfev: int, deadline: float, guarded: bool = False
+                   ) -> tuple[Array, bool]:
+    """One least-squares run (SciPy's trust region reflective, in the unit box) from
+    ``start`` (SI); returns the design it ends at (SI) — at ``deadline``
+    (``perf_counter``) the best one it has seen — and whether it ran.  ``guarded``: add
+    the crank guard's rows where it applies (the multistart's runs from afar; the polish
+    of a design already found goes without, so that it may reach a design close to the
+    Grashof limit)."""
+    from mechloop.synthesis.gradient import (
+        CrankGuard,
+        exact_jacobian_available,
+        residual_jacobian,
+    )
+
+    variables = problem.variables
+    n_vars = len(variables)
+    span = variables.high - variables.low
+    step = 1e-7
+    exact = exact_jacobian_available(problem)
+    tracker.polish_note = ("least squares with the exact Jacobian (implicit "
+                           "differentiation)" if exact else
+                           "least squares with a forward-difference Jacobian")
+    seen: list = [start, math.inf]  # the best design seen and its sum of squares
+
+    def check_time() -> None:
+        if time.perf_counter() >= deadline:
+            raise _OutOfTime
+
+    guard = CrankGuard.of(problem) if exact and guarded else None
+    if guard is not None:
+        tracker.polish_note += ("; the least squares keeps the four-bar's crank off the "
+                                "Grashof limit (guard rows, zero inside)")
+
+    def fun(unit: Array) -> Array:
+        check_time()
+        tracker.evaluations += 1
+        tracker.polish_evaluations += 1
+        x = variables.scale(unit)
+        res = problem.residuals(x[None, :])[0]
+        if guard is not None:
+            res = np.concatenate([res, guard.rows(x)[0]])
+        size = float(res @ res)
+        if size < seen[1]:
+            seen[:] = [x, size]
+        return res
+
+    def jac(unit: Array) -> Array:
+        check_time()
+        if exact:
+            tracker.evaluations += 1
+            tracker.polish_evaluations += 1
+            x = variables.scale(unit)
+            _, jacobian = residual_jacobian(problem, x)
+            if guard is not None:
+                jacobian = np.vstack([jacobian, guard.rows(x)[1]])
+            return jacobian * span[None, :]
+        probes = np.repeat(unit[None, :], n_vars + 1, axis=0)
+        steps = np.where(unit + step <= 1.0, step, -step)
+        probes[np.arange(1, n_vars + 1), np.arange(n_vars)] += steps
+        res = problem.residuals(variables.scale(probes))
+        tracker.evaluations += n_vars + 1
+        tracker.polish_evaluations += n_vars + 1
+        return ((res[1:] - res[0]) / steps[:, None]).T
+
+    x0 = np.clip(variables.unscale(start), 0.0, 1.0)
+    try:
+        if not np.all(np.abs(fun(x0)) < 1e6):
+            return start, False
+        turn = periodic_columns(problem)
+        low, high = np.where(turn, -np.inf, 0.0), np.where(turn, np.inf, 1.0)
+        found = least_squares(lambda u: fun(_wrap_unit(u, turn)),
+                              x0, jac=lambda u: jac(_wrap_unit(u, turn)),
+                              bounds=(low, high), x_scale=1.0 if exact else "jac",
+                              xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=max_nfev)
+    except _OutOfTime:
+        return seen[0], math.isfinite(seen[1])
+    return variables.scale(_wrap_unit(found.x, turn)), True
+
+
+def periodic_columns(problem: SynthesisProblem) -> NDArray[np.bool_]:
+    """The periodic variables, ``(V,)`` (:attr:`Variables.periodic`: ``periodic`` or
+    bounds spanning a full turn): the local search moves them freely and takes them
+    modulo the turn (a design at 359° is next to one at 1°), instead of stopping at the
+    cut."""
+    return np.asarray(problem.variables.periodic, dtype=bool)
+
+
+def _wrap_unit(unit: Array, turn: NDArray[np.bool_]) -> Array:
+    """Unit coordinates with the periodic columns taken modulo 1 (the turn)."""
+    return np.where(turn, np.mod(unit, 1.0), unit)
 
 
 class _OutOfTime(Exception):
@@ -476,9 +654,13 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
     searches from the best distinct samples, on Dask workers when asked; ``given``
     starting designs are the first local starts (then the best samples, ``search.starts``
     runs at least)."""
+    from mechloop.synthesis.gradient import exact_jacobian_available
     from mechloop.synthesis.parallel import map_tasks
 
     variables = problem.variables
+    if exact_jacobian_available(problem) and scheduler in (None, "serial"):
+        _run_multistart_lsq(problem, search, tracker, starts, rng, given)
+        return
     sampler = qmc.Sobol(len(variables), seed=rng)
     samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 4, 16))))
     before = tracker.best_total
@@ -500,6 +682,34 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
         before = tracker.best_total
         tracker.evaluate(x[None, :])
         tracker.evaluations += count - 1
+        tracker.generation_done(before)
+
+
+def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tracker,
+                        starts: Array, rng: np.random.Generator, given: bool) -> None:
+    """Multi-start by least squares with the exact Jacobian (a timed path): Sobol
+    samples (one vectorized call), then local least-squares runs from the best feasible
+    samples in order — ``search.starts`` at least, and with a time budget as many more as
+    it allows (one generation per run)."""
+    variables = problem.variables
+    sampler = qmc.Sobol(len(variables), seed=rng)
+    samples = sampler.random_base2(math.ceil(math.log2(max(search.population * 16, 1024))))
+    before = tracker.best_total
+    tracker.evaluate(starts)
+    ev = tracker.evaluate(variables.scale(samples))
+    tracker.generation_done(before)
+    order = [i for i in np.argsort(ev.total) if ev.feasible[i]]
+    local = (list(variables.scale(np.clip(variables.unscale(starts), 0.0, 1.0)))
+             if given else []) + [variables.scale(samples[i]) for i in order]
+    limit = len(local) if tracker.budget is not None else min(len(local), search.starts)
+    for x0 in local[:limit]:
+        before = tracker.best_total
+        soft = (math.inf if tracker.budget is None
+                else tracker.started + tracker.budget)
+        found, ok = _least_squares(problem, tracker, x0, max(150, 10 * len(variables)),
+                                   soft, guarded=True)
+        if ok:
+            tracker.evaluate(found[None, :])
         tracker.generation_done(before)
 
 
