@@ -513,7 +513,24 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
         else:
             params[name] = _Param(val, None, None)
 
-    # Jacobian columns of the unknowns: e_j for a length, r_j n_j for an angle.
+    (c1x, c1y, c2x, c2y), det, norm = jacobian_columns(params, u1, u2)
+    with np.errstate(invalid="ignore"):
+        singular = ok & ~(np.abs(det) > SINGULAR_SIN * norm)
+        good = ok & ~singular
+        # the sign of det where the solution is regular (det is not 0 there), else 0
+        branch = ((good & (det > 0)).astype(np.int8)
+                  - (good & (det < 0)).astype(np.int8))
+    if derivatives:
+        _solve_derivatives(info, params, (c1x, c1y, c2x, c2y), det, good)
+    return ~ok, singular, last, branch
+
+
+def jacobian_columns(params: dict[str, _Param], u1: str, u2: str
+                     ) -> tuple[tuple[Array, Array, Array, Array], Array, Array]:
+    """The contour's Jacobian by its two unknowns ``u1``, ``u2``: the columns (x, y of
+    the first's, then the second's; ``e_j`` for a length, ``r_j n_j`` for an angle), their
+    determinant and the product of their lengths (``|det| / norm`` is the sine between
+    them), arrays broadcast over the positions (NaN where broken)."""
     def column(name: str) -> tuple[Array, Array]:
         number = int(name[1:])
         c, s = params[f"a{number}"].trig()
@@ -524,17 +541,10 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
 
     c1x, c1y = column(u1)
     c2x, c2y = column(u2)
-    det = c1x * c2y - c1y * c2x
-    norm = np.sqrt((c1x * c1x + c1y * c1y) * (c2x * c2x + c2y * c2y))
-    with np.errstate(invalid="ignore"):
-        singular = ok & ~(np.abs(det) > SINGULAR_SIN * norm)
-        good = ok & ~singular
-        # the sign of det where the solution is regular (det is not 0 there), else 0
-        branch = ((good & (det > 0)).astype(np.int8)
-                  - (good & (det < 0)).astype(np.int8))
-    if derivatives:
-        _solve_derivatives(info, params, (c1x, c1y, c2x, c2y), det, good)
-    return ~ok, singular, last, branch
+    with np.errstate(invalid="ignore", over="ignore"):
+        det = c1x * c2y - c1y * c2x
+        norm = np.sqrt((c1x * c1x + c1y * c1y) * (c2x * c2x + c2y * c2y))
+    return (c1x, c1y, c2x, c2y), det, norm
 
 
 def _solve_derivatives(info: ContourInfo, params: dict[str, _Param],

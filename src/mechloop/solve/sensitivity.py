@@ -25,7 +25,12 @@ from numpy.typing import NDArray
 from mechloop.model.check import require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import is_function, param_role
-from mechloop.solve.kinematics import SINGULAR_SIN, _Param, _solve_derivatives
+from mechloop.solve.kinematics import (
+    SINGULAR_SIN,
+    _Param,
+    _solve_derivatives,
+    jacobian_columns,
+)
 
 Array = NDArray[np.float64]
 
@@ -87,22 +92,11 @@ def position_tangents(model: Model, values: Mapping[str, Array],
         for name in (u1, u2):
             params[name] = _Param(np.asarray(values[name])[None], None, None)
 
-        def column(name: str) -> tuple[Array, Array]:
-            number = int(name[1:])
-            c, s = params[f"a{number}"].trig()
-            if name[0] == "r":
-                return c, s
-            r = params[f"r{number}"].value
-            return -r * s, r * c
-
-        c1x, c1y = column(u1)
-        c2x, c2y = column(u2)
+        found, det, norm = jacobian_columns(params, u1, u2)
         with np.errstate(invalid="ignore"):
-            det = c1x * c2y - c1y * c2x
-            norm = np.sqrt((c1x * c1x + c1y * c1y) * (c2x * c2x + c2y * c2y))
             good = np.abs(det) > SINGULAR_SIN * norm  # False where NaN (broken)
         good = np.broadcast_to(good, full)
-        columns = tuple(np.broadcast_to(c, full) for c in (c1x, c1y, c2x, c2y))
+        columns = tuple(np.broadcast_to(c, full) for c in found)
         with np.errstate(invalid="ignore", over="ignore"):
             _solve_derivatives(info, params, columns, np.broadcast_to(det, full), good)
     for name in structure.links:
