@@ -83,7 +83,9 @@ def test_shares_on_threads_equal_one_call(name, count, threads, seed):
 def test_the_benchmark_population_is_the_same_on_two_threads():
     """Above the threshold, the benchmark's designs: the kernel runs in both shares."""
     problem = problem_of("eighteen_points_timing_synthesis")
-    designs = population(problem, cores.PARALLEL_DESIGNS, 1)
+    designs = population(problem, cores.PARALLEL_ELEMENTS // 18 + 1, 1)
+    assert cores.evaluation_threads(designs.shape[0], cores.columns_of(problem)) \
+        >= min(2, int(cores.idle_cores(own=cores.own_load()) + 0.5))
     one = problem.evaluate(designs, threads=1)
     assert one.feasible.sum() > 10  # the comparison is not only of infeasible designs
     assert_same(one, problem.evaluate(designs, threads=2), RTOL)
@@ -111,19 +113,30 @@ def test_a_failing_share_raises_in_the_caller():
 def test_threads_follow_the_population_and_the_idle_cores(monkeypatch):
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2, 3}, raising=False)
     monkeypatch.setattr(cores, "own_load", lambda: 1.0)  # this process keeps one busy
-    big = 10 * cores.PARALLEL_DESIGNS
+    big = 10 * cores.PARALLEL_ELEMENTS
     for load, threads in ((0.0, 4), (1.0, 4), (1.6, 3), (2.4, 3), (3.0, 2), (3.6, 1),
                           (8.0, 1)):
         monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, 0.0, 0.0))
         assert cores.evaluation_threads(big) == threads, load
     monkeypatch.setattr(os, "getloadavg", lambda: (1.0, 0.0, 0.0))
-    assert cores.evaluation_threads(cores.PARALLEL_DESIGNS - 1) == 1  # too small
-    assert cores.evaluation_threads(cores.PARALLEL_DESIGNS) == 2  # a share of half each
+    small = cores.PARALLEL_ELEMENTS // 18
+    assert cores.evaluation_threads(small, 18) == 1  # too small
+    assert cores.evaluation_threads(small + 1, 18) == 2  # a share of half each
+    assert cores.evaluation_threads(small + 1, 1) == 1  # fewer positions: too small
+    assert cores.evaluation_threads(3, 10**6) == 3  # never more threads than designs
     cores._local.inside = True  # inside a share: never split again
     try:
         assert cores.evaluation_threads(big) == 1
     finally:
         cores._local.inside = False
+
+
+def test_columns_are_the_positions_an_evaluation_solves():
+    assert cores.columns_of(problem_of("eighteen_points_timing_synthesis")) == 18
+    free = problem_of("six_points_free_timing_synthesis")  # position 0 and 6 inputs
+    assert free.inputs_only and cores.columns_of(free) == 1 + 6
+    path = problem_of("four_bar_path_synthesis")  # every position, each circuit
+    assert cores.columns_of(path) == (path.model.positions + 1) * max(len(path.circuits), 1)
 
 
 def test_own_load_is_this_process_cpu_rate_averaged_over_a_minute(monkeypatch):

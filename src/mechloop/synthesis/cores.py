@@ -5,8 +5,11 @@ spends most of its time in NumPy's ufuncs and the compiled kernels
 (:mod:`mechloop.modules.kernels`), which release Python's global lock: threads, each
 evaluating a contiguous share of the designs, run that arithmetic on several cores at
 once.  The Python code between those calls still runs one thread at a time — about 2 ms
-per call whatever the population —, so a population below :data:`PARALLEL_DESIGNS`
-designs is evaluated in one call (measured: benchmarks/bench_synthesis.py ``--sizes``).
+per call whatever the population —, so a population is split only when it solves at
+least :data:`PARALLEL_ELEMENTS` designs × positions (measured on a quiet 2-core machine:
+two threads gained 1.2x from 4,000 designs at 18 target positions, 1.1x from 500 designs
+at 181 positions, 1.5–1.7x at 20,000 designs; below 65,536 elements they lost up to
+40 %; benchmarks/bench_synthesis.py ``--sizes``).
 
 A design's numbers do not depend on the other designs of its population (elementwise
 arithmetic, reductions along each design's own positions), so the evaluations of the
@@ -45,8 +48,9 @@ if TYPE_CHECKING:
 
 Array = NDArray[np.float64]
 
-#: Fewest designs worth splitting over threads: each share must hold at least half of it.
-PARALLEL_DESIGNS = 4000
+#: Fewest elements (designs × positions solved, every circuit counted) worth splitting
+#: a population for; each share holds at least half of it.
+PARALLEL_ELEMENTS = 1 << 16
 
 #: At most this many threads.
 MAX_THREADS = 8
@@ -82,15 +86,32 @@ class _OwnLoad:
 own_load = _OwnLoad()
 
 
-def evaluation_threads(designs: int) -> int:
-    """Threads to evaluate a population of ``designs`` designs with: 1 below
-    :data:`PARALLEL_DESIGNS`, inside a share already being evaluated, or when fewer than
-    two cores are idle; else one per idle core (at most :data:`MAX_THREADS`, and each
-    share at least half of :data:`PARALLEL_DESIGNS`)."""
-    if designs < PARALLEL_DESIGNS or getattr(_local, "inside", False):
+def evaluation_threads(designs: int, columns: int = 1) -> int:
+    """Threads to evaluate a population of ``designs`` designs with, each solved at
+    ``columns`` positions (:func:`columns_of`): 1 below :data:`PARALLEL_ELEMENTS`
+    elements, inside a share already being evaluated, or when fewer than two cores are
+    idle; else one per idle core (at most :data:`MAX_THREADS`, and each share at least
+    half of :data:`PARALLEL_ELEMENTS`)."""
+    elements = designs * max(columns, 1)
+    if elements < PARALLEL_ELEMENTS or getattr(_local, "inside", False):
         return 1
     idle = int(idle_cores(own=own_load()) + 0.5)
-    return max(1, min(usable_cores(), MAX_THREADS, idle, designs // (PARALLEL_DESIGNS // 2)))
+    return max(1, min(usable_cores(), MAX_THREADS, idle, designs,
+                      elements // (PARALLEL_ELEMENTS // 2)))
+
+
+def columns_of(problem: SynthesisProblem) -> int:
+    """Positions (and target inputs) an evaluation of ``problem`` solves per design,
+    times its circuits: the targets' positions where the objective reads only them,
+    position 0 and the target inputs with free timing, else every position."""
+    every = problem.model.positions + 1
+    if problem.at_inputs:
+        columns = (1 if problem.inputs_only else every) + problem._target_count()
+    elif problem.objective_positions is not None:
+        columns = problem.objective_positions.size
+    else:
+        columns = every
+    return columns * max(len(problem.circuits), 1)
 
 
 def evaluate_shares(problem: SynthesisProblem, designs: Array, threads: int, *,
@@ -167,5 +188,5 @@ def _joined(parts: list[Evaluation]) -> Evaluation:
         measures={key: cat([p.measures[key] for p in parts]) for key in parts[0].measures})
 
 
-__all__ = ["MAX_THREADS", "PARALLEL_DESIGNS", "evaluate_shares", "evaluation_threads",
-           "own_load"]
+__all__ = ["MAX_THREADS", "PARALLEL_ELEMENTS", "columns_of", "evaluate_shares",
+           "evaluation_threads", "own_load"]

@@ -528,7 +528,8 @@ class SynthesisProblem:
         size and the idle cores (:mod:`mechloop.synthesis.cores`), 1 evaluates here."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
         if threads is None:
-            threads = 1 if continuous else cores.evaluation_threads(designs.shape[0])
+            threads = 1 if continuous else cores.evaluation_threads(
+                designs.shape[0], cores.columns_of(self))
         if threads > 1 and designs.shape[0] >= threads:
             return cores.evaluate_shares(self, designs, threads,
                                          continuous=continuous)
