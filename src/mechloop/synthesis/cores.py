@@ -24,8 +24,10 @@ never shared between two threads.
 How many threads: one per core this process may use that other work leaves idle — the
 rule of the table writers (:func:`mechloop.output.parallel.idle_cores`: the cores less
 the 1-minute load average), where this process's own recent work, its CPU time per
-second averaged over the same minute, is not counted as other work.  On a busy machine
-that leaves one core, and the population is evaluated in one call.
+second averaged over the same minute, is not counted as other work, and where other
+work counts at most as the threads running elsewhere at that moment (a job that has
+just ended weighs on the average for a minute).  On a busy machine that leaves one
+core, and the population is evaluated in one call.
 """
 
 from __future__ import annotations
@@ -95,7 +97,7 @@ def evaluation_threads(designs: int, columns: int = 1) -> int:
     elements = designs * max(columns, 1)
     if elements < PARALLEL_ELEMENTS or getattr(_local, "inside", False):
         return 1
-    idle = int(idle_cores(own=own_load()) + 0.5)
+    idle = int(idle_cores(own=own_load(), now=True) + 0.5)
     return max(1, min(usable_cores(), MAX_THREADS, idle, designs,
                       elements // (PARALLEL_ELEMENTS // 2)))
 
