@@ -18,10 +18,12 @@ from mechloop.synthesis.variables import current_values
 
 #: Problems of different evaluation paths: timed targets at their positions with the
 #: exact turn check, free timing at the target inputs, every position with conditions
-#: and both circuits, a shape objective with circuits, criteria over the motion.
+#: and both circuits, a shape objective with circuits, criteria over the motion, a
+#: dynamic criterion (the batched force analysis), a model of groups.
 EXAMPLES = ["eighteen_points_timing_synthesis", "six_points_free_timing_synthesis",
             "four_bar_path_synthesis", "four_bar_shape_synthesis",
-            "slider_crank_stroke_synthesis"]
+            "slider_crank_stroke_synthesis", "roof_support_synthesis",
+            "four_bar_groups_synthesis"]
 _PROBLEMS: dict[str, SynthesisProblem] = {}
 
 
@@ -72,7 +74,7 @@ def assert_same(a: Evaluation, b: Evaluation, rtol: float = 0.0) -> None:
             same(one[key], other[key], f"{field}[{key}]")
 
 
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=16, deadline=None)
 @given(st.sampled_from(EXAMPLES), st.integers(3, 40), st.integers(2, 3),
        st.integers(0, 2**32 - 1))
 def test_shares_on_threads_equal_one_call(name, count, threads, seed):
