@@ -116,6 +116,22 @@ def test_a_failing_share_raises_in_the_caller():
         cores.evaluate_shares(Failing(), designs, 2)
 
 
+def test_a_share_runs_under_the_callers_errstate():
+    seen = []
+
+    class Recording:
+        circuits = ()
+
+        def evaluate(self, designs, *, continuous=False, threads=None):
+            seen.append(np.geterr()["invalid"])
+            return problem_of("eighteen_points_timing_synthesis").evaluate(
+                np.zeros((designs.shape[0], 10)), threads=1)
+
+    with np.errstate(invalid="raise"):
+        cores.evaluate_shares(Recording(), np.zeros((6, 10)), 3)
+    assert seen == ["raise"] * 3
+
+
 def test_threads_follow_the_population_and_the_idle_cores(monkeypatch):
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2, 3}, raising=False)
     monkeypatch.setattr(cores, "own_load", lambda: 1.0)  # this process keeps one busy

@@ -32,6 +32,7 @@ core, and the population is evaluated in one call.
 
 from __future__ import annotations
 
+import contextvars
 import copy
 import math
 import threading
@@ -128,8 +129,10 @@ def evaluate_shares(problem: SynthesisProblem, designs: Array, threads: int, *,
     futures: list[Future] = []
     try:
         for k in range(1, threads):
-            futures.append(pool.submit(_evaluate_share, twins[k],
-                                       designs[bounds[k]:bounds[k + 1]], continuous))
+            # in a copy of this thread's context: NumPy's errstate as the caller set it
+            futures.append(pool.submit(contextvars.copy_context().run, _evaluate_share,
+                                       twins[k], designs[bounds[k]:bounds[k + 1]],
+                                       continuous))
         first = _evaluate_share(twins[0], designs[bounds[0]:bounds[1]], continuous)
         parts = [first, *(future.result() for future in futures)]
     finally:
