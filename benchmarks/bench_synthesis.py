@@ -21,7 +21,11 @@ The same random designs (uniform in the published bounds, fixed seed) are evalua
   the 18 target rows.  pylinkage's batch simulator (``population.simulate_batch``, the
   same numba kernel called per design over one topology) is timed too, and the faster of
   the two is pylinkage's rate;
-* by mechloop's ``SynthesisProblem.evaluate`` on the whole population in one call.
+* by mechloop's ``SynthesisProblem.evaluate`` on the whole population in one call: in
+  one thread (``threads=1``), in one thread per usable core (the population in shares,
+  :mod:`mechloop.synthesis.cores`), and as a user calls it (``threads`` left to the
+  default, which chooses by the population's size and the idle cores).  The default's
+  rate is mechloop's.
 
 Both must give the same objective (relative 1e-9) on the designs both find valid, and
 every difference must be explained: pylinkage follows the nearest intersection from
@@ -36,6 +40,11 @@ pylinkage's).  Timings depend on the machine and its load.
 
     pip install -e ".[bench]"
     python benchmarks/bench_synthesis.py [--designs 2000] [--repeats 10]
+    python benchmarks/bench_synthesis.py --sizes 1000,2000,4000,8000,20000
+
+``--sizes`` times mechloop alone, one thread beside one per usable core, on populations
+of those sizes (where splitting a population over threads starts to pay:
+``mechloop.synthesis.cores.PARALLEL_DESIGNS``).
 """
 
 from __future__ import annotations
@@ -83,10 +92,37 @@ def mechloop_designs(problem, designs: np.ndarray) -> np.ndarray:
     return np.column_stack([values[name] for name in problem.variables.names])
 
 
-def mechloop_evaluate(problem, designs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Q (mm²) and feasibility of every design, one population call."""
-    evaluation = problem.evaluate(designs)
+def mechloop_evaluate(problem, designs: np.ndarray, threads: int | None = None
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """Q (mm²) and feasibility of every design, one population call (``threads``: None
+    for mechloop's default, else that many threads)."""
+    evaluation = problem.evaluate(designs, threads=threads)
     return evaluation.q, evaluation.feasible
+
+
+def all_cores() -> int:
+    """The cores this process may run on."""
+    from mechloop.output.parallel import usable_cores
+
+    return usable_cores()
+
+
+def time_sizes(problem, sizes: list[int], seed: int, repeats: int) -> None:
+    """mechloop's designs/s on one thread and on one thread per usable core, per
+    population size (the designs of each size checked equal to 1e-12 both ways)."""
+    cores = all_cores()
+    print(f"mechloop SynthesisProblem.evaluate, 1 thread / {cores} threads "
+          f"(best of {repeats}):")
+    for size in sizes:
+        designs = mechloop_designs(problem, published_designs(size, seed))
+        one, many = (problem.evaluate(designs, threads=t) for t in (1, cores))
+        if not np.allclose(one.total, many.total, rtol=1e-12, atol=0):
+            print(f"{size} designs: the threads' evaluation differs", file=sys.stderr)
+            sys.exit(1)
+        best = best_times({t: (lambda d, t=t: mechloop_evaluate(problem, d, t), designs)
+                           for t in (1, cores)}, repeats)
+        print(f"{size:>8,} designs: {size / best[1]:>9,.0f} and {size / best[cores]:>9,.0f}"
+              f" designs/s ({best[1] / best[cores]:.2f}x)")
 
 
 class Pylinkage:
@@ -199,7 +235,16 @@ def main(argv: list[str] | None = None) -> int:
                         "(default 10)")
     parser.add_argument("--seed", type=int, default=0, help="random designs' seed "
                         "(default 0)")
+    parser.add_argument("--sizes", help="comma-separated population sizes: time "
+                        "mechloop alone, one thread beside every core")
     args = parser.parse_args(argv)
+    if args.sizes:
+        import mechloop
+        from mechloop.synthesis.problem import SynthesisProblem
+
+        time_sizes(SynthesisProblem(mechloop.load_model(PROBLEM)),
+                   [int(s) for s in args.sizes.split(",")], args.seed, args.repeats)
+        return 0
     try:
         tool = Pylinkage()
     except ImportError:
@@ -213,6 +258,14 @@ def main(argv: list[str] | None = None) -> int:
     ours = mechloop_designs(problem, source)
 
     q_ours, ok_ours = mechloop_evaluate(problem, ours)
+    cores = all_cores()
+    for threads in (1, cores):
+        q_t, ok_t = mechloop_evaluate(problem, ours, threads)
+        if not (np.array_equal(ok_t, ok_ours) and np.allclose(
+                q_t[ok_t], q_ours[ok_t], rtol=1e-12, atol=0)):
+            print(f"mechloop on {threads} threads differs from its default",
+                  file=sys.stderr)
+            return 1
     q_step, ok_step = tool.evaluate(source)
     q_batch, ok_batch = tool.evaluate_batch(source)
     if not (np.array_equal(ok_step, ok_batch)
@@ -253,6 +306,8 @@ def main(argv: list[str] | None = None) -> int:
         return 1
 
     best = best_times({"mechloop": (lambda d: mechloop_evaluate(problem, d), ours),
+                       "one": (lambda d: mechloop_evaluate(problem, d, 1), ours),
+                       "all": (lambda d: mechloop_evaluate(problem, d, cores), ours),
                        "step_fast": (tool.evaluate, source),
                        "simulate_batch": (tool.evaluate_batch, source)}, args.repeats)
     t_ours, t_step, t_batch = best["mechloop"], best["step_fast"], best["simulate_batch"]
@@ -262,7 +317,15 @@ def main(argv: list[str] | None = None) -> int:
           f"{args.designs / t_step:,.0f} designs/s")
     print(f"pylinkage simulate_batch, {STEPS} positions per design: "
           f"{args.designs / t_batch:,.0f} designs/s")
-    print(f"mechloop SynthesisProblem.evaluate: {rate_ours:,.0f} designs/s")
+    print(f"mechloop SynthesisProblem.evaluate, 1 thread: "
+          f"{args.designs / best['one']:,.0f} designs/s")
+    print(f"mechloop SynthesisProblem.evaluate, {cores} threads (one per usable core): "
+          f"{args.designs / best['all']:,.0f} designs/s")
+    from mechloop.synthesis.cores import columns_of, evaluation_threads
+
+    threads = evaluation_threads(args.designs, columns_of(problem))
+    print(f"mechloop SynthesisProblem.evaluate, default (threads chosen per call: {threads}"
+          f" now): {rate_ours:,.0f} designs/s")
     print(f"synthesis speedup vs pylinkage: {rate_ours / rate_theirs:.1f}")
     return 0
 

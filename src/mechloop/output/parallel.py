@@ -69,16 +69,45 @@ def workers_for(values: int, pieces: int) -> int:
     not processes — and would cost the copies through the pipes."""
     if not hasattr(os, "fork") or values < PARALLEL_VALUES or pieces < 2:
         return 0
-    try:
-        cores = len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        cores = os.cpu_count() or 1
-    try:
-        idle = cores - os.getloadavg()[0]
-    except (AttributeError, OSError):
-        idle = cores
-    count = min(cores, MAX_WORKERS, pieces, int(idle + 0.5))
+    count = min(usable_cores(), MAX_WORKERS, pieces, int(idle_cores() + 0.5))
     return count if count >= 2 else 0
+
+
+def usable_cores() -> int:
+    """The cores this process may run on (its affinity; all of them where unknown)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def idle_cores(own: float = 0.0, *, now: bool = False) -> float:
+    """Cores not used by other work: :func:`usable_cores` less the 1-minute load average,
+    of which ``own`` (runnable tasks, averaged alike) is this process's own work and
+    not counted (the caller knows it will stop it or share it out); every usable core
+    where the load average is unknown.  With ``now``, other work is at most what runs
+    at this moment besides the calling thread (Linux's count of runnable threads): a job
+    that has just ended still weighs on the average for a minute, not there."""
+    cores = usable_cores()
+    try:
+        load = os.getloadavg()[0]
+    except (AttributeError, OSError):
+        return float(cores)
+    others = max(load - own, 0.0)
+    running = running_threads() if now else None
+    if running is not None:
+        others = min(others, max(running - 1, 0))
+    return cores - others
+
+
+def running_threads() -> int | None:
+    """Threads of the whole system runnable at this moment, the caller's included
+    (``/proc/loadavg``); None where unknown."""
+    try:
+        with open("/proc/loadavg", encoding="ascii") as handle:
+            return int(handle.read().split()[3].split("/")[0])
+    except (OSError, ValueError, IndexError):
+        return None
 
 
 def write_ordered(handle: BinaryIO, pieces: Sequence[tuple[int, int]], render: Render,

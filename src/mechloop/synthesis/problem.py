@@ -41,8 +41,8 @@ from mechloop.model.schema import Model
 from mechloop.model.synthesis import CYCLE_VALUES, Criterion, Curve, Point, SynthesisTask
 from mechloop.model.units import registry, to_si, unit_factor
 from mechloop.solve.designs import DesignResults, solve_designs, solve_designs_at
+from mechloop.synthesis import cores, shape
 from mechloop.synthesis import deviations as dv
-from mechloop.synthesis import shape
 from mechloop.synthesis.circuits import circuit_problems, evaluate_best, residuals_best
 from mechloop.synthesis.continuous import curve_distance
 from mechloop.synthesis.crank_turn import compile_turn_check
@@ -516,14 +516,23 @@ class SynthesisProblem:
             return self.function_positions.size
         return self.targets.size
 
-    def evaluate(self, designs: Array, *, continuous: bool = False) -> Evaluation:
+    def evaluate(self, designs: Array, *, continuous: bool = False,
+                 threads: int | None = None) -> Evaluation:
         """Every term for the population ``designs`` (SI, shape ``(D, V)``).
 
         ``continuous``: a path without timing measures each target's distance to the
         continuous curve (:mod:`mechloop.synthesis.continuous`; ~30 solves more), not to
         the polyline through the positions: the error of the design as it really moves,
-        for the reported result."""
+        for the reported result.  ``threads``: evaluate the designs in that many shares,
+        each in a thread of its own (the same result); None chooses by the population's
+        size and the idle cores (:mod:`mechloop.synthesis.cores`), 1 evaluates here."""
         designs = np.atleast_2d(np.asarray(designs, dtype=float))
+        if threads is None:
+            threads = 1 if continuous else cores.evaluation_threads(
+                designs.shape[0], cores.columns_of(self))
+        if threads > 1 and designs.shape[0] >= threads:
+            return cores.evaluate_shares(self, designs, threads,
+                                         continuous=continuous)
         if self.circuits:  # the better circuit of each design
             return evaluate_best(self.circuits, designs, continuous=continuous)[0]
         res, feasible, dev, terms, measures = self._assess(designs, continuous=continuous)
