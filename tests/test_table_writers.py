@@ -326,9 +326,16 @@ def test_workers_only_for_idle_cores(monkeypatch):
     """A worker per idle core (cores less the load), none below two or for a small table."""
     monkeypatch.setattr(parallel, "PARALLEL_VALUES", 1000)
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(4)), raising=False)
+    monkeypatch.setattr(parallel, "running_threads", lambda: 99)  # the average decides
     for load, workers in ((0.0, 4), (0.6, 3), (1.4, 3), (2.4, 2), (2.6, 0), (9.0, 0)):
         monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, 0.0, 0.0))
         assert parallel.workers_for(10**6, 100) == workers, load
+    # the average still holds this process's own solve (or a job just ended), but
+    # nothing else runs now: every core is idle
+    monkeypatch.setattr(os, "getloadavg", lambda: (3.0, 0.0, 0.0))
+    for running, workers in ((1, 4), (2, 3), (3, 2), (4, 0)):
+        monkeypatch.setattr(parallel, "running_threads", lambda running=running: running)
+        assert parallel.workers_for(10**6, 100) == workers, running
     monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
     assert parallel.workers_for(999, 100) == 0 and parallel.workers_for(10**6, 3) == 3
 

@@ -63,13 +63,15 @@ Render = Callable[[int, int], Iterator[list[bytes | memoryview]]]
 def workers_for(values: int, pieces: int) -> int:
     """How many workers to fork for a table of ``values`` values cut into ``pieces``
     pieces: one per idle core the process may use (its cores less the 1-minute load
-    average, rounded; at most MAX_WORKERS and ``pieces``), or 0 (format here) for a small
+    average — at most the threads running now besides this one, so that this process's
+    own solve before the write, or a job just ended, does not count —, rounded; at most
+    MAX_WORKERS and ``pieces``), or 0 (format here) for a small
     table, fewer than two idle cores or a system without ``fork``.  On a busy machine
     workers gain nothing — the cores are taken, and Linux shares the CPU between sessions,
     not processes — and would cost the copies through the pipes."""
     if not hasattr(os, "fork") or values < PARALLEL_VALUES or pieces < 2:
         return 0
-    count = min(usable_cores(), MAX_WORKERS, pieces, int(idle_cores() + 0.5))
+    count = min(usable_cores(), MAX_WORKERS, pieces, int(idle_cores(now=True) + 0.5))
     return count if count >= 2 else 0
 
 
