@@ -447,11 +447,7 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
     −1, 0 where there is no regular solution): the assembly branch the contour is on.
     """
     u1, u2 = info.functions
-    for number in info.vectors:
-        for letter in "ra":
-            name = f"{letter}{number}"
-            if name not in (u1, u2) and resolve(name) is None:
-                raise AssertionError(f"{name} not known before contour {info.number}")
+    resolve_known(info, resolve)
 
     x: Array | float = 0.0
     y: Array | float = 0.0
@@ -523,6 +519,16 @@ def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,
     if derivatives:
         _solve_derivatives(info, params, (c1x, c1y, c2x, c2y), det, good)
     return ~ok, singular, last, branch
+
+
+def resolve_known(info: ContourInfo, resolve) -> None:
+    """Resolve every parameter of the contour's vectors but its two functions (the
+    contour order guarantees they are known; ``resolve(name)`` returns None otherwise)."""
+    for number in info.vectors:
+        for letter in "ra":
+            name = f"{letter}{number}"
+            if name not in info.functions and resolve(name) is None:
+                raise AssertionError(f"{name} not known before contour {info.number}")
 
 
 def jacobian_columns(params: dict[str, _Param], u1: str, u2: str

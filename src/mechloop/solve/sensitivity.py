@@ -30,6 +30,7 @@ from mechloop.solve.kinematics import (
     _Param,
     _solve_derivatives,
     jacobian_columns,
+    resolve_known,
 )
 
 Array = NDArray[np.float64]
@@ -84,11 +85,7 @@ def position_tangents(model: Model, values: Mapping[str, Array],
 
     for info in structure.ordered():
         u1, u2 = info.functions
-        for number in info.vectors:
-            for letter in "ra":
-                name = f"{letter}{number}"
-                if name not in (u1, u2) and resolve(name) is None:
-                    raise AssertionError(f"{name} not known before contour {info.number}")
+        resolve_known(info, resolve)
         for name in (u1, u2):
             params[name] = _Param(np.asarray(values[name])[None], None, None)
 
