@@ -266,6 +266,8 @@ def _rigid(point: Motion, ref: Motion, angle, ok, scale) -> bool:
 
 def _guide_body(model: Model, v: int, member) -> int | None:
     role = model.vectors[v].a
+    if isinstance(role, LinkRole) and role.ratio != 1:
+        return None  # a transmission (gears): the direction turns with neither body
     if isinstance(role, LinkRole):
         root = int(role.link[1:])
         owners = member.get(root, [])

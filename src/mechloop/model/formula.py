@@ -47,7 +47,8 @@ def role_text(model: Model, name: str) -> str:
     if isinstance(role, ArgumentRole):
         return f"arg {role.argument}{_plus(role.offset, unit)}"
     if isinstance(role, LinkRole):
-        return f"{symbol(role.link)}{_plus(role.delta, unit)}"
+        factor = "" if role.ratio == 1 else f"{role.ratio:g}·"
+        return f"{factor}{symbol(role.link)}{_plus(role.delta, unit)}"
     return _fmt(role, unit)
 
 

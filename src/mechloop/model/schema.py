@@ -11,14 +11,18 @@ one role:
 * a number (or quantity string) — a *constant*;
 * ``"function"`` — an unknown solved by the contour that holds the vector;
 * ``{argument: k, offset: c}`` — driven by model argument ``k`` (plus a constant offset);
-* ``{link: "a2", delta: c}`` — equal to another vector's parameter plus a constant.
+* ``{link: "a2", delta: c}`` — equal to another vector's parameter plus a constant;
+  ``{link: "a2", ratio: k, delta: c}`` — ``k`` times it plus a constant (``α_i = k·α_j + c``:
+  a gear pair, ``k = −z1/z2`` external, ``+z1/z2`` internal; ``k`` is 1 by default).
 """
 
 from __future__ import annotations
 
+import re
 from typing import Annotated, Any, Literal
 
-from pydantic import Discriminator, Field, Tag, WithJsonSchema
+from pydantic import BeforeValidator, Discriminator, Field, Tag, WithJsonSchema
+from pydantic_core import PydanticCustomError
 
 from mechloop.model.dynamic import (
     Body,
@@ -69,10 +73,45 @@ class ArgumentRole(_Frozen):
     offset: Scalar = Field(0.0, description="constant added to the argument (model units)")
 
 
+_FRACTION = re.compile(r"^\s*([+-]?\d+(?:\.\d*)?)\s*/\s*(\d+(?:\.\d*)?)\s*$")
+
+
+def _fraction(value: Any) -> Any:
+    """A ratio written as a fraction of tooth counts (``"-20/50"``) as its float."""
+    if isinstance(value, str) and (found := _FRACTION.match(value)):
+        top, bottom = float(found[1]), float(found[2])
+        if bottom == 0:
+            raise PydanticCustomError("ratio_fraction", "the ratio '{value}' divides by 0",
+                                      {"value": value})
+        return top / bottom
+    return value
+
+
+#: A link's ratio: a number, or a fraction ``"p/q"`` such as ``"-20/50"`` (teeth over teeth).
+Ratio = Annotated[Number, BeforeValidator(_fraction), WithJsonSchema({
+    "anyOf": [{"type": "number"}, {"type": "string", "pattern": _FRACTION.pattern}],
+    "description": "factor on the linked parameter (dimensionless, finite, not 0): 1 for a "
+    "rigid link, e.g. -20/50 (-z1/z2) for an external gear pair, +z1/z2 for an internal "
+    "one; a number or a fraction 'p/q'"})]
+
+
 class LinkRole(_Frozen):
-    """The parameter equals another vector's parameter plus ``delta``."""
+    """The parameter equals ``ratio`` times another vector's parameter plus ``delta``:
+    ``α_i = k·α_j + Δ`` (or ``r_i = k·r_j + Δ``).
+
+    ``ratio`` 1 (the default) is a rigid link; any other ratio is a transmission — a gear
+    pair (``−z1/z2`` for external gears, ``+z1/z2`` for an internal one), a gear train
+    (the product of its pairs' ratios), a planetary train (ratios from Willis' formula).
+    The rates follow exactly: ``α̇_i = k·α̇_j``, ``α̈_i = k·α̈_j``; chains compose
+    (``α_i = k_i(k_j α_m + Δ_j) + Δ_i``).  A link has one source: a 1-DOF train (one
+    member fixed) is fully written so.
+    """
 
     link: ParamName
+    ratio: Ratio = Field(1.0, description="factor on the linked parameter (dimensionless, "
+                         "finite, not 0): 1 for a rigid link, e.g. -20/50 (-z1/z2) for an "
+                         "external gear pair, +z1/z2 for an internal one; a number or a "
+                         "fraction 'p/q'")
     delta: Scalar = Field(0.0, description="constant added to the linked parameter")
 
 

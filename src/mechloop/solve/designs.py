@@ -266,7 +266,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
         if name in setup.constant:
             root = structure.links[name].root if name in structure.links else name
             value = (setup.constants[name] if name == root
-                     else setup.constants[root] + setup.deltas[name])
+                     else setup.link_value(name, setup.constants[root]))
             values[name] = np.broadcast_to(value, full)
             extra[name] = np.broadcast_to(value, (n_designs, n_extra))
     still = np.broadcast_to(0.0, full)

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -85,6 +85,11 @@ def _is_zero(term: Array | float) -> bool:
     return np.isscalar(term) and term == 0
 
 
+def _is_one(term: Array | float) -> bool:
+    """A scale that is exactly the scalar 1 (a rigid link)."""
+    return np.isscalar(term) and term == 1
+
+
 def unwrap_angles(angle: Array, ok: NDArray[np.bool_]) -> Array:
     """Make an angle continuous along positions (last axis), starting in [0, 2π).
 
@@ -149,7 +154,10 @@ class _Setup:
     """What every block of a solve shares: the compiled roles of all parameters.
 
     Constant values and link deltas are floats, or arrays shaped ``(D, 1)`` when they
-    differ between candidate designs.
+    differ between candidate designs.  A linked parameter is
+    ``scales[name] · root + deltas[name]`` (SI): ``scales`` holds the composed ratio of
+    every link name (a float, 1.0 for a rigid link; a ``(D, 1)`` array if it ever differs
+    between designs), ``deltas`` the composed constant.
     """
 
     structure: Structure
@@ -159,6 +167,12 @@ class _Setup:
     deltas: dict[str, Value]
     constant: set[str]
     varying: list[str]
+    scales: dict[str, Value] = field(default_factory=dict)
+
+    def link_value(self, name: str, root: Value) -> Value:
+        """The value of linked parameter ``name`` given its root's value (SI)."""
+        scale = self.scales.get(name, 1.0)
+        return (root if _is_one(scale) else scale * root) + self.deltas[name]
 
 
 def _setup(model: Model, structure: Structure, args: dict[int, Signal],
@@ -188,19 +202,25 @@ def _setup(model: Model, structure: Structure, args: dict[int, Signal],
                          "and argument offsets can differ between designs",
                          "vary a parameter whose role is a number, a link or an argument")
     deltas: dict[str, Value] = {}
+    scales: dict[str, Value] = {}
     for name in structure.links:
+        # p_name = scale·p_current + total; each step p_current = k·p_next + d
         total: Value = 0.0
+        scale: Value = 1.0
         current = name
         while isinstance(roles[current], LinkRole):
-            total = total + own(current, roles[current].delta)
+            step = own(current, roles[current].delta)
+            total = total + (step if _is_one(scale) else scale * step)
+            scale = scale * float(roles[current].ratio)
             current = roles[current].link
         deltas[name] = total
+        scales[name] = scale
     constant = set(constants) | {n for n, c in structure.links.items()
                                  if c.root in constants}
     varying = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"
                if f"{letter}{n}" not in constant]
     return _Setup(structure, structure.ordered(), constants, driven, deltas, constant,
-                  varying)
+                  varying, scales)
 
 
 @dataclass
@@ -239,12 +259,17 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
         if chain is None or chain.root not in params:
             return None
         root = params[chain.root]
-        delta = deltas[name]
-        param = _Param(root.value + delta, root.rate, root.accel)
-        if name[0] == "a":
-            rc, rs = root.trig()
-            cd, sd = np.cos(delta), np.sin(delta)
-            param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+        delta, scale = deltas[name], setup.scales.get(name, 1.0)
+        if _is_one(scale):
+            param = _Param(root.value + delta, root.rate, root.accel)
+            if name[0] == "a":
+                rc, rs = root.trig()
+                cd, sd = np.cos(delta), np.sin(delta)
+                param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+        else:  # a transmission: value, rate and acceleration scale by the ratio
+            param = _Param(scale * root.value + delta,
+                           None if root.rate is None else scale * root.rate,
+                           None if root.accel is None else scale * root.accel)
         params[name] = param
         return param
 
@@ -346,7 +371,8 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     zero = np.broadcast_to(0.0, (n_pos,))
     for name in setup.constant:
         root = structure.links[name].root if name in structure.links else name
-        value = setup.constants[root] + deltas.get(name, 0.0)
+        value = (setup.link_value(name, setup.constants[root]) if name in structure.links
+                 else setup.constants[root])
         values[name], rates[name], accels[name] = np.broadcast_to(value, (n_pos,)), zero, zero
     arg_kinds = {k: argument_kind(model, k) for k in model.arguments}
     between = _breaks_between(model, setup, values, broken, args, arg_kinds)
@@ -430,7 +456,7 @@ def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
                 value[...] = unwrap_angles(value, np.isfinite(value))
     for name, chain in setup.structure.links.items():
         if name in values and chain.root in values:
-            values[name][...] = values[chain.root] + setup.deltas[name]
+            values[name][...] = setup.link_value(name, values[chain.root])
 
 
 def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,

@@ -75,11 +75,16 @@ def position_tangents(model: Model, values: Mapping[str, Array],
         chain = structure.links.get(name)
         if chain is None or chain.root not in params or params[chain.root].rate is None:
             return None
-        tangent = params[chain.root].rate
+        # p = k_1(k_2(... root ...) + d_2) + d_1: each delta's seed scaled by the ratios
+        # before it, the root's tangent by all of them (a ratio is not a variable)
+        tangent: Array | float = 0.0
+        factor = 1.0
         current = name
         while isinstance(role := param_role(model, current), LinkRole):
-            tangent = tangent + seed(current)
+            tangent = tangent + factor * seed(current)
+            factor *= role.ratio
             current = role.link
+        tangent = tangent + factor * params[chain.root].rate
         params[name] = _Param(np.asarray(values[name])[None], tangent, 0.0)
         return params[name]
 

@@ -100,7 +100,7 @@ def _value(setup, structure, name: str) -> Array | float:
     if name in setup.constants:
         value = setup.constants[name]
     else:
-        value = setup.constants[structure.links[name].root] + setup.deltas[name]
+        value = setup.link_value(name, setup.constants[structure.links[name].root])
     return value[:, 0] if isinstance(value, np.ndarray) else value
 
 

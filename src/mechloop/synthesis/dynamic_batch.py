@@ -296,7 +296,7 @@ def _analog_results(model: Model, structure, overrides, k: int, n_designs: int,
     for name in setup.constant:
         root = structure.links[name].root if name in structure.links else name
         value = (setup.constants[name] if name == root
-                 else setup.constants[root] + setup.deltas[name])
+                 else setup.link_value(name, setup.constants[root]))
         values[name] = np.broadcast_to(value, shape)
         rates[name] = accels[name] = still
     return _flat_results(model, structure, values, rates, accels, broken, args, None, k)
