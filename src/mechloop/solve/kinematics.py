@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from dataclasses import field as _field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -167,7 +168,7 @@ class _Setup:
     deltas: dict[str, Value]
     constant: set[str]
     varying: list[str]
-    scales: dict[str, Value] = field(default_factory=dict)
+    scales: dict[str, Value] = _field(default_factory=dict)
 
     def link_value(self, name: str, root: Value) -> Value:
         """The value of linked parameter ``name`` given its root's value (SI)."""
@@ -320,7 +321,6 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         args = model_arguments(model, time)
 
     setup = _setup(model, structure, args)
-    deltas = setup.deltas
     out = {name: (np.empty(n_pos), np.empty(n_pos), np.empty(n_pos))
            for name in setup.varying}
     no_solution = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}

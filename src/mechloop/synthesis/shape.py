@@ -214,7 +214,8 @@ def place_model(model: Model, a: complex, b: complex) -> Model:
     """``model`` moved by the similarity ``w = a·z + b`` (SI): every length times
     ``|a|`` (constants and the deltas of links), every absolute angle plus ``arg a``
     (constant angles and the offsets of driven angles; a link's delta is relative and
-    stays, unless the link has a ratio k ≠ 1: its delta gains (1 − k)·arg a), the fixed starts of contours mapped, a start at the origin moved to ``b``.
+    stays, unless the link has a ratio k ≠ 1: its delta gains (1 − k)·arg a), the fixed
+    starts of contours mapped, a start at the origin moved to ``b``.
     The synthesis task is kept as written; loads and dynamic data are not moved."""
     scale, turn = abs(a), float(np.angle(a))
     length = unit_factor(model.units.length, "length")
