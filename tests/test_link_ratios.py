@@ -237,3 +237,14 @@ def test_a_ratio_between_kinds_and_onto_a_solved_angle_are_refused(tmp_path) -> 
     (problem,) = problems
     assert problem.path == ("vectors", 5, "a", "ratio")
     assert "contour 1 solves" in problem.message and "argument" in problem.hint
+
+
+def test_a_ratio_is_refused_as_a_design_variable(tmp_path) -> None:
+    """``vary: {a1.ratio: ...}`` names the ratio, which no synthesis varies: refused where
+    it is written, with the link's delta as the fix."""
+    text = (EXAMPLES / "log10_function_generator.yaml").read_text().replace(
+        "    r1: [10, 200]\n", "    r1: [10, 200]\n    a1.ratio: [0.5, 2]\n")
+    problems, _ = _model_problems(tmp_path, text)
+    (problem,) = problems
+    assert problem.path == ("synthesis", "vary", "a1.ratio")
+    assert "not a design variable" in problem.message and "vary a1" in problem.hint

@@ -48,6 +48,7 @@ HAND = {
 WITHOUT_BODIES = {
     "crank_slider.yaml", "eighteen_points_timing_synthesis.yaml",
     "five_points_timing_synthesis.yaml", "four_bar.yaml",
+    "gear_pair.yaml", "gear_train.yaml", "planetary_reducer.yaml",
     "four_bar_path_synthesis.yaml", "four_bar_shape_synthesis.yaml",
     "hydraulic_rocker.yaml", "log10_function_generator.yaml", "six_bar.yaml",
     "six_points_free_timing_synthesis.yaml", "six_points_line_synthesis.yaml",
