@@ -248,3 +248,22 @@ def test_a_ratio_is_refused_as_a_design_variable(tmp_path) -> None:
     (problem,) = problems
     assert problem.path == ("synthesis", "vary", "a1.ratio")
     assert "not a design variable" in problem.message and "vary a1" in problem.hint
+
+
+def test_structure_refuses_a_gear_mesh_between_bodies(tmp_path) -> None:
+    """Pinion and wheel as bodies: their mesh is a higher pair, which the structural
+    analysis does not count — refused at the ratio (the kinematics still solve), never
+    answered with the wheel as a link of its own mobility."""
+    from mechloop.structure.analysis import analyze
+
+    text = PAIR + ("bodies:\n"
+                   "  1: {name: pinion, vectors: [1], mass: 1, inertia: 0.001, center: {tail: 1}}\n"
+                   "  2: {name: wheel, vectors: [3], mass: 2, inertia: 0.01, center: {head: 3}}\n")
+    file = tmp_path / "m.yaml"
+    file.write_text(text)
+    model = load_model(file)
+    assert not solve(model).broken.any()
+    with pytest.raises(ModelError) as info:
+        analyze(model)
+    (problem,) = info.value.problems
+    assert problem.path == ("vectors", 3, "a", "ratio") and "higher pair" in problem.message
