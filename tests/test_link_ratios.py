@@ -267,3 +267,45 @@ def test_structure_refuses_a_gear_mesh_between_bodies(tmp_path) -> None:
         analyze(model)
     (problem,) = info.value.problems
     assert problem.path == ("vectors", 3, "a", "ratio") and "higher pair" in problem.message
+
+
+def _geared_rocker(ratio: float) -> mechloop.Model:
+    """A non-Grashof four-bar (crank 0.2, coupler 0.3, rocker 0.3, frame 0.45 m: it
+    assembles for |crank angle| ≤ acos(−0.653) ≈ 130.8°) whose crank is a wheel turned
+    through ``ratio`` from a pinion driven over −180°…180°; the coupler is written as
+    2/3 of the frame."""
+    return mechloop.Model.from_dict({
+        "units": {"length": "m", "angle": "deg"}, "positions": 72,
+        "arguments": {1: {"table": {0: -180, 72: 180}}},
+        "vectors": {5: {"r": 0.05, "a": {"argument": 1}},
+                    6: {"r": "function", "a": "function"},
+                    1: {"r": 0.2, "a": {"link": "a5", "ratio": ratio}},
+                    2: {"r": {"link": "r4", "ratio": "2/3"}, "a": "function"},
+                    3: {"r": 0.3, "a": "function"}, 4: {"r": 0.45, "a": 180}},
+        "contours": [{"vectors": [5, 6]}, {"vectors": [1, 2, 3, 4]}]})
+
+
+def test_existence_does_not_take_a_geared_crank_for_the_argument() -> None:
+    """Through ratio 0.25 the crank sweeps ±45° and the linkage assembles throughout; the
+    closed-form crank check (which assumes crank angle = argument + constant) is not
+    applied to it.  Through ratio 1 the crank would need the whole turn: it does not."""
+    from mechloop.solve.existence import (
+        ExistenceCheck,
+        _Resolver,
+        assembles_throughout,
+        crank_loops,
+    )
+
+    geared = _geared_rocker(0.25)
+    check = ExistenceCheck(geared)
+    assert crank_loops(_Resolver(check, {}, 1)) == []
+    # a constant through a ratio, and through a ratio after its root is overridden
+    assert _Resolver(check, {}, 1).value("r2") == pytest.approx([0.3])
+    assert _Resolver(check, {"r4": np.array([0.6, 0.3])}, 2).value("r2") == pytest.approx(
+        [0.4, 0.2])
+    assert assembles_throughout(geared).feasible.tolist() == [True]
+    assert not solve(geared).broken.any()
+    rigid = _geared_rocker(1.0)
+    assert [loop.info.number for loop in crank_loops(_Resolver(ExistenceCheck(rigid), {}, 1))
+            ] == [2]
+    assert assembles_throughout(rigid).feasible.tolist() == [False]
