@@ -309,3 +309,27 @@ def test_existence_does_not_take_a_geared_crank_for_the_argument() -> None:
     assert [loop.info.number for loop in crank_loops(_Resolver(ExistenceCheck(rigid), {}, 1))
             ] == [2]
     assert assembles_throughout(rigid).feasible.tolist() == [False]
+
+
+def test_designs_and_placement_carry_the_ratio() -> None:
+    """``solve_designs`` equals ``solve`` through ratio links (a constant's link and a
+    driven one, with overrides of a root); a similarity placement (turn 30°, scale 2)
+    turns every angle of the gear pair by 30° — the delta of the ratio link gains
+    (1 − k)·30° — and doubles every length."""
+    from mechloop.synthesis.shape import place_model
+
+    geared = _geared_rocker(0.25)
+    one = solve(geared)
+    many = solve_designs(geared, {"r4": np.array([0.45, 0.6]), "a1": np.array([0.0, 0.1])})
+    for name in ("r2", "a1", "a2", "a3"):
+        np.testing.assert_allclose(np.asarray(many.values[name])[0], one.value(name),
+                                   atol=1e-12)
+    assert np.asarray(many.values["r2"])[1] == pytest.approx(0.4)
+    np.testing.assert_allclose(np.asarray(many.values["a1"])[1], one.value("a1") + 0.1,
+                               atol=1e-12)
+    pair = load_model(EXAMPLES / "gear_pair.yaml")
+    base, turned = solve(pair), solve(place_model(pair, 2 * np.exp(30j * DEG), 0j))
+    for n in (1, 3, 4):
+        np.testing.assert_allclose(turned.value(f"r{n}"), 2 * base.value(f"r{n}"), atol=1e-12)
+        np.testing.assert_allclose(np.exp(1j * turned.value(f"a{n}")),
+                                   np.exp(1j * (base.value(f"a{n}") + 30 * DEG)), atol=1e-12)
