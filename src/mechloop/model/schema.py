@@ -103,8 +103,17 @@ class LinkRole(_Frozen):
     pair (``−z1/z2`` for external gears, ``+z1/z2`` for an internal one), a gear train
     (the product of its pairs' ratios), a planetary train (ratios from Willis' formula).
     The rates follow exactly: ``α̇_i = k·α̇_j``, ``α̈_i = k·α̈_j``; chains compose
-    (``α_i = k_i(k_j α_m + Δ_j) + Δ_i``).  A link has one source: a 1-DOF train (one
-    member fixed) is fully written so.
+    (``α_i = k_i(k_j α_m + Δ_j) + Δ_i``).
+
+    A link has one source.  That is enough for every train with one degree of freedom:
+    with one member of a planetary train fixed, Willis' formula
+    ``(ω1 − ωH)/(ω3 − ωH) = −z3/z1`` makes every member's angle a linear function of the
+    input, so each member is a link with its ratio (``examples/planetary_reducer.yaml``).
+    A second source (``α_p = k·α_H + m·α_1 + Δ``) is needed only by a differential, with
+    two inputs; it would turn every link chain from one root into a sum over roots for
+    every reader of links (solve, designs, existence, sensitivities, dynamics), and is not
+    part of the format.  An angle linked with a ratio ≠ 1 must come (through its chain)
+    from an argument or a constant: a solved angle is known only up to whole turns.
     """
 
     link: ParamName

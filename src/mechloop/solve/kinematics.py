@@ -253,7 +253,9 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
                         if derivatives else _Param(sig.value[lo:hi] + offset, None, None))
 
     def resolve(name: str) -> _Param | None:
-        """The parameter, following links once their root is known."""
+        """The parameter, following links once their root is known: ``k·root + Δ``
+        (``setup.scales``, ``setup.deltas``), its rate and acceleration ``k`` times the
+        root's; with ``k = 1`` the cosine and sine come from the root's by rotation."""
         if name in params:
             return params[name]
         chain = structure.links.get(name)
