@@ -7,13 +7,14 @@ writes the table (``to_frame``) that ``mechloop solve`` prints for a model with 
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from mechloop.dynamics.cycle import Cycle, steady_cycle
+from mechloop.dynamics.cycle import Cycle, steady_cycles
 from mechloop.dynamics.energy import Summary, summarize
 from mechloop.dynamics.kinetostatics import ForceAnalysis, body_motions, kinetostatics
 from mechloop.dynamics.loads import Loads, build_loads
@@ -113,11 +114,11 @@ class DynamicResults:
             linear = self.reduced is not None and self.kinematics.argument_kinds[
                 self.mechanism.drives[0].argument] == "length"
             speed, accel = ("m/s", "m/s^2") if linear else ("rad/s", "rad/s^2")
-            cols[f"omega [{speed}]"] = self.cycle.motion.omega
-            cols[f"epsilon [{accel}]"] = self.cycle.motion.epsilon
+            cols[f"omega [{speed}]"] = np.ravel(self.cycle.motion.omega)
+            cols[f"epsilon [{accel}]"] = np.ravel(self.cycle.motion.epsilon)
             if self.cycle.with_flywheel is not None:
-                cols[f"omega_fw [{speed}]"] = self.cycle.with_flywheel.omega
-                cols[f"epsilon_fw [{accel}]"] = self.cycle.with_flywheel.epsilon
+                cols[f"omega_fw [{speed}]"] = np.ravel(self.cycle.with_flywheel.omega)
+                cols[f"epsilon_fw [{accel}]"] = np.ravel(self.cycle.with_flywheel.epsilon)
         extra = pd.DataFrame(cols)
         # a singular force system leaves the reactions empty: such a row is broken too
         broken = frame[["chain_break"]] | self.forces.singular[:, None]
@@ -158,14 +159,52 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     done (friction that does not settle).
     """
     require_memory(model, dynamics=True)
+    kin, placement, mechanism = compile_mechanism(model)
+    return analyze(model, kin, mechanism, lambda k: solve(model, analogs_of=k),
+                   placement=placement, friction=friction)
+
+
+def compile_mechanism(model: Model) -> tuple[Results, Placement, Mechanism]:
+    """The kinematics of ``model``, where its vectors lie, and its mechanism (bodies,
+    masses, pairs, drives: :func:`~mechloop.dynamics.mechanism.build_mechanism`)."""
     kin = solve(model)
+    placement = Placement(kin)
+    return kin, placement, build_mechanism(model, placement)
+
+
+def analyze(model: Model, kin: Results, mechanism: Mechanism,
+            analogs: Callable[[int], Results], *, placement: Placement | None = None,
+            starts: Mapping[int, NDArray[np.complex128]] | None = None,
+            designs: int | None = None, friction: bool = True, flywheel: bool = True
+            ) -> DynamicResults:
+    """The force analysis of solved kinematics: what :func:`solve_dynamics` returns.
+
+    ``kin`` are the kinematics, ``analogs(k)`` the analogs with respect to argument ``k``
+    (``solve(model, analogs_of=k)``), and ``placement`` (optional) ``Placement(kin)``.
+    With ``designs=D`` the positions of ``kin`` and of the analogs are the designs ×
+    positions ``(D·P,)`` of a population of ``model`` that share ``mechanism``
+    (:mod:`mechloop.dynamics.population`): each contour in ``starts`` begins at each
+    design's own point, friction iterates per design, and the summary and the machine's
+    cycle are per design (arrays ``(D, ...)``); a design whose friction does not settle
+    is marked in ``forces.unsettled`` and one whose cycle cannot be computed in
+    ``cycle.computed`` instead of raising.  ``flywheel=False`` leaves out the flywheel of
+    a machine (``delta``), which changes no other number.
+    """
     time = model_time(model)
     static = time is None
-    placement = Placement(kin)
-    mechanism = build_mechanism(model, placement)
-    loads = build_loads(model, mechanism, placement, time)
+    if placement is None:
+        placement = Placement(kin, starts)
+    n = kin.broken.size
+    lead = () if designs is None else (designs,)
+
+    def per_design(values: Array) -> Array:
+        return np.reshape(values, (*lead, n // (designs or 1)))
+
+    loads = build_loads(model, mechanism, placement, time, designs=designs or 1)
+    segments = None if designs is None else np.repeat(np.arange(designs), n // designs)
     try:
-        forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static)
+        forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static,
+                               segments=segments)
     except SolveError as exc:
         if not exc.message.startswith("friction"):
             raise
@@ -177,15 +216,15 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     red: Reduced | None = None
     analog_cache: dict[int, tuple[Placement, Loads]] = {}
     for drive in mechanism.drives:
-        analogs = Placement(solve(model, analogs_of=drive.argument))
-        loads_at = build_loads(model, mechanism, analogs, time)
-        analog_cache[drive.argument] = (analogs, loads_at)
+        at = Placement(analogs(drive.argument), starts)
+        loads_at = build_loads(model, mechanism, at, time, designs=designs or 1)
+        analog_cache[drive.argument] = (at, loads_at)
         balancing_vp[drive.argument] = balancing_by_virtual_power(
-            mechanism, placement, analogs, loads_at, static=static)
+            mechanism, placement, at, loads_at, static=static)
     if len(mechanism.drives) == 1:
         k = mechanism.drives[0].argument
-        analogs, loads_at = analog_cache[k]
-        red = reduced(mechanism, analogs, loads_at)
+        at, loads_at = analog_cache[k]
+        red = reduced(mechanism, at, loads_at)
         if friction:
             rate = _argument_rate(kin, k)
             with np.errstate(divide="ignore", invalid="ignore"):
@@ -194,15 +233,22 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
 
     centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
     powers = load_powers(kin, placement, mechanism, loads, forces)
-    summary = summarize(powers, forces.friction_loss, cycle_clock(kin), mechanism.total_mass,
-                        kinetic)
+    summary = summarize({name: per_design(p) for name, p in powers.items()},
+                        per_design(forces.friction_loss), per_design(cycle_clock(kin)),
+                        mechanism.total_mass, per_design(kinetic))
     cycle = None
     if model.machine is not None:
         check_machine(mechanism, red, time)
         k = mechanism.drives[0].argument
+        spec = model.machine if flywheel else model.machine.model_copy(update={"delta": None})
         try:
-            cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
-                                 _argument_rate(kin, k), model.machine)
+            cycle = steady_cycles(per_design(kin.arguments[k]), per_design(kin.time),
+                                  Reduced(*(per_design(x) for x in (red.inertia,
+                                                                    red.d_inertia,
+                                                                    red.load))),
+                                  per_design(forces.friction_loss),
+                                  per_design(_argument_rate(kin, k)), spec,
+                                  failures="raise" if designs is None else "nan")
         except SolveError as exc:
             raise _machine_error(exc, k) from None
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
