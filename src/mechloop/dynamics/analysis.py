@@ -16,8 +16,14 @@ from numpy.typing import NDArray
 
 from mechloop.dynamics.cycle import Cycle, steady_cycles
 from mechloop.dynamics.energy import Summary, summarize
-from mechloop.dynamics.kinetostatics import ForceAnalysis, body_motions, kinetostatics
+from mechloop.dynamics.kinetostatics import (
+    ForceAnalysis,
+    FrictionError,
+    body_motions,
+    kinetostatics,
+)
 from mechloop.dynamics.loads import Loads, build_loads
+from mechloop.dynamics.machine import MachineError
 from mechloop.dynamics.mechanism import Mechanism, build_mechanism
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.dynamics.reduced import Reduced, balancing_by_virtual_power, reduced
@@ -158,16 +164,19 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     problem) and :class:`~mechloop.errors.SolveError` when the force analysis cannot be
     done (friction that does not settle).
     """
-    require_memory(model, dynamics=True)
-    kin, placement, mechanism = compile_mechanism(model)
-    return analyze(model, kin, mechanism, lambda k: solve(model, analogs_of=k),
+    require_memory(model, dynamics=True)  # the kinematics' needs included
+    kin, placement, mechanism = compile_mechanism(model, memory_checked=True)
+    return analyze(model, kin, mechanism,
+                   lambda k: solve(model, analogs_of=k, memory_checked=True),
                    placement=placement, friction=friction)
 
 
-def compile_mechanism(model: Model) -> tuple[Results, Placement, Mechanism]:
+def compile_mechanism(model: Model, *, memory_checked: bool = False
+                      ) -> tuple[Results, Placement, Mechanism]:
     """The kinematics of ``model``, where its vectors lie, and its mechanism (bodies,
-    masses, pairs, drives: :func:`~mechloop.dynamics.mechanism.build_mechanism`)."""
-    kin = solve(model)
+    masses, pairs, drives: :func:`~mechloop.dynamics.mechanism.build_mechanism`);
+    ``memory_checked`` as for :func:`~mechloop.solve.kinematics.solve`."""
+    kin = solve(model, memory_checked=memory_checked)
     placement = Placement(kin)
     return kin, placement, build_mechanism(model, placement)
 
@@ -205,9 +214,7 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
     try:
         forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static,
                                segments=segments)
-    except SolveError as exc:
-        if not exc.message.startswith("friction"):
-            raise
+    except FrictionError as exc:
         raise exc.at(_friction_path(model), "lower the coefficient of friction there "
                      "(friction.coefficient, or a joint's friction) or check the pin radii "
                      "and slider lengths") from None
@@ -265,21 +272,21 @@ def _friction_path(model: Model) -> tuple[str | int, ...]:
 
 
 #: What to change in the model file when the machine motion cannot be found, by the
-#: start of the message of :mod:`mechloop.dynamics.machine` / :mod:`.cycle`.
+#: cause of :class:`~mechloop.dynamics.machine.MachineError`: (key, fix).
 _MACHINE_FIXES = {
-    "machine motion needs the whole cycle": (
+    "cycle": (
         "machine", "remove the chain break first (mechloop solve lists the positions): "
         "check the dimensions, the variant and the argument range"),
-    "machine motion needs the input to advance": (
+    "advance": (
         "arguments", "make the argument's table or law increase from position 0 to N"),
-    "the machine stops": (
+    "stops": (
         "time", "raise the speed (time: {rpm: ...}), lower the loads, or give the moving "
         "bodies more inertia (a flywheel mass on the input link)"),
-    "j_red must be positive": (
+    "inertia": (
         "bodies", "the machine has no moving mass at some positions (its reduced moment of "
         "inertia is zero there): give the moving bodies masses and moments of inertia "
         "(bodies: mass:, inertia:)"),
-    "the motion is not steady": (
+    "unsteady": (
         "machine", "check the loads over the cycle: positions 0..N must be one whole cycle "
         "of the input"),
 }
@@ -287,11 +294,11 @@ _MACHINE_FIXES = {
 
 def _machine_error(exc: SolveError, argument: int) -> ModelSolveError:
     """``exc`` from the machine motion told at the key of the model to change."""
-    for start, (key, hint) in _MACHINE_FIXES.items():
-        if exc.message.startswith(start):
-            path: tuple[str | int, ...] = ("arguments", argument) if key == "arguments" \
-                else (key,)
-            return exc.at(path, hint)
+    if isinstance(exc, MachineError) and exc.cause in _MACHINE_FIXES:
+        key, hint = _MACHINE_FIXES[exc.cause]
+        path: tuple[str | int, ...] = ("arguments", argument) if key == "arguments" \
+            else (key,)
+        return exc.at(path, hint)
     return exc.at(("machine",), "check the loads, masses and speed of the machine "
                   "(forces, moments, bodies, time)")
 
