@@ -342,7 +342,7 @@ def mass_terms(mechanism: Mechanism, placement: Placement, static: bool
     """Centres of mass of the bodies, the common centre, the inertia loads (force, moment
     per body; none when ``static``) and the kinetic energy (J), arrays over positions.
     Masses and inertias may be arrays over positions too (designs flattened into one
-    axis, :mod:`mechloop.synthesis.dynamic_batch`)."""
+    axis, :mod:`mechloop.dynamics.population`)."""
     centers = {}
     total = mechanism.total_mass
     for body in sorted(mechanism.bodies):
