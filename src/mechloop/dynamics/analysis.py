@@ -50,6 +50,11 @@ class DynamicResults:
     ``summary``: power and work over the cycle; ``cycle``: the machine
     motion and flywheel when the model asks for them (``machine:``).  Without model time
     the analysis is static (no inertia loads).
+
+    For a population of ``D`` designs (``analyze(..., designs=D)``,
+    :mod:`mechloop.dynamics.population`) the arrays run over designs × positions
+    ``(D·P,)``, design after design; ``summary`` and ``cycle`` hold one cycle per design
+    (numbers ``(D,)``, arrays ``(D, P)``).
     """
 
     kinematics: Results

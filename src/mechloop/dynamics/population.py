@@ -59,6 +59,10 @@ def solve_population(model: Model, overrides: Mapping[str, ArrayLike],
     if kinematics is None:
         kinematics = solve_designs(model, overrides, derivatives=True)
     n_designs, n_pos = kinematics.broken.shape
+    if kinematics.positions is not None or n_pos != model.positions + 1 \
+            or not kinematics.derivatives:
+        raise ValueError("the dynamics need the kinematics of every position with their "
+                         "derivatives: solve_designs(model, overrides, derivatives=True)")
     kin = flat_results(reference, kinematics)
     return analyze(model, kin, design_masses(model, mechanism, kin, n_designs),
                    lambda k: flat_results(reference, solve_designs(model, overrides,
