@@ -54,7 +54,8 @@ class DynamicResults:
     For a population of ``D`` designs (``analyze(..., designs=D)``,
     :mod:`mechloop.dynamics.population`) the arrays run over designs × positions
     ``(D·P,)``, design after design; ``summary`` and ``cycle`` hold one cycle per design
-    (numbers ``(D,)``, arrays ``(D, P)``).
+    (numbers ``(D,)``, arrays ``(D, P)``), and ``summary`` (with ``powers``) is left out
+    (None, and no powers) when not asked for (``analyze(..., summary=False)``).
     """
 
     kinematics: Results
@@ -68,7 +69,7 @@ class DynamicResults:
     center: Motion
     kinetic_energy: Array
     powers: dict[str, Array]
-    summary: Summary
+    summary: Summary | None
     static: bool
     inertia: dict[int, tuple[Array, Array]]
     cycle: Cycle | None = None
@@ -189,8 +190,8 @@ def compile_mechanism(model: Model, *, memory_checked: bool = False
 def analyze(model: Model, kin: Results, mechanism: Mechanism,
             analogs: Callable[[int], Results], *, placement: Placement | None = None,
             starts: Mapping[int, NDArray[np.complex128]] | None = None,
-            designs: int | None = None, friction: bool = True, flywheel: bool = True
-            ) -> DynamicResults:
+            designs: int | None = None, friction: bool = True, flywheel: bool = True,
+            summary: bool = True) -> DynamicResults:
     """The force analysis of solved kinematics: what :func:`solve_dynamics` returns.
 
     ``kin`` are the kinematics, ``analogs(k)`` the analogs with respect to argument ``k``
@@ -202,7 +203,8 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
     cycle are per design (arrays ``(D, ...)``); a design whose friction does not settle
     is marked in ``forces.unsettled`` and one whose cycle cannot be computed in
     ``cycle.computed`` instead of raising.  ``flywheel=False`` leaves out the flywheel of
-    a machine (``delta``), which changes no other number.
+    a machine (``delta``), which changes no other number; ``summary=False`` the powers
+    and the summary (work over the cycle), which no column of the table needs.
     """
     time = model_time(model)
     static = time is None
@@ -244,10 +246,12 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
                     rate != 0, forces.friction_loss / rate, 0.0)
 
     centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
-    powers = load_powers(kin, placement, mechanism, loads, forces)
-    summary = summarize({name: per_design(p) for name, p in powers.items()},
-                        per_design(forces.friction_loss), per_design(cycle_clock(kin)),
-                        mechanism.total_mass, per_design(kinetic))
+    powers, work = {}, None
+    if summary:
+        powers = load_powers(kin, placement, mechanism, loads, forces)
+        work = summarize({name: per_design(p) for name, p in powers.items()},
+                         per_design(forces.friction_loss), per_design(cycle_clock(kin)),
+                         mechanism.total_mass, per_design(kinetic))
     cycle = None
     if model.machine is not None:
         check_machine(mechanism, red, time)
@@ -264,7 +268,7 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
         except SolveError as exc:
             raise _machine_error(exc, k) from None
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
-                          centers, center, kinetic, powers, summary, static, inertia, cycle)
+                          centers, center, kinetic, powers, work, static, inertia, cycle)
 
 
 def _friction_path(model: Model) -> tuple[str | int, ...]:

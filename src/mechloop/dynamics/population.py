@@ -40,7 +40,7 @@ def solve_population(model: Model, overrides: Mapping[str, ArrayLike],
                      reference: Results, mechanism: Mechanism, *,
                      starts: Mapping[int, tuple] | None = None,
                      kinematics: DesignResults | None = None,
-                     flywheel: bool = True) -> DynamicResults:
+                     flywheel: bool = True, summary: bool = True) -> DynamicResults:
     """The dynamics of ``D`` designs of ``model`` on one axis of designs × positions.
 
     ``overrides`` are as for :func:`~mechloop.solve.designs.solve_designs` (SI, ``(D,)``);
@@ -54,7 +54,8 @@ def solve_population(model: Model, overrides: Mapping[str, ArrayLike],
     positions of the long axis, design after design (reshape to ``(D, P)``), the summary
     and the cycle per design (friction always on; a design whose friction does not
     settle or whose cycle cannot be computed is marked, not raised).  ``flywheel=False``
-    leaves out the flywheel of a machine model.
+    leaves out the flywheel of a machine model, ``summary=False`` the work over the
+    cycle.
     """
     if kinematics is None:
         kinematics = solve_designs(model, overrides, derivatives=True)
@@ -68,7 +69,7 @@ def solve_population(model: Model, overrides: Mapping[str, ArrayLike],
                    lambda k: flat_results(reference, solve_designs(model, overrides,
                                                                    analogs_of=k), k),
                    starts=_starts(model, starts or {}, n_pos), designs=n_designs,
-                   flywheel=flywheel)
+                   flywheel=flywheel, summary=summary)
 
 
 def flat_results(reference: Results, designs: DesignResults,

@@ -41,6 +41,9 @@ _OWN: WeakKeyDictionary = WeakKeyDictionary()
 #: when asked for.  A machine that runs without it runs with it, so leaving it out changes
 #: no other column and fails no design.
 FLYWHEEL_VALUES = frozenset({"omega_fw", "epsilon_fw", "flywheel"})
+#: What needs the work over the cycle (the summary), computed only when asked for.
+SUMMARY_VALUES = frozenset(name for name, path in CYCLE_VALUES.items()
+                           if path.startswith("summary."))
 
 
 def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
@@ -88,7 +91,8 @@ def dynamic_columns(problem, designs: Array, columns: Iterable[str], *,
     flat = solve_population(model, overrides, reference, mechanism,
                             starts=problem.variables.starts(designs),
                             kinematics=kin_designs,
-                            flywheel=bool(FLYWHEEL_VALUES.intersection(wanted)))
+                            flywheel=bool(FLYWHEEL_VALUES.intersection(wanted)),
+                            summary=bool(SUMMARY_VALUES.intersection(wanted)))
     table = _frame(flat, [c for c in wanted if c not in CYCLE_VALUES])
     out = {name: np.array(table[name].reshape(n_designs, n_pos)) for name in table}
     for name in (c for c in wanted if c in CYCLE_VALUES):
