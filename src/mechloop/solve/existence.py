@@ -180,6 +180,16 @@ class ExistenceCheck:
                          tuple(sorted(breaks, key=lambda b: (b.design, b.start, b.contour))))
 
 
+    def loops(self, overrides: Mapping[str, ArrayLike] | None = None) -> list[CrankLoop]:
+        """The crank loops of the model (:func:`crank_loops`) for the population
+        ``overrides`` (one design without)."""
+        over = {k: np.atleast_1d(np.asarray(v, dtype=float))
+                for k, v in (overrides or {}).items()}
+        n_designs = next(iter(over.values())).shape[0] if over else 1
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return crank_loops(_Resolver(self, over, n_designs))
+
+
 class _Resolver:
     """The values per design ``(D,)`` of the parameters that are constant over positions
     (constants, links of constants) and the offsets of driven angles, for one

@@ -294,7 +294,8 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
     return block
 
 
-def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) -> Results:
+def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
+          memory_checked: bool = False) -> Results:
     """Solve a model for positions, velocities and accelerations at every position.
 
     With ``analogs_of=k`` the derivatives are the analogs with respect to argument ``k``
@@ -303,13 +304,16 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
 
     The positions are processed in blocks of ``block`` (all contours of a block at once,
     every operation vectorized over the block); results do not depend on ``block``.
+    ``memory_checked=True``: the caller has checked that the solve fits in memory (the
+    dynamics, for all it needs).
 
     Returns :class:`~mechloop.solve.results.Results`; raises
     :class:`~mechloop.errors.ModelError` if the model is invalid and
     :class:`~mechloop.errors.SolveError` if its derivatives are undefined.
     """
     structure = require_valid(model)
-    require_memory(model)
+    if not memory_checked:
+        require_memory(model)
     n_pos = model.positions + 1
     time = model_time(model)
     if analogs_of is not None:
