@@ -61,18 +61,6 @@ class TurnCheck:
         return turns, share
 
 
-<<<<<<< HEAD
-def _value(setup, structure, name: str) -> Array | float:
-    """A constant parameter's value per design, ``(D,)`` or a float."""
-    if name in setup.constants:
-        value = setup.constants[name]
-    else:
-        value = setup.link_value(name, setup.constants[structure.links[name].root])
-    return value[:, 0] if isinstance(value, np.ndarray) else value
-
-
-=======
->>>>>>> h-batch
 def compile_turn_check(model: Model) -> TurnCheck | None:
     """The closed-form check for ``model`` or None when it does not apply: every contour
     must be a four-bar loop driven by one crank on argument 1 (which runs through a full
