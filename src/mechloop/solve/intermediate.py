@@ -46,6 +46,10 @@ Array = NDArray[np.float64]
 
 #: Elements (sweep values × positions) solved in one call: keeps the temporaries small.
 CHUNK_ELEMENTS = 1 << 18
+#: Two roots of one position closer than this (rad, relative to 1 + |θ|) over a full
+#: turn are one root found from both sides of the sweep's seam (the bracketing method
+#: converges to a few ulps).
+SAME_ROOT = 1e-10
 
 
 @dataclass(frozen=True)
@@ -333,13 +337,15 @@ def _envelope(res: IntermediateResults, structure: Structure, args: dict[int, Si
     theta, p = res.theta, res.broken.shape[0]
     periodic = res.kind == "angle" and math.isclose(abs(theta[-1] - theta[0]), 2 * math.pi,
                                                     rel_tol=1e-12)
-    # exact zeros at a sample (the last one of a full turn is the first one again)
-    last = theta.size - 1 if periodic else theta.size
-    zero = ok & (cross == 0)
-    zero[:, last:] = False
-    zp, zi = np.nonzero(zero)
-    # sign changes between neighbouring samples, both solved
-    pair = ok[:, :-1] & ok[:, 1:] & (np.sign(cross[:, :-1]) * np.sign(cross[:, 1:]) < 0)
+    # exact zeros at a sample
+    zp, zi = np.nonzero(ok & (cross == 0))
+    # sign changes between neighbouring samples, both solved; over a full turn the last
+    # sample is the first one again (its value, rounded differently, may hide a root
+    # at the seam), so the last pair closes the circle on the first sample
+    ahead = cross[:, 1:].copy()
+    if periodic:
+        ahead[:, -1] = cross[:, 0]
+    pair = ok[:, :-1] & ok[:, 1:] & (np.sign(cross[:, :-1]) * np.sign(ahead) < 0)
     bp, bi = np.nonzero(pair)
 
     def f(t: Array, pos: Array) -> Array:
@@ -352,7 +358,9 @@ def _envelope(res: IntermediateResults, structure: Structure, args: dict[int, Si
         with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
             found = find_root(f, (lo, hi), args=(bp.astype(float),))
         roots = np.where(found.success, found.x, np.nan)
-        slope = np.sign(cross[bp, bi + 1] - cross[bp, bi]) * np.sign(theta[1] - theta[0])
+        if periodic:  # no sign change inside the closing pair: the root is the seam
+            roots[~found.success & (bi == theta.size - 2)] = theta[-1]
+        slope = np.sign(ahead[bp, bi] - cross[bp, bi]) * np.sign(theta[1] - theta[0])
     else:
         roots, slope = np.empty(0), np.empty(0)
     before = np.clip(zi - 1, 0, theta.size - 1)
@@ -363,8 +371,21 @@ def _envelope(res: IntermediateResults, structure: Structure, args: dict[int, Si
     branch = np.concatenate([slope, zslope]).astype(np.int8)
     keep = np.isfinite(at) & (branch != 0)
     position, at, branch = position[keep], at[keep], branch[keep]
+    if periodic:  # a full turn: θ and θ + 2π are one point, found once
+        turn = math.copysign(2 * math.pi, theta[-1] - theta[0])
+        at = theta[0] + np.mod(at - theta[0], turn)
     order = np.lexsort((at, position))
     position, at, branch = position[order], at[order], branch[order]
+    if periodic and at.size:
+        same = np.zeros(at.size, dtype=bool)
+        near = SAME_ROOT * (1 + abs(theta[0]))
+        same[1:] = (position[1:] == position[:-1]) & (np.abs(np.diff(at)) <= near)
+        first = np.r_[True, position[1:] != position[:-1]]
+        last = np.r_[position[1:] != position[:-1], True]
+        starts, ends = np.flatnonzero(first), np.flatnonzero(last)
+        seam = (ends > starts) & (np.abs(at[ends] - at[starts] - turn) <= near)
+        same[ends[seam]] = True  # the last root of a position is its first one, turned
+        position, at, branch = position[~same], at[~same], branch[~same]
     x, y, sine = _point_at(model, structure, args, k, env.vectors, at, position, along)
     good = np.isfinite(x) & np.isfinite(y) & np.isfinite(sine)
     return EnvelopePoints(env.name, tuple(env.vectors), p, position[good], at[good],
