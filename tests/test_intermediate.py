@@ -267,3 +267,42 @@ found: list[int] = []
 def test_the_random_faces_touch_their_envelope():
     """The line families above are not all out of reach (run after them)."""
     assert sum(found) > 0, found
+
+
+# ------------------------------------------------------------------------ CLI and view
+def test_cli_solve_writes_the_long_table_and_the_envelopes(tmp_path, cam):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+
+    out = tmp_path / "cam.csv"
+    result = CliRunner().invoke(app, ["solve", str(CAM), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "361 positions × 73 values of argument 3" in result.output
+    long = pd.read_csv(tmp_path / "cam.intermediate.csv")
+    envelopes = pd.read_csv(tmp_path / "cam.envelopes.csv")
+    assert len(long) == 361 * 73 and len(envelopes) == 722
+    np.testing.assert_array_equal(long["r4 [m]"].to_numpy(), cam.values["r4"].ravel())
+    profile = envelopes[envelopes["branch"] == -1].sort_values("position")
+    x, y = cam.envelopes["profile"].curve(-1)
+    np.testing.assert_array_equal(profile["x [m]"].to_numpy(), x)
+    np.testing.assert_array_equal(profile["y [m]"].to_numpy(), y)
+    # a model without intermediate arguments writes its one table as before
+    plain = tmp_path / "plain.csv"
+    result = CliRunner().invoke(app, ["solve", str(CAM.parent / "crank_slider.yaml"),
+                                      "-o", str(plain)])
+    assert result.exit_code == 0 and sorted(p.name for p in tmp_path.iterdir()) == [
+        "cam.csv", "cam.envelopes.csv", "cam.intermediate.csv", "plain.csv"]
+
+
+def test_envelope_view_draws_the_family_and_both_branches(cam):
+    from mechloop.views.envelope import plot_envelope
+
+    figure = plot_envelope(cam)
+    lines = figure.axes[0].get_lines()
+    family = [ln for ln in lines if ln.get_color() == "0.6"]
+    assert len(family) == 33  # every 11th of 361 positions (at most 36 curves)
+    np.testing.assert_array_equal(family[1].get_xdata(), cam.point([1, 2, 5, 3])[0][11])
+    red = next(ln for ln in lines if ln.get_color() == "tab:red")
+    np.testing.assert_array_equal(red.get_xdata(), cam.envelopes["profile"].curve(-1)[0])
