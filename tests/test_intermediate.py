@@ -126,6 +126,28 @@ def test_long_table_and_envelope_table(cam):
     assert (env["envelope"] == "profile").all()
 
 
+def test_flat_faced_follower_cam_is_the_closed_form():
+    """The face's points as the intermediate argument (a length): the face touches the
+    cam at the point ``u = ds/dφ`` of the face (the follower's speed analog), written out
+    here from the cycloidal laws."""
+    res = solve_intermediate(mechloop.load_model(CAM.parent / "cam_flat_follower.yaml"))
+    env = res.envelopes["profile"]
+    assert res.kind == "length" and res.theta[0] == pytest.approx(-0.04)
+    assert np.bincount(env.position).tolist() == [1] * 361  # one contact per position
+    k = np.arange(361.0)
+    s1, d1 = _cycloidal(k / 120, H, 120)
+    s2, d2 = _cycloidal((k - 180) / 120, -H, 120)
+    s, ds_dphi = s1 + s2, (d1 + d2) * 180 / np.pi  # per position -> per rad of φ
+    psi = np.radians(-k)
+    axis = np.array([-np.sin(psi), np.cos(psi)])  # e(ψ + 90°)
+    face = np.array([np.cos(psi), np.sin(psi)])  # e(ψ)
+    contact = (40 + s) * axis + ds_dphi * face
+    np.testing.assert_allclose(env.theta * 1e3, ds_dphi, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(env.x * 1e3, contact[0], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(env.y * 1e3, contact[1], rtol=0, atol=1e-9)
+    assert np.abs(env.tangency).max() < 1e-12
+
+
 # ---------------------------------------------------------------- model checks
 def _cam_data() -> dict:
     return mechloop.load_model(CAM).model_dump(by_alias=True, exclude_none=True)

@@ -46,7 +46,7 @@ HAND = {
 }
 
 WITHOUT_BODIES = {
-    "cam_roller_follower.yaml",
+    "cam_flat_follower.yaml", "cam_roller_follower.yaml",
     "crank_slider.yaml", "eighteen_points_timing_synthesis.yaml",
     "five_points_timing_synthesis.yaml", "four_bar.yaml",
     "four_bar_path_synthesis.yaml", "four_bar_shape_synthesis.yaml",
