@@ -328,3 +328,16 @@ def test_envelope_view_draws_the_family_and_both_branches(cam):
     np.testing.assert_array_equal(family[1].get_xdata(), cam.point([1, 2, 5, 3])[0][11])
     red = next(ln for ln in lines if ln.get_color() == "tab:red")
     np.testing.assert_array_equal(red.get_xdata(), cam.envelopes["profile"].curve(-1)[0])
+
+
+def test_a_sweep_too_large_for_the_memory_is_refused_at_its_count(monkeypatch):
+    import importlib
+
+    intermediate = importlib.import_module("mechloop.solve.intermediate")
+    monkeypatch.setattr(intermediate, "available_memory", lambda: 10 * 2**20)
+    with pytest.raises(ModelError) as info:
+        solve_intermediate(mechloop.load_model(CAM))
+    problem = info.value.problems[0]
+    assert problem.path == ("arguments", 3, "intermediate", "count")
+    # 0.8 · 10 MiB over 361 positions × (3 parameters · 120 B + 8 B) per value: 63
+    assert "at most about 63 here" in problem.hint

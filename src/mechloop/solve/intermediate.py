@@ -32,7 +32,7 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from mechloop.errors import SolveError
+from mechloop.errors import ModelSolveError, Problem, SolveError
 from mechloop.model.check import argument_kind, require_valid
 from mechloop.model.intermediate import dependents, intermediate_numbers
 from mechloop.model.schema import ArgumentRole, Envelope, Model
@@ -40,6 +40,7 @@ from mechloop.model.structure import Structure, param_role
 from mechloop.model.units import to_si
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import _Setup, _setup, _solve_block, solve, unwrap_angles
+from mechloop.solve.memory import USABLE_SHARE, available_memory
 from mechloop.solve.results import Results
 
 Array = NDArray[np.float64]
@@ -197,6 +198,7 @@ def solve_intermediate(model: Model, *, results: Results | None = None,
                         to_si(spec.intermediate.to, kind, unit), spec.intermediate.count)
     reached, contours = dependents(model, structure, k)
     names = [n for n in base.varying() if n in reached]
+    _require_memory(model, k, len(names))
     args = model_arguments(model, model_time(model))
     n_pos = model.positions + 1
     m = theta.size
@@ -240,6 +242,32 @@ def solve_intermediate(model: Model, *, results: Results | None = None,
         found = {e.name: _envelope(result, structure, args, e) for e in model.envelopes}
         result = replace(result, envelopes=found)
     return result
+
+
+#: Bytes held per (position, swept value) per dependent parameter: its value, rate,
+#: acceleration and two derivatives by the argument (float64), the long table's copy of
+#: them, and room for the solve's temporaries.
+BYTES_PER_ELEMENT = 5 * 8 * 3
+
+
+def _require_memory(model: Model, k: int, parameters: int) -> None:
+    """Refuse a sweep whose arrays would not fit in the memory available (at the
+    argument's ``count``, with the most that fits)."""
+    available = available_memory()
+    if available is None:
+        return
+    cells = (model.positions + 1) * model.arguments[k].intermediate.count
+    per_cell = BYTES_PER_ELEMENT * max(parameters, 1) + 8
+    budget = USABLE_SHARE * available
+    if cells * per_cell <= budget:
+        return
+    most = max(int(budget // (per_cell * (model.positions + 1))), 2)
+    raise ModelSolveError([Problem(
+        ("arguments", k, "intermediate", "count"), f"sweeping argument {k} over "
+        f"{model.arguments[k].intermediate.count:,} values in {model.positions + 1:,} "
+        f"positions needs about {cells * per_cell / 2**30:.3g} GiB of memory; this "
+        f"machine has {available / 2**30:.3g} GiB available",
+        f"sweep fewer values (at most about {most:,} here) or use fewer positions")])
 
 
 def _unwrap(setup: _Setup, values: dict[str, Array]) -> None:
