@@ -341,3 +341,11 @@ def test_a_sweep_too_large_for_the_memory_is_refused_at_its_count(monkeypatch):
     assert problem.path == ("arguments", 3, "intermediate", "count")
     # 0.8 · 10 MiB over 361 positions × (3 parameters · 120 B + 8 B) per value: 63
     assert "at most about 63 here" in problem.hint
+
+
+def test_a_saved_model_writes_the_sweep_as_a_file_does(tmp_path):
+    model = mechloop.load_model(CAM)
+    mechloop.save_model(model, tmp_path / "cam.yaml")
+    text = (tmp_path / "cam.yaml").read_text()
+    assert "from: 0" in text and "start: 0" not in text.split("intermediate")[1][:40]
+    assert mechloop.load_model(tmp_path / "cam.yaml") == model

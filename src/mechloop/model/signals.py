@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, model_serializer
 
 from mechloop.model.numbers import (  # noqa: F401  (QuantityText, Scalar: re-exported)
     MAX_MAGNITUDE,
@@ -109,6 +109,14 @@ class Sweep(_Frozen):
     to: Scalar = Field(description="last value (model units)")
     count: int = Field(ge=2, le=MAX_INTERMEDIATE, description="number of values, ends "
                        "included (2 to 10⁵)")
+
+    @model_serializer(mode="wrap")
+    def _as_written(self, handler: Any) -> Any:
+        """Dumped with the key a file uses (``from``), with or without ``by_alias``."""
+        data = handler(self)
+        if isinstance(data, dict) and "start" in data:
+            data = {"from": data.pop("start"), **data}
+        return data
 
 
 class IntermediateArgument(_Frozen):
