@@ -349,3 +349,17 @@ def test_a_saved_model_writes_the_sweep_as_a_file_does(tmp_path):
     text = (tmp_path / "cam.yaml").read_text()
     assert "from: 0" in text and "start: 0" not in text.split("intermediate")[1][:40]
     assert mechloop.load_model(tmp_path / "cam.yaml") == model
+
+
+@pytest.mark.parametrize("sweep", [{"from": 360, "to": 0, "count": 50},
+                                   {"from": -90, "to": 270, "count": 7}])
+def test_the_envelope_does_not_depend_on_the_sampling_of_the_sweep(cam, sweep):
+    """A decreasing sweep, and a coarse one starting elsewhere on the circle, find the
+    same tangencies (the samples only bracket them)."""
+    data = _cam_data()
+    data["arguments"][3] = {"intermediate": sweep}
+    env = solve_intermediate(Model.from_dict(data)).envelopes["profile"]
+    assert np.bincount(env.position).tolist() == [2] * 361
+    for branch in (-1, 1):
+        np.testing.assert_allclose(env.curve(branch), cam.envelopes["profile"].curve(branch),
+                                   rtol=0, atol=1e-15)
