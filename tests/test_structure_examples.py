@@ -46,6 +46,7 @@ HAND = {
 }
 
 WITHOUT_BODIES = {
+    "cam_flat_follower.yaml", "cam_roller_follower.yaml",
     "crank_slider.yaml", "eighteen_points_timing_synthesis.yaml",
     "five_points_timing_synthesis.yaml", "four_bar.yaml",
     "gear_pair.yaml", "gear_train.yaml", "planetary_reducer.yaml",

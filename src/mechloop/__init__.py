@@ -27,6 +27,7 @@ _EXPORTS: dict[str, str] = {
     "Contour": "mechloop.model.schema",
     "DynamicResults": "mechloop.dynamics.analysis",
     "GroupMechanism": "mechloop.model.groups",
+    "IntermediateArgument": "mechloop.model.schema",
     "LawArgument": "mechloop.model.schema",
     "LinkRole": "mechloop.model.schema",
     "MechloopError": "mechloop.errors",
@@ -46,6 +47,7 @@ _EXPORTS: dict[str, str] = {
     "save_model": "mechloop.model.load",
     "solve": "mechloop.solve.kinematics",
     "solve_dynamics": "mechloop.dynamics.analysis",
+    "solve_intermediate": "mechloop.solve.intermediate",
 }
 
 __all__ = [
@@ -54,6 +56,7 @@ __all__ = [
     "Contour",
     "DynamicResults",
     "GroupMechanism",
+    "IntermediateArgument",
     "LawArgument",
     "LinkRole",
     "MechloopError",
@@ -73,6 +76,7 @@ __all__ = [
     "save_model",
     "solve",
     "solve_dynamics",
+    "solve_intermediate",
 ]  # the keys of _EXPORTS
 
 

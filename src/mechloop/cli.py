@@ -190,6 +190,8 @@ def solve(
     m = load_model(model)
     if output is not None:
         check_table_size(m.positions + 1, 0, output)
+    extra = _intermediate_outputs(m, output)
+    _outputs(model, force, *((path, SUFFIXES) for path in extra))
     if m.bodies:
         dynamic = _dynamics(m, model)
         results, frame = dynamic.kinematics, dynamic.to_frame()
@@ -218,6 +220,38 @@ def solve(
     broken = int(results.broken.sum())
     out.print(f"wrote {output} ({rows} positions, {len(frame.columns)} columns"
               + (f", {broken} with a chain break" if broken else "") + ")")
+    if extra:
+        _write_intermediate(m, results, *extra)
+
+
+def _intermediate_outputs(m, output: Path | None) -> tuple[Path, ...]:
+    """The tables a model with an intermediate argument adds beside ``output``: the long
+    table and the envelopes (``name.intermediate.csv``, ``name.envelopes.csv``)."""
+    from mechloop.model.intermediate import intermediate_numbers
+
+    if output is None or not intermediate_numbers(m):
+        return ()
+    return (output.with_suffix(f".intermediate{output.suffix}"),
+            output.with_suffix(f".envelopes{output.suffix}"))
+
+
+def _write_intermediate(m, results, long: Path, envelopes: Path) -> None:
+    """Solve over the intermediate argument and write its two tables."""
+    from mechloop.output.tables import check_table_size
+    from mechloop.solve.intermediate import solve_intermediate
+
+    solved = solve_intermediate(m, results=results)
+    frame = solved.to_frame()
+    check_table_size(len(frame), len(frame.columns), long)
+    _write_frame(frame, long)
+    bad = int(solved.broken.sum())
+    out.print(f"wrote {long} ({solved.broken.shape[0]} positions × {solved.theta.size} "
+              f"values of argument {solved.argument}"
+              + (f", {bad} with a chain break" if bad else "") + ")")
+    table = solved.envelope_frame()
+    _write_frame(table, envelopes)
+    out.print(f"wrote {envelopes} ({len(table)} envelope points of "
+              f"{len(solved.envelopes)} envelope(s))")
 
 
 def _write_frame(frame, output: Path) -> None:
@@ -291,7 +325,7 @@ def energy(model: ModelPath) -> None:
 
 PLOTS = ("plan", "overlay", "trajectories", "parameters", "combination", "angle",
          "increment", "reduced", "balancing", "reactions", "hodograph", "summary", "motion",
-         "structure")
+         "structure", "envelope")
 
 
 def _split(text: str | None) -> list[str]:
@@ -350,6 +384,7 @@ def plot(
         --against arg1 -o s.png
     mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
         --joint A -o hod.svg
+    mechloop plot examples/cam_roller_follower.yaml envelope -o cam.png
     ```
     """
     from mechloop.model.load import load_model
@@ -366,6 +401,15 @@ def plot(
     display = Display(**dict(item.split("=", 1) for item in _split(units)))
     if kind == "structure":
         save_figure(formula.plot_structure(m), output)
+        out.print(f"wrote {output}")
+        return
+    if kind == "envelope":  # the family over the intermediate argument and its envelope
+        from mechloop.solve.intermediate import solve_intermediate
+        from mechloop.views.envelope import plot_envelope
+
+        listed = _split(names)
+        save_figure(plot_envelope(solve_intermediate(m), listed[0] if listed else None,
+                                  display=display), output)
         out.print(f"wrote {output}")
         return
     results = _dynamics(m, model) if m.bodies else solve_model(m)

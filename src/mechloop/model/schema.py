@@ -35,9 +35,11 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
+from mechloop.model.intermediate import Envelope
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
     Argument,
+    IntermediateArgument,
     LawArgument,
     LawName,
     Number,
@@ -229,6 +231,9 @@ class Model(_Frozen):
     friction: Friction = Field(Friction(), description="friction defaults for every joint")
     machine: Machine | None = Field(None, description="machine motion and flywheel sizing "
                                     "(one-input machines)")
+    envelopes: list[Envelope] = Field(
+        default_factory=list, description="envelopes of the curves a point draws over the "
+        "intermediate argument, one per position (e.g. a cam profile)")
     synthesis: SynthesisTask | None = Field(
         None, description="a synthesis task: dimensions to vary, the target, conditions, "
         "search (mechloop synthesize)")
