@@ -47,6 +47,7 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
     UnitName,
     _Frozen,
 )
+from mechloop.model.simulate import Simulate
 from mechloop.model.synthesis import SynthesisTask
 
 FUNCTION = "function"
@@ -181,6 +182,8 @@ class Model(_Frozen):
     friction: Friction = Field(Friction(), description="friction defaults for every joint")
     machine: Machine | None = Field(None, description="machine motion and flywheel sizing "
                                     "(one-input machines)")
+    simulate: Simulate | None = Field(None, description="motion in time of a one-input "
+                                      "machine under a motor (mechloop simulate)")
     synthesis: SynthesisTask | None = Field(
         None, description="a synthesis task: dimensions to vary, the target, conditions, "
         "search (mechloop synthesize)")
