@@ -156,6 +156,7 @@ class Simulation:
     motor: MotorCurve | None
     settings: Settings
     segments: list[Segment] = field(repr=False, default_factory=list)
+    steps: int = 0
 
     @property
     def end(self) -> Event:
@@ -167,6 +168,10 @@ class Simulation:
         output."""
         y = _dense(self.segments, np.atleast_1d(np.asarray(t, dtype=float)))
         return y[0], y[1]
+
+    def motor_work_at(self, t: ArrayLike) -> Array:
+        """The motor's work since time 0 at times ``t`` (s), J, shape (n,)."""
+        return _dense(self.segments, np.atleast_1d(np.asarray(t, dtype=float)))[2]
 
     def cycle_profile(self, cycle: int = -1) -> tuple[Array, Array, Array]:
         """``(q, t, ω)`` at the model's positions during completed cycle ``cycle`` (an
@@ -231,15 +236,15 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
     t, y = 0.0, np.array([q0, omega0, 0.0])
     lap_t, lap_q = 0.0, q0
     steady_time: float | None = None
+    steps = 0
     while True:
         driven = motor is not None and t < off
 
         def rhs(_t: float, s: Array, driven=driven, lap_q=lap_q) -> Array:
-            q, w = s[0] + lap_q, s[1]
+            q, w = float(s[0]) + lap_q, float(s[1])
             drive = float(motor.torque(np.asarray(w))) if driven else 0.0
-            m = machine.m(q, lap=lap_q)
-            return np.array([w, (m + drive - 0.5 * machine.dj(q) * w * w) / machine.j(q),
-                             drive * w])
+            j, dj, m = machine.terms(q, lap_q)
+            return np.array([w, (m + drive - 0.5 * dj * w * w) / j, drive * w])
 
         checks = {"stopped": _event(1, 0.0, -1.0)}
         if machine.periodic:
@@ -259,6 +264,7 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
             raise SolveError(f"the integrator failed at t = {sol.t[-1]:.6g} s: "
                              f"{sol.message}", "loosen rtol/atol or try method: Radau")
         segments.append(Segment(t, float(sol.t[-1]), sol.sol, lap_q))
+        steps += sol.t.size - 1
         t, y = float(sol.t[-1]), sol.y[:, -1] + [lap_q, 0.0, 0.0]
         hits = sorted((float(te[0]), order, kind) for order, (kind, te) in
                       enumerate(zip(checks, sol.t_events, strict=True)) if te.size)
@@ -297,7 +303,7 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
             events.append(Event("duration", t, y[0], y[1]))
             break
     return _assemble(machine, motor, settings, events, segments, starts, times,
-                     steady_time)
+                     steady_time, steps)
 
 
 def _event(index: int, value: float, direction: float) -> Callable[[float, Array], float]:
@@ -323,7 +329,7 @@ def _dense(segments: list[Segment], t: Array) -> Array:
 
 def _assemble(machine: ReducedMachine, motor: MotorCurve | None, settings: Settings,
               events: list[Event], segments: list[Segment], starts: list[float],
-              times: list[float], steady_time: float | None) -> Simulation:
+              times: list[float], steady_time: float | None, steps: int) -> Simulation:
     """The output rows of a finished run."""
     t_final = events[-1].t
     if settings.every == "cycle":
@@ -345,7 +351,7 @@ def _assemble(machine: ReducedMachine, motor: MotorCurve | None, settings: Setti
     return Simulation(t, q, w, eps, drive, m, j, kinetic, w_motor, load_work, balance,
                       events, np.array(starts), cycle_time,
                       machine.period / cycle_time if times else np.empty(0), steady_time,
-                      machine, motor, settings, segments)
+                      machine, motor, settings, segments, steps)
 
 
 def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
