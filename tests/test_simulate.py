@@ -36,7 +36,7 @@ def _bound(sim) -> float:
 
 
 def _slider_crank(*, constant_inertia: bool = False, moments=(), forces=(), gravity=False,
-                  extra=None) -> mechloop.Model:
+                  extra=None, turn: float = 360) -> mechloop.Model:
     """The offset slider-crank of examples/crank_slider_dynamics.yaml (crank 0.05 m, rod
     0.2 m) at 600 rpm nominal; with ``constant_inertia`` only the crank has inertia (0.05
     kg·m² about its pivot), so J_red is constant."""
@@ -50,7 +50,7 @@ def _slider_crank(*, constant_inertia: bool = False, moments=(), forces=(), grav
                       "center": {"vector": 2, "share": 0.3}},
                   3: {"vectors": [3], "mass": 1.2, "center": {"tail": 3}}}
     data = {"positions": 72, "time": {"rpm": 600},
-            "arguments": {1: {"table": {0: 0, 72: 360}}},
+            "arguments": {1: {"table": {0: 0, 72: turn}}},
             "vectors": {1: {"r": 0.05, "a": {"argument": 1}}, 2: {"r": 0.2, "a": "function"},
                         3: {"r": "function", "a": 180}, 4: {"r": 0.01, "a": 90}},
             "contours": [{"vectors": [1, 2, 3, 4]}], "bodies": bodies,
@@ -234,6 +234,18 @@ def test_stop_at_an_angle_and_rows_every_cycle():
     assert sim.time.size == 4
 
 
+def test_a_range_that_is_not_a_whole_turn_ends_the_run_where_it_ends():
+    # crank over 0..180 deg only: J is constant (it returns), yet the model is a range,
+    # not a cycle; q = M t^2 / (2 J) reaches pi at t = sqrt(2 J pi / M)
+    model = _slider_crank(constant_inertia=True, moments=[{"body": 1, "value": 2.0}],
+                          turn=180)
+    sim = simulate(model, {"duration": 10, **TIGHT})
+    assert not sim.machine.periodic
+    assert sim.end.kind == "range" and sim.end.q == pytest.approx(math.pi, rel=1e-10)
+    assert sim.end.t == pytest.approx(math.sqrt(2 * 0.05 * math.pi / 2.0), rel=1e-9)
+    assert sim.cycle_time.size == 0
+
+
 def test_a_motor_too_weak_to_start_stops_at_once():
     model = _slider_crank(constant_inertia=True, moments=[{"body": 1, "value": -2.0}])
     sim = simulate(model, {"motor": {"constant": 1.0}, "duration": 1})
@@ -270,3 +282,18 @@ def test_cli_writes_the_time_series_and_the_figure(tmp_path: Path):
     assert figure.stat().st_size > 10_000
     bad = CliRunner().invoke(app, ["simulate", str(EXAMPLES / "crank_slider_dynamics.yaml")])
     assert bad.exit_code == 2 and "simulate" in bad.output
+
+
+def test_compressor_start_up_figures():
+    # the figures README.md "Motion in time" quotes for examples/compressor_startup.yaml
+    model = mechloop.load_model(EXAMPLES / "compressor_startup.yaml")
+    sim = simulate(model)
+    assert sim.end.kind == "steady"
+    assert round(sim.steady_time, 2) == 2.72
+    assert sim.cycle_time.size == 14
+    _, _, omega = sim.cycle_profile()
+    mean = sim.cycle_speed[-1]
+    assert round(mean / RPM, 1) == 488.1
+    assert round(float((omega.max() - omega.min()) / mean), 4) == 0.0192
+    assert round(float(sim.kinetic_energy[-1])) == 2799
+    assert np.abs(sim.balance).max() < 0.02

@@ -44,6 +44,7 @@ _EXPORTS: dict[str, str] = {
     "build_model": "mechloop.model.groups",
     "load_model": "mechloop.model.load",
     "save_model": "mechloop.model.load",
+    "simulate": "mechloop.dynamics.simulate",
     "solve": "mechloop.solve.kinematics",
     "solve_dynamics": "mechloop.dynamics.analysis",
 }
@@ -71,6 +72,7 @@ __all__ = [
     "build_model",
     "load_model",
     "save_model",
+    "simulate",
     "solve",
     "solve_dynamics",
 ]  # the keys of _EXPORTS

@@ -51,10 +51,13 @@ class ReducedMachine:
     load : array, shape (P,), N·m — reduced moment of the loads at ``q``.
     d_inertia : array, shape (P,), kg·m²/rad, optional — the analogs' ``dJ/dq``, only to
         check the spline's slope (:class:`Interpolation`).
+    periodic : bool, optional — False: the samples are a range, not a cycle, even if
+        ``J`` returns to its first value (an input that does not turn whole turns); by
+        default a machine is periodic when ``J`` returns.
     """
 
     def __init__(self, q: ArrayLike, inertia: ArrayLike, load: ArrayLike,
-                 d_inertia: ArrayLike | None = None):
+                 d_inertia: ArrayLike | None = None, *, periodic: bool | None = None):
         q = np.asarray(q, dtype=float)
         j = np.asarray(inertia, dtype=float)
         m = np.asarray(load, dtype=float)
@@ -70,7 +73,7 @@ class ReducedMachine:
                              "give the moving bodies masses; remove chain breaks")
         self.q, self.inertia, self.load = q, j, m
         self.start, self.period = float(q[0]), float(q[-1] - q[0])
-        self.periodic = _returns(j)
+        self.periodic = _returns(j) and periodic is not False
         self._j = _spline(q, j, self.periodic)
         self._dj = self._j.derivative()
         self._m = _spline(q, m, self.periodic and _returns(m))
@@ -88,7 +91,8 @@ class ReducedMachine:
 
     def with_inertia(self, extra: float) -> ReducedMachine:
         """The same machine with a constant inertia added (a flywheel, a rotor), kg·m²."""
-        return ReducedMachine(self.q, self.inertia + extra, self.load, self.d_inertia)
+        return ReducedMachine(self.q, self.inertia + extra, self.load, self.d_inertia,
+                              periodic=self.periodic)
 
     def wrap(self, q: ArrayLike) -> tuple[Array, Array]:
         """``(turns, q_in)``: ``q = q_in + turns·L`` with ``q_in`` in the model's range

@@ -362,7 +362,9 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
 
     The reduced inertia and loads come from :func:`mechloop.solve_dynamics` (pass its
     result as ``dynamics`` to reuse it) over the model's positions, which must be one cycle
-    of the input (an angle argument) or, for a machine that is not periodic, its range.
+    of the input (an angle argument over whole turns) or, for a machine that is not
+    periodic (its range is not whole turns, or ``J`` does not return), its range: the run
+    then ends where the input leaves it.
     ``progress(done, total)`` is called as the run goes (see :func:`integrate`).
 
     Raises :class:`~mechloop.errors.ModelError` (located at the key to change) when the
@@ -427,8 +429,12 @@ def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults
         rate = _argument_rate(kin, k)
         with np.errstate(divide="ignore", invalid="ignore"):
             load -= np.where(rate != 0, dynamics.forces.friction_loss / rate, 0.0)
+    q = np.asarray(kin.arguments[k], dtype=float)
+    turns = (q[-1] - q[0]) / (2 * np.pi)
+    whole = round(turns) >= 1 and abs(turns - round(turns)) <= 1e-9 * turns
     try:
-        machine = ReducedMachine(kin.arguments[k], red.inertia, load, red.d_inertia)
+        machine = ReducedMachine(q, red.inertia, load, red.d_inertia,
+                                 periodic=None if whole else False)
     except SolveError as exc:
         key = ("arguments", k) if "advance" in exc.message else ("bodies",)
         raise exc.at(key) from None
