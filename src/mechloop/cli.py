@@ -253,6 +253,16 @@ def energy(model: ModelPath) -> None:
     dynamic = _dynamics(m, model)
     summary = dynamic.summary
     clock = "s" if not dynamic.static else "argument 1"
+    broken = dynamic.kinematics.broken | dynamic.forces.singular
+    if broken.any():
+        from mechloop.solve.results import compress_positions
+
+        err.print(f"[bold yellow]warning:[/] the chain breaks (or the force analysis is "
+                  f"singular) at {int(broken.sum())} of {broken.size} positions "
+                  f"({compress_positions(np.flatnonzero(broken))}): the works below leave "
+                  "out the steps next to them, so they, the loss coefficient and the "
+                  "efficiency are not the cycle's — remove the break (dimensions, variant, "
+                  "argument range) before reading them")
     table = Table(title=f"Summary characteristics — {m.name or model}")
     for head in ("load", "A+ [J]", "A- [J]", "max N [W]", "min N [W]", "mean N [W]",
                  "N per kg [W/kg]"):
@@ -266,6 +276,14 @@ def energy(model: ModelPath) -> None:
               f"({clock}): driving {summary.driving_work:.6g} J, friction "
               f"{summary.friction_work:.6g} J, change of kinetic energy "
               f"{summary.kinetic_energy_change:.6g} J")
+    residual = sum(r.positive_work + r.negative_work for r in summary.rows) \
+        - summary.kinetic_energy_change
+    largest = max((r.positive_work - r.negative_work for r in summary.rows), default=0.0)
+    out.print(f"energy balance: the works of all loads, the drive and friction less the "
+              f"change of kinetic energy leave {residual:.3g} J"
+              + (f" ({abs(residual) / largest:.2g} of the largest work; the trapezoidal "
+                 "rule over the positions)" if largest > 0 else "")
+              + (" — positions with a break are left out" if broken.any() else ""))
     if np.isnan(summary.efficiency):
         out.print("no load does net positive work over the cycle: loss coefficient and "
                   "efficiency are undefined")
