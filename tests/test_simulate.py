@@ -265,6 +265,9 @@ def test_model_problems_are_located():
             "stall_torque": 1, "idle_rpm": 10}}, "duration": 1}})
     assert "exactly one characteristic" in str(info.value)
     assert info.value.problems[0].path[:2] == ("simulate", "motor")
+    with pytest.raises(ModelError) as info:  # settings given in code are checked alike
+        simulate(model, {"duration": -1})
+    assert info.value.problems[0].path == ("simulate", "duration")
 
 
 def test_cli_writes_the_time_series_and_the_figure(tmp_path: Path):

@@ -381,7 +381,14 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
                                       "add simulate: {motor: ..., duration: 5} or pass "
                                       "settings")])
     elif not isinstance(settings, Simulate):
-        settings = Simulate.model_validate(settings)
+        from pydantic import ValidationError
+
+        try:
+            settings = Simulate.model_validate(settings)
+        except ValidationError as exc:
+            raise ModelError([Problem(("simulate", *e["loc"]), e["msg"],
+                                      "see the simulate: section of the model schema")
+                              for e in exc.errors()]) from None
     if dynamics is None:
         from mechloop.dynamics.analysis import solve_dynamics
 
