@@ -246,6 +246,27 @@ def test_a_range_that_is_not_a_whole_turn_ends_the_run_where_it_ends():
     assert sim.cycle_time.size == 0
 
 
+def test_a_start_inside_the_cycle_under_a_load_table_that_jumps_at_its_end():
+    # a moment on the crank rising from 0 to 3 N*m over the turn and back to 0 at its end
+    # (the table does not return: a jump at every 360 deg); J = 0.05 constant; from rest
+    # at 90 deg the kinetic energy is the work A(q) - A(90 deg), with
+    # A(q) = 3·pi·k + 3 x^2 / (4 pi) for q = 2 pi k + x
+    model = _slider_crank(constant_inertia=True,
+                          moments=[{"body": 1, "value": {"table": {0: 0, 72: 3}}}])
+    sim = simulate(model, {"start": {"angle": 90}, "duration": 3, **TIGHT})
+
+    def work(q):
+        k, x = np.divmod(q, 2 * np.pi)
+        return 3 * np.pi * k + 3 * x**2 / (4 * np.pi)
+
+    assert sim.q[-1] > 4 * 2 * np.pi  # through several jumps
+    expected = work(sim.q) - work(np.pi / 2)
+    assert np.allclose(0.5 * 0.05 * sim.omega**2, expected, rtol=_bound(sim),
+                       atol=_bound(sim) * expected.max())
+    # the first, partial turn (90..360 deg) is not a cycle: the cycles start at 360 deg
+    assert sim.state(sim.cycle_start[0])[0][0] == pytest.approx(2 * np.pi, rel=1e-12)
+
+
 def test_a_motor_too_weak_to_start_stops_at_once():
     model = _slider_crank(constant_inertia=True, moments=[{"body": 1, "value": -2.0}])
     sim = simulate(model, {"motor": {"constant": 1.0}, "duration": 1})

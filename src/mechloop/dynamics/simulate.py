@@ -26,7 +26,9 @@ through any number of cycles; one whose ``J`` is not (a rocker's range) stops wh
 leaves the modelled range.
 
 **Cycles and the steady state.** A cycle is one period ``L`` of ``q`` (the model's range of
-the input) from the start angle on.  Its mean speed is ``L / T_k`` (``T_k`` its duration).
+the input), from the angle of position 0 on, turn by turn (a start inside a cycle makes the
+first one partial: it is not counted).  Its mean speed is ``L / T_k`` (``T_k`` its
+duration).
 The motion is steady at the end of the first cycle whose mean speed differs from the
 previous cycle's by less than ``steady`` of itself; the **time to steady state** is the
 time at the end of that cycle.
@@ -234,7 +236,13 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
     starts: list[float] = []
     times: list[float] = []
     t, y = 0.0, np.array([q0, omega0, 0.0])
-    lap_t, lap_q = 0.0, q0
+    # laps are the model's cycles: from the angle of position 0, turn by turn; a start
+    # inside one makes the first lap partial (not counted as a cycle)
+    lap_t, lap_q, partial = 0.0, machine.start, False
+    if machine.periodic:
+        turn = math.floor((q0 - machine.start) / machine.period + 1e-12)
+        lap_q = machine.start + turn * machine.period
+        partial = q0 - lap_q > 1e-12 * machine.period
     steady_time: float | None = None
     steps = 0
     while True:
@@ -287,9 +295,10 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
             events.append(Event(kind, t, y[0], y[1]))
             break
         y[0] = lap_q + machine.period  # exactly on the cycle's end
-        starts.append(lap_t)
-        times.append(t - lap_t)
-        lap_t, lap_q = t, float(y[0])
+        if not partial:
+            starts.append(lap_t)
+            times.append(t - lap_t)
+        lap_t, lap_q, partial = t, float(y[0]), False
         if steady_time is None and len(times) >= 2 and \
                 abs(times[-1] - times[-2]) <= settings.steady * times[-1]:
             steady_time = t
