@@ -350,3 +350,24 @@ def test_simulate_agrees_with_the_multibody_oracle():
     assert q[-1] > 4 * 2 * math.pi  # several turns, through the whole speed range
     assert np.allclose(q, theta, rtol=5e-6, atol=5e-6)
     assert np.allclose(w, omega, rtol=5e-6, atol=5e-6 * omega.max())
+
+
+def test_the_view_draws_the_run():
+    from mechloop.views.motion import plot_simulation
+
+    model = _slider_crank(constant_inertia=True, moments=[{"body": 1, "value": 2.0}])
+    sim = simulate(model, {"duration": 1.0})
+    figure = plot_simulation(sim)
+    lines = {line.get_gid(): line for ax in figure.axes for line in ax.get_lines()
+             if line.get_gid()}
+    assert {"q", "omega", "epsilon", "phase"} <= lines.keys()
+    assert np.allclose(lines["omega"].get_ydata(), sim.omega / RPM)
+    assert np.allclose(lines["q"].get_ydata(), sim.q / (2 * np.pi))
+    # the phase portrait: the speed over the angle within the cycle, one line a cycle
+    phase = [line for ax in figure.axes for line in ax.get_lines() if line.get_gid() == "phase"]
+    assert len(phase) == int(sim.q[-1] // (2 * np.pi)) + 1
+    for turn, line in enumerate(phase):
+        x = line.get_xdata()
+        assert 0 <= x.min() and x.max() < 360
+        q = np.radians(x) + 2 * np.pi * turn  # omega = sqrt(2 M q / J) from rest
+        assert np.allclose(line.get_ydata() * RPM, np.sqrt(2 * 2.0 * q / 0.05), rtol=1e-6)
