@@ -198,7 +198,8 @@ def test_start_up_reaches_the_cycle_the_energy_equation_gives_for_the_motor():
     assert sim.end.kind == "steady" and sim.steady_time == sim.end.t
     changes = np.abs(np.diff(sim.cycle_speed)) / sim.cycle_speed[1:]
     assert changes[-1] < 1e-7 and np.all(changes[:-1] >= 1e-7)
-    assert np.all(changes[:-2] > changes[1:-1])  # the approach is monotonic
+    assert np.all(changes[:-2] > changes[1:-1])  # the approach is monotonic,
+    assert np.all(np.diff(sim.cycle_speed) > 0)  # from below (no overshoot)
     _, t, omega = sim.cycle_profile()
     drive = sim.motor.torque(omega)
     # the cycle returns to its start (to the steady tolerance): read it as periodic
