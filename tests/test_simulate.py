@@ -287,6 +287,10 @@ def test_model_problems_are_located():
             "stall_torque": 1, "idle_rpm": 10}}, "duration": 1}})
     assert "exactly one characteristic" in str(info.value)
     assert info.value.problems[0].path[:2] == ("simulate", "motor")
+    with pytest.raises(ModelError) as info:
+        simulate(model, {"start": {"angle": 90}, "stop_at": 45, "duration": 1})
+    assert info.value.problems[0].path == ("simulate",)
+    assert "must lie ahead of the start" in str(info.value)
     with pytest.raises(ModelError) as info:  # settings given in code are checked alike
         simulate(model, {"duration": -1})
     assert info.value.problems[0].path == ("simulate", "duration")
@@ -372,3 +376,11 @@ def test_the_view_draws_the_run():
         assert 0 <= x.min() and x.max() < 360
         q = np.radians(x) + 2 * np.pi * turn  # omega = sqrt(2 M q / J) from rest
         assert np.allclose(line.get_ydata() * RPM, np.sqrt(2 * 2.0 * q / 0.05), rtol=1e-6)
+
+
+def test_the_motors_doctest():
+    import doctest
+
+    from mechloop.dynamics import motors
+
+    assert doctest.testmod(motors, raise_on_error=True).attempted > 0

@@ -227,6 +227,10 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
                          f"modelled range {math.degrees(machine.q[0]):.6g} … "
                          f"{math.degrees(machine.q[-1]):.6g} deg of a machine that is not "
                          "periodic", "start inside the range of the input's argument")
+    if settings.stop_at is not None and not settings.stop_at > q0:
+        raise SolveError(f"stop_at ({math.degrees(settings.stop_at):.6g} deg) must lie "
+                         f"ahead of the start ({math.degrees(q0):.6g} deg)",
+                         "give an angle beyond the start angle (it grows turn by turn)")
     t_end = math.inf if settings.duration is None else float(settings.duration)
     off = math.inf if motor is None else motor.off_at
     atol = np.array([settings.atol, settings.atol,
