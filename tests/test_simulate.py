@@ -384,3 +384,29 @@ def test_the_motors_doctest():
     from mechloop.dynamics import motors
 
     assert doctest.testmod(motors, raise_on_error=True).attempted > 0
+
+
+def test_friction_enters_as_machine_takes_it():
+    # the compressor of crank_slider_friction.yaml (friction 0.1 in every pair) with a
+    # machine: section: its loads include the friction reduced at the nominal 3000 rpm,
+    # -friction_loss / (dq/dt), as machine: takes it; started on machine:'s cycle with
+    # machine:'s constant moment, the simulation runs that cycle
+    import yaml
+
+    data = yaml.safe_load((EXAMPLES / "crank_slider_friction.yaml").read_text())
+    data["machine"] = {}
+    model = mechloop.Model.from_dict(data)
+    dyn = mechloop.solve_dynamics(model)
+    steady = dyn.cycle.motion
+    sim = simulate(model, {"motor": {"constant": dyn.cycle.constant_load},
+                           "start": {"rpm": steady.omega[0] / RPM}, "cycles": 2, **TIGHT},
+                   dynamics=dyn)
+    nominal = 3000 * RPM
+    assert dyn.forces.friction_loss.max() > 10.0  # friction matters here
+    assert np.allclose(sim.machine.load, dyn.reduced.load - dyn.forces.friction_loss / nominal,
+                       rtol=1e-12, atol=1e-12)
+    _, _, omega = sim.cycle_profile(1)
+    assert np.allclose(omega, steady.omega, rtol=_bound(sim), atol=0)
+    without = simulate(model, {"friction": False, "cycles": 1, "start": {"rpm": 3000}},
+                       dynamics=dyn)
+    assert np.array_equal(without.machine.load, dyn.reduced.load)
