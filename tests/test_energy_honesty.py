@@ -35,6 +35,10 @@ def test_a_chain_that_breaks_is_told_and_its_positions_named(tmp_path: Path):
     assert f"at {int(broken.sum())} of {broken.size} positions" in result.output
     assert "are not the cycle's" in result.output
     assert "positions with a break are left out" in result.output
+    drawn = CliRunner().invoke(app, ["plot", str(path), "summary", "-o",
+                                     str(tmp_path / "summary.png")])
+    assert drawn.exit_code == 0, drawn.output
+    assert "warning: the chain breaks" in drawn.output and "works drawn" in drawn.output
 
 
 def test_a_whole_cycle_prints_no_warning_and_a_balance_at_rounding():

@@ -253,16 +253,7 @@ def energy(model: ModelPath) -> None:
     dynamic = _dynamics(m, model)
     summary = dynamic.summary
     clock = "s" if not dynamic.static else "argument 1"
-    broken = dynamic.kinematics.broken | dynamic.forces.singular
-    if broken.any():
-        from mechloop.solve.results import compress_positions
-
-        err.print(f"[bold yellow]warning:[/] the chain breaks (or the force analysis is "
-                  f"singular) at {int(broken.sum())} of {broken.size} positions "
-                  f"({compress_positions(np.flatnonzero(broken))}): the works below leave "
-                  "out the steps next to them, so they, the loss coefficient and the "
-                  "efficiency are not the cycle's — remove the break (dimensions, variant, "
-                  "argument range) before reading them")
+    broken = _warn_cycle_breaks(dynamic, "below")
     table = Table(title=f"Summary characteristics — {m.name or model}")
     for head in ("load", "A+ [J]", "A- [J]", "max N [W]", "min N [W]", "mean N [W]",
                  "N per kg [W/kg]"):
@@ -401,6 +392,24 @@ def _print_simulation(sim) -> None:
               f"balance residual at most {np.abs(sim.balance).max():.2g} J")
 
 
+def _warn_cycle_breaks(dynamic: DynamicResults, where: str):
+    """Warn that the cycle's works (and ψ, η) leave out the positions where the chain
+    breaks or the force analysis is singular; the mask of those positions."""
+    import numpy as np
+
+    broken = dynamic.kinematics.broken | dynamic.forces.singular
+    if broken.any():
+        from mechloop.solve.results import compress_positions
+
+        err.print(f"[bold yellow]warning:[/] the chain breaks (or the force analysis is "
+                  f"singular) at {int(broken.sum())} of {broken.size} positions "
+                  f"({compress_positions(np.flatnonzero(broken))}): the works {where} leave "
+                  "out the steps next to them, so they, the loss coefficient and the "
+                  "efficiency are not the cycle's — remove the break (dimensions, variant, "
+                  "argument range) before reading them")
+    return broken
+
+
 PLOTS = ("plan", "overlay", "trajectories", "parameters", "combination", "angle",
          "increment", "reduced", "balancing", "reactions", "hodograph", "summary", "motion",
          "structure")
@@ -529,6 +538,7 @@ def plot(
                             f"give --joint, one of {', '.join(results.forces.reactions)}")
         figure = dynamics.plot_hodograph(results, joint, polar=polar, display=display)
     elif kind == "summary":
+        _warn_cycle_breaks(results, "drawn")
         figure = dynamics.plot_summary(results, display=display)
     else:
         figure = dynamics.plot_machine_motion(results, display=display)
