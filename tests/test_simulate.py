@@ -410,3 +410,28 @@ def test_friction_enters_as_machine_takes_it():
     without = simulate(model, {"friction": False, "cycles": 1, "start": {"rpm": 3000}},
                        dynamics=dyn)
     assert np.array_equal(without.machine.load, dyn.reduced.load)
+
+
+def test_a_pendulum_released_from_rest_swings_with_its_closed_form_period():
+    # only the crank has mass: 2 kg at r = 0.025 m from the pivot (its middle) and 0.001
+    # kg*m^2 about its centre; gravity. Released from rest horizontal (q = 0) it swings
+    # down and back (reverse: true) as a physical pendulum of amplitude 90 deg:
+    # T = 4 sqrt(I / (m g r)) K(sin^2 45 deg), I = J + m r^2, turning at q = -180 deg
+    from scipy.special import ellipk
+
+    m, r, j, g = 2.0, 0.025, 0.001, 9.81
+    bodies = {1: {"vectors": [1], "mass": m, "inertia": j,
+                  "center": {"vector": 1, "share": 0.5}},
+              2: {"vectors": [2]}, 3: {"vectors": [3]}}
+    model = _slider_crank(gravity=True, extra={"bodies": bodies})
+    inertia = j + m * r * r
+    period = 4 * math.sqrt(inertia / (m * g * r)) * float(ellipk(0.5))
+    sim = simulate(model, {"reverse": True, "duration": 2.2 * period, **TIGHT})
+    assert sim.end.kind == "duration" and sim.cycle_time.size == 0
+    q, w = sim.state([period / 2, period, 1.5 * period, 2 * period])
+    assert np.allclose(q, [-math.pi, 0.0, -math.pi, 0.0], atol=1e-6)
+    assert np.allclose(w, 0.0, atol=1e-5 * math.sqrt(2 * m * g * r / inertia))
+    assert sim.q.min() >= -math.pi - 1e-6 and sim.q.max() <= 1e-6  # never beyond
+    assert np.abs(sim.balance).max() < _bound(sim) * m * g * r * 2 * math.pi
+    without = simulate(model, {"duration": period, **TIGHT})
+    assert without.end.kind == "stopped" and without.end.t < 1e-9  # it would turn back

@@ -79,7 +79,8 @@ class Event:
 class Settings:
     """How to integrate (SI): ``duration`` (s) and/or ``cycles`` end the run;
     ``until_steady`` stops at the first steady cycle (relative change of the mean speed
-    below ``steady``); ``stop_at``: an angle (rad) that ends the run; ``rtol``, ``atol``,
+    below ``steady``); ``reverse``: turn back where the speed passes through zero instead
+    of ending the run; ``stop_at``: an angle (rad) that ends the run; ``rtol``, ``atol``,
     ``method``: of :func:`scipy.integrate.solve_ivp` (``atol`` in rad and rad/s; the
     motor's work, J, gets ``atol`` times the largest ``J``); ``every``: output step (s),
     ``"cycle"``, or None (1/1000 of the simulated time)."""
@@ -88,6 +89,7 @@ class Settings:
     cycles: int | None = None
     until_steady: bool = False
     steady: float = 1e-4
+    reverse: bool = False
     stop_at: float | None = None
     rtol: float = 1e-8
     atol: float = 1e-9
@@ -258,9 +260,11 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
             j, dj, m = machine.terms(q, lap_q)
             return np.array([w, (m + drive - 0.5 * dj * w * w) / j, drive * w])
 
-        checks = {"stopped": _event(1, 0.0, -1.0)}
+        checks = {} if settings.reverse else {"stopped": _event(1, 0.0, -1.0)}
         if machine.periodic:
             checks["lap"] = _event(0, machine.period, +1.0)
+            if settings.reverse:
+                checks["back"] = _event(0, 0.0, -1.0)
         else:
             checks["range"] = _event(0, float(machine.q[-1]) - lap_q, +1.0)
             checks["range "] = _event(0, float(machine.q[0]) - lap_q, -1.0)
@@ -293,6 +297,10 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
             raise SolveError(f"the cycle that starts at t = {lap_t:.6g} s does not end",
                              "give a duration (s)")
         kind = hits[0][2].strip()
+        if kind == "back":  # turned back into the previous cycle: it is not a whole one
+            y[0] = lap_q
+            lap_t, lap_q, partial = t, lap_q - machine.period, True
+            continue
         if kind != "lap":
             if kind == "stopped":
                 y[1] = 0.0
@@ -416,8 +424,8 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
         settings.stop_at, "angle", model.units.angle, ("simulate", "stop_at"))
     run = Settings(duration=settings.duration, cycles=settings.cycles,
                    until_steady=settings.until_steady, steady=settings.steady,
-                   stop_at=stop_at, rtol=settings.rtol, atol=settings.atol,
-                   method=settings.method, every=settings.every)
+                   reverse=settings.reverse, stop_at=stop_at, rtol=settings.rtol,
+                   atol=settings.atol, method=settings.method, every=settings.every)
     try:
         return integrate(machine.with_inertia(extra) if extra else machine, motor, q0,
                          start.rpm * RPM, run, progress=progress)

@@ -94,7 +94,8 @@ class Simulate(_Frozen):
     integrated from ``start`` with the reduced inertia and loads of the model (over its
     positions, one cycle of the input), the motor and a flywheel.  The run ends at
     ``duration``, after ``cycles`` cycles, when the machine stops (speed 0), when the input
-    reaches ``stop_at``, or, with ``until_steady``, once the motion is steady."""
+    reaches ``stop_at``, or, with ``until_steady``, once the motion is steady; with
+    ``reverse`` it turns back instead of stopping."""
 
     motor: Motor | None = Field(None, description="the driving motor (default: none — the "
                                 "machine coasts)")
@@ -108,6 +109,9 @@ class Simulate(_Frozen):
     steady: Number = Field(1e-4, gt=0, lt=1, description="a cycle is steady when its mean "
                            "speed differs from the previous cycle's by less than this "
                            "fraction")
+    reverse: bool = Field(False, description="keep going when the speed passes through "
+                          "zero (the machine turns back: loads over positions that store "
+                          "energy, such as gravity) instead of ending the run there")
     stop_at: Scalar | None = Field(None, description="stop when the input's angle "
                                    "reaches this value (angle units; it grows by a "
                                    "cycle each cycle)")
