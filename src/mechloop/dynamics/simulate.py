@@ -190,9 +190,15 @@ class Simulation:
         targets = q0 + (self.machine.q - self.machine.q[0])
         grid = np.linspace(t0, t1, 64 * targets.size)
         t = np.interp(targets, self.state(grid)[0], grid)
-        for _ in range(4):
-            q, w = self.state(t)
-            t = np.clip(t - (q - targets) / np.maximum(w, 1e-300), t0, t1)
+        q = self.state(t)[0]
+        for _ in range(4):  # Newton's steps, each kept only where it gets closer
+            w = self.state(t)[1]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                trial = np.clip(t - (q - targets) / w, t0, t1)
+            trial = np.where(np.isfinite(trial), trial, t)
+            q_trial = self.state(trial)[0]
+            better = np.abs(q_trial - targets) < np.abs(q - targets)
+            t, q = np.where(better, trial, t), np.where(better, q_trial, q)
         return targets, t, self.state(t)[1]
 
     def to_frame(self) -> pd.DataFrame:
