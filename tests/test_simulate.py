@@ -326,6 +326,10 @@ def test_compressor_start_up_figures():
     assert round(float((omega.max() - omega.min()) / mean), 4) == 0.0192
     assert round(float(sim.kinetic_energy[-1])) == 2799
     assert np.abs(sim.balance).max() < 0.02
+    # the first cycle starts from rest: its profile is found there too
+    q, t, omega = sim.cycle_profile(0)
+    assert np.abs(sim.state(t)[0] - q).max() < 1e-9 and omega[0] == 0.0
+    assert np.all(np.diff(t) > 0)
 
 
 def test_simulate_agrees_with_the_multibody_oracle():
