@@ -36,7 +36,7 @@ def _bound(sim) -> float:
 
 
 def _slider_crank(*, constant_inertia: bool = False, moments=(), forces=(), gravity=False,
-                  extra=None, turn: float = 360) -> mechloop.Model:
+                  extra=None, turn: float = 360, crank: float = 0.05) -> mechloop.Model:
     """The offset slider-crank of examples/crank_slider_dynamics.yaml (crank 0.05 m, rod
     0.2 m) at 600 rpm nominal; with ``constant_inertia`` only the crank has inertia (0.05
     kg·m² about its pivot), so J_red is constant."""
@@ -51,7 +51,7 @@ def _slider_crank(*, constant_inertia: bool = False, moments=(), forces=(), grav
                   3: {"vectors": [3], "mass": 1.2, "center": {"tail": 3}}}
     data = {"positions": 72, "time": {"rpm": 600},
             "arguments": {1: {"table": {0: 0, 72: turn}}},
-            "vectors": {1: {"r": 0.05, "a": {"argument": 1}}, 2: {"r": 0.2, "a": "function"},
+            "vectors": {1: {"r": crank, "a": {"argument": 1}}, 2: {"r": 0.2, "a": "function"},
                         3: {"r": "function", "a": 180}, 4: {"r": 0.01, "a": 90}},
             "contours": [{"vectors": [1, 2, 3, 4]}], "bodies": bodies,
             "moments": list(moments), "forces": list(forces), **(extra or {})}
@@ -291,6 +291,9 @@ def test_model_problems_are_located():
         simulate(model, {"start": {"angle": 90}, "stop_at": 45, "duration": 1})
     assert info.value.problems[0].path == ("simulate",)
     assert "must lie ahead of the start" in str(info.value)
+    with pytest.raises(ModelError) as info:  # a crank longer than the rod: breaks
+        simulate(_slider_crank(crank=0.25), {"duration": 1})
+    assert "needs the whole cycle" in str(info.value)
     with pytest.raises(ModelError) as info:  # settings given in code are checked alike
         simulate(model, {"duration": -1})
     assert info.value.problems[0].path == ("simulate", "duration")
