@@ -29,6 +29,7 @@ HAND = {
     "crank_slider_friction.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "compressor_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     # crank 1, coupler 2, rocker 3, four pins: W = 9 − 8 = 1; coupler + rocker is an
     # RRR dyad (L1).
     "four_bar_groups.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),

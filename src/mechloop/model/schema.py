@@ -53,6 +53,7 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
     UnitName,
     _Frozen,
 )
+from mechloop.model.simulate import Simulate
 from mechloop.model.synthesis import SynthesisTask
 
 FUNCTION = "function"
@@ -234,6 +235,8 @@ class Model(_Frozen):
     envelopes: list[Envelope] = Field(
         default_factory=list, description="envelopes of the curves a point draws over the "
         "intermediate argument, one per position (e.g. a cam profile)")
+    simulate: Simulate | None = Field(None, description="motion in time of a one-input "
+                                      "machine under a motor (mechloop simulate)")
     synthesis: SynthesisTask | None = Field(
         None, description="a synthesis task: dimensions to vary, the target, conditions, "
         "search (mechloop synthesize)")
