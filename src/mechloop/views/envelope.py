@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
@@ -62,8 +64,8 @@ def plot_envelope(results: IntermediateResults, name: str | None = None, *,
     ax.set_aspect("equal")
     ax.set_xlabel(f"x [{unit}]")
     ax.set_ylabel(f"y [{unit}]")
-    ax.set_title(f"{results.model.name or 'model'}: envelope {name} over argument "
-                 f"{results.argument}")
+    ax.set_title(textwrap.fill(f"{results.model.name or 'model'}: envelope {name} over "
+                               f"argument {results.argument}", 60))
     ax.grid(True, linewidth=0.3)
     ax.legend(loc="best", fontsize="small")
     return figure
