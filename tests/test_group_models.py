@@ -627,7 +627,15 @@ def test_random_slider_cranks_match_the_slider_crank_formula(a, e_share, ratio, 
 
 
 def test_docstring_examples_run():
-    assert doctest.testmod(groups_module, raise_on_error=True).attempted > 0
+    """The docstring examples of every module of the groups package run."""
+    import importlib
+    import pkgutil
+
+    attempted = 0
+    for info in pkgutil.iter_modules(groups_module.__path__):
+        module = importlib.import_module(f"{groups_module.__name__}.{info.name}")
+        attempted += doctest.testmod(module, raise_on_error=True).attempted
+    assert attempted > 0
 
 
 def test_group_model_saves_as_a_vector_model(tmp_path):
