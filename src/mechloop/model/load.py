@@ -30,7 +30,7 @@ from mechloop.model.document import (  # noqa: F401 (re-exported: the loading AP
 )
 from mechloop.model.groups.files import model_from_group_data
 from mechloop.model.salvage import salvage, set_aside
-from mechloop.model.schema import Model
+from mechloop.model.schema import Model, set_model_reader
 from mechloop.output.atomic import atomic_write_bytes, atomic_write_text  # noqa: F401 (re-exported)
 
 
@@ -54,6 +54,9 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     if problems:
         raise located_error(problems, file, lines)
     return model
+
+
+set_model_reader(model_from_data)  # Model.from_dict reads through the loader
 
 
 def load_model(path: str | os.PathLike[str]) -> Model:

@@ -16,6 +16,7 @@ one role:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Annotated, Any, Literal
 
 from pydantic import Discriminator, Field, Tag, WithJsonSchema
@@ -31,6 +32,7 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
+from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
     Argument,
@@ -49,7 +51,16 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
 )
 from mechloop.model.synthesis import SynthesisTask
 
-FUNCTION = "function"
+#: Reads plain data into a checked model: :func:`mechloop.model.load.model_from_data`,
+#: which puts itself here (:func:`set_model_reader`).  The loader builds on the schema, so
+#: the schema does not import it; the package ``mechloop.model`` imports the loader with
+#: any of its modules, so the reader is there before a model can be read.
+_model_reader: list[Callable[..., Model]] = []
+
+
+def set_model_reader(reader: Callable[..., Model]) -> None:
+    """Make ``reader(data, file=...)`` the reader :meth:`Model.from_dict` calls."""
+    _model_reader[:] = [reader]
 
 
 ParamName = Annotated[
@@ -191,9 +202,7 @@ class Model(_Frozen):
 
         Raises :class:`mechloop.errors.ModelError` listing every problem found.
         """
-        from mechloop.model.load import model_from_data
-
-        return model_from_data(data, file=file)
+        return _model_reader[0](data, file=file)
 
 
 def model_json_schema() -> dict[str, Any]:

@@ -13,7 +13,8 @@ from dataclasses import dataclass, field
 from graphlib import CycleError, TopologicalSorter
 
 from mechloop.errors import Problem
-from mechloop.model.schema import FUNCTION, ArgumentRole, LinkRole, Model
+from mechloop.model.roles import is_function
+from mechloop.model.schema import ArgumentRole, LinkRole, Model
 
 MODULE_SOLUTIONS = {"Pl1": 1, "Pl2": 1, "Pl3": 2, "Pl4": 2}
 
@@ -22,10 +23,6 @@ def param_role(model: Model, name: str) -> object:
     """The role object of parameter ``name`` ('r3', 'a2') — raises KeyError if absent."""
     vector = model.vectors[int(name[1:])]
     return vector.r if name[0] == "r" else vector.a
-
-
-def is_function(role: object) -> bool:
-    return isinstance(role, str) and role.strip() == FUNCTION
 
 
 @dataclass(frozen=True)
