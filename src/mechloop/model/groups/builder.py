@@ -17,18 +17,37 @@ from mechloop.model.groups.dimensions import DimensionSteps
 from mechloop.model.groups.dyads import DyadSteps
 from mechloop.model.groups.inputs import InputSteps
 from mechloop.model.groups.located import BuiltModel
-from mechloop.model.groups.spec import KIND, Variant
+from mechloop.model.groups.spec import KIND, Triad, Variant
+from mechloop.model.groups.triads import TriadSteps
 from mechloop.model.schema import Model
 from mechloop.model.units import UnitProblem, unit_factor
 
 
-class Builder(InputSteps, DyadSteps, BodySteps, DimensionSteps):
+class Builder(InputSteps, DyadSteps, TriadSteps, BodySteps, DimensionSteps):
     """Turns a :class:`GroupMechanism` into a :class:`BuiltModel`: the input, the groups in
     file order, the points left, then the model's data, checked."""
 
     # -- the mechanism -------------------------------------------------------------------
 
     def run(self) -> BuiltModel:
+        """The checked vector model with its point locations and carriers."""
+        mech = self.mech
+        data = self.vector_data()
+        try:
+            model = Model.model_validate(data)
+        except ValidationError as exc:  # pragma: no cover - a builder mistake
+            raise ModelError([Problem(tuple(e["loc"]), e["msg"], "report this: the "
+                                      "generated model is invalid") for e in exc.errors()]
+                             ) from None
+        _, problems = check_model(model)
+        if problems:
+            raise ModelError(problems)
+        return BuiltModel(model, {k: v.body for k, v in self.links.items()},
+                          self.locations(), self.carriers(), mech.formula)
+
+    def vector_data(self) -> dict[str, Any]:
+        """The plain data of the vector model, before it is validated and checked; every
+        problem of the group file raised at once."""
         mech = self.mech
         for kind in ("angle", "length"):
             try:
@@ -67,22 +86,25 @@ class Builder(InputSteps, DyadSteps, BodySteps, DimensionSteps):
             data["synthesis"] = self.synthesis(mech.synthesis)
         if self.problems:
             raise ModelError(self.problems)
-        try:
-            model = Model.model_validate(data)
-        except ValidationError as exc:  # pragma: no cover - a builder mistake
-            raise ModelError([Problem(tuple(e["loc"]), e["msg"], "report this: the "
-                                      "generated model is invalid") for e in exc.errors()]
-                             ) from None
-        _, problems = check_model(model)
-        if problems:
-            raise ModelError(problems)
-        return BuiltModel(model, {k: v.body for k, v in self.links.items()},
-                          self.locations(), self.carriers(), mech.formula)
+        return data
 
     def add_group(self, i: int, g: Any) -> None:
         kind = KIND[g.kind]
         path: tuple = ("groups", i)
         dim = f"groups[{i}]"
+        if isinstance(g, Triad):
+            before = len(self.problems)
+            if not self.add_triad(g, path, dim) or len(self.problems) > before:
+                for link in g.links:
+                    if link not in self.links:
+                        self.new_link(link, None, 0.0, {}, None, None)
+                for leg in g.legs:
+                    if leg.joint not in self.points:
+                        self.new_point(leg.joint, (leg.link, g.link), self.root, (),
+                                       broken=True)
+            for link in g.links:
+                self.add_points(link)
+            return
         l1, l2 = g.links
         if g.variant == 2 and kind in ("L3", "L4", "L5"):
             why = {"L3": "its slide passes through the guide's pivot",

@@ -21,7 +21,7 @@ from mechloop.model.dynamic import (
     HeadPoint,
     TailPoint,
 )
-from mechloop.model.groups.spec import GROUND, GroupMechanism, Guide, Variant
+from mechloop.model.groups.spec import GROUND, GroupMechanism, Guide, Triad, Variant
 from mechloop.model.signals import Scalar
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
@@ -157,6 +157,10 @@ class BuilderCore:
             add(name, "ground", ("ground", name))
         add(mech.input.joint, "input", ("input", "joint"))
         for i, g in enumerate(mech.groups):
+            if isinstance(g, Triad):
+                for j, leg in enumerate(g.legs):
+                    add(leg.joint, f"groups[{i}]", ("groups", i, "legs", j, "joint"))
+                continue
             new = getattr(g, "joint", None) or getattr(g, "point", None)
             if new is not None:
                 key = "joint" if hasattr(g, "joint") else "point"
@@ -165,7 +169,7 @@ class BuilderCore:
             add(name, "points", ("points", name))
         names: dict[str, tuple] = {}
         for link, path in [(mech.input.link, ("input", "link"))] + [
-                (name, ("groups", i, "links", j)) for i, g in enumerate(mech.groups)
+                (name, _link_path(g, i, j)) for i, g in enumerate(mech.groups)
                 for j, name in enumerate(g.links)]:
             if link == GROUND:
                 self.problems.append(Problem(path, "'ground' names the fixed link",
@@ -486,6 +490,13 @@ class BuilderCore:
         self.problems.append(Problem(path, f"no moving link named {name!r}",
                                      _choose(name, [k for k in self.links if k != GROUND])))
         return None
+
+
+def _link_path(group: Any, i: int, j: int) -> tuple:
+    """Where link ``j`` of ``group`` (number ``i``) is named in the document."""
+    if isinstance(group, Triad):
+        return ("groups", i, "legs", j, "link") if j < 3 else ("groups", i, "link")
+    return ("groups", i, "links", j)
 
 
 def _plain(value: Scalar) -> float | None:

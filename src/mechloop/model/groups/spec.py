@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import ConfigDict, Discriminator, Field, Tag
+from pydantic import ConfigDict, Discriminator, Field, Tag, model_validator
 from pydantic.json_schema import SkipJsonSchema
 
 from mechloop.model.dynamic import (
@@ -160,15 +160,69 @@ class RPP(_Frozen):
     variant: Variant = Field(1, description="one assembly: 1")
 
 
+class TriadLeg(_Frozen):
+    """An outer link (leg) of a triad: pinned to the middle link at ``joint``, and either
+    pinned to the placed point ``at`` (``length`` from ``at`` to ``joint``: an RR leg) or
+    sliding along a ground ``guide`` (a block at ``joint``: a PR leg)."""
+
+    link: Name = Field(description="name of the leg")
+    joint: Name = Field(description="name of the pin between the leg and the middle link "
+                        "(a new point)")
+    at: PointRef | None = Field(None, description="the placed point the leg is pinned to "
+                                "(an RR leg; with length)")
+    length: Scalar | None = Field(None, description="|at joint| (length units; an RR leg)")
+    guide: Guide | None = Field(None, description="the ground guide the leg's block slides "
+                                "along (a PR leg, instead of at and length)")
+
+    @model_validator(mode="after")
+    def _one_kind(self) -> TriadLeg:
+        if self.guide is None and (self.at is None or self.length is None):
+            raise ValueError("a leg is pinned ({at: A, length: l}) or slides ({guide: "
+                             "{through: O, angle: φ}}): give at and length, or guide")
+        if self.guide is not None and (self.at is not None or self.length is not None):
+            raise ValueError("a leg is pinned (at, length) or slides (guide), not both")
+        return self
+
+
+class Triad(_Frozen):
+    """A class-III group (triad): a ternary middle link ``link`` pinned at the three legs'
+    joints J1, J2, J3 (its line runs from J1 to J2; J2 is ``sides[0]`` from J1, J3 is
+    ``sides[1]`` from J1 at ``angle`` from the line), and three legs (:class:`TriadLeg`)
+    joining it to placed points or ground guides — RRR-RRR-RRR, or with sliding legs.
+
+    A triad has no elementary module: its two contours need each other's unknowns and are
+    solved together (a coupled block).  Its assembly is chosen by ``guess``: approximate
+    positions at position 0 of the three joints and of any leg attachment that moves."""
+
+    kind: Literal["III", "triad"]
+    link: Name = Field(description="name of the middle (ternary) link")
+    legs: tuple[TriadLeg, TriadLeg, TriadLeg] = Field(description="the three legs; the "
+                                                      "middle link's line runs from the "
+                                                      "first joint to the second")
+    sides: tuple[Scalar, Scalar] = Field(description="[|J1 J2|, |J1 J3|] on the middle "
+                                         "link (length units)")
+    angle: Scalar = Field(description="angle from J1→J2 to J1→J3, counter-clockwise "
+                          "(angle units; 0 or 180 for three pins on a straight link)")
+    guess: dict[Name, tuple[Scalar, Scalar]] = Field(
+        description="approximate positions [x, y] at position 0 (length units) of the three "
+        "joints and of every moving point a leg is pinned to: the assembly the triad "
+        "starts in")
+
+    @property
+    def links(self) -> tuple[str, str, str, str]:
+        """The legs and the middle link, in the order their bodies are numbered."""
+        return (self.legs[0].link, self.legs[1].link, self.legs[2].link, self.link)
+
+
 KIND = {"L1": "L1", "RRR": "L1", "L2": "L2", "RRP": "L2", "L3": "L3", "RPR": "L3",
-        "L4": "L4", "PRP": "L4", "L5": "L5", "RPP": "L5"}
+        "L4": "L4", "PRP": "L4", "L5": "L5", "RPP": "L5", "III": "III", "triad": "III"}
 
 Group = Annotated[
     Annotated[RRR, Tag("L1")] | Annotated[RRP, Tag("L2")] | Annotated[RPR, Tag("L3")]
-    | Annotated[PRP, Tag("L4")] | Annotated[RPP, Tag("L5")],
+    | Annotated[PRP, Tag("L4")] | Annotated[RPP, Tag("L5")] | Annotated[Triad, Tag("III")],
     Discriminator(lambda v: KIND.get(_kind_tag(v) or ""), custom_error_type="group_kind",
                   custom_error_message="a group's kind is L1 (RRR), L2 (RRP), L3 (RPR), "
-                  "L4 (PRP) or L5 (RPP)"),
+                  "L4 (PRP), L5 (RPP) or III (a triad)"),
 ]
 
 
@@ -317,8 +371,11 @@ class GroupMechanism(_Frozen):
     @property
     def formula(self) -> str:
         """The structure formula the generated model has: ``L0(1) → L1(2,3) → …``."""
-        parts = ["L0(1)"] + [f"{KIND[g.kind]}({2 * i + 2},{2 * i + 3})"
-                             for i, g in enumerate(self.groups)]
+        parts, body = ["L0(1)"], 2
+        for g in self.groups:
+            count = len(g.links)
+            parts.append(f"{KIND[g.kind]}({','.join(map(str, range(body, body + count)))})")
+            body += count
         return " → ".join(parts)
 
 

@@ -1,0 +1,288 @@
+"""Class-III groups (triads) in group files: the builder writes a triad as two contours
+that need each other's unknowns (a coupled block) with a ``guess`` from the drawn
+assembly.
+
+The oracle is the mechanism itself, not the vector model: the joint positions solved from
+the distances between the pins (each leg's length, the middle link as a rigid triangle, a
+sliding leg's block on its guide line) by :func:`scipy.optimize.root`, continued from
+position to position.  The emitted contours are checked by solving *their* closure
+equations (a small evaluator of the roles below, also with ``root``) and finding the
+reference joints among their vector ends.
+"""
+
+from __future__ import annotations
+
+import cmath
+import copy
+import math
+from typing import Any
+
+import numpy as np
+import pytest
+from scipy.optimize import root
+
+from mechloop.errors import ModelError
+from mechloop.model.groups import GroupMechanism
+from mechloop.model.groups.builder import Builder
+
+N = 36
+CRANK = 0.06
+C, D, G = 0.32 - 0.12j, 0.62 + 0.08j, 0.42 + 0.0j
+LEGS, SIDES, ANGLE = (0.29, 0.25, 0.30), (0.31, 0.35), 47.0
+
+#: A crank driving an RRR-RRR-RRR triad (dimensions chosen so that it assembles over the
+#: whole turn; the drawn positions are rounded from the assembly at position 0).
+SIX_BAR: dict[str, Any] = {
+    "name": "class-III six-bar",
+    "positions": N,
+    "arguments": {1: {"table": {0: 0, N: 360}}},
+    "ground": {"O": [0, 0], "C": [C.real, C.imag], "D": [D.real, D.imag]},
+    "input": {"kind": "crank", "link": "crank", "pivot": "O", "joint": "A",
+              "length": CRANK},
+    "groups": [{
+        "kind": "III", "link": "plate",
+        "legs": [{"link": "rod", "at": "A", "length": LEGS[0], "joint": "B"},
+                 {"link": "lever", "at": "C", "length": LEGS[1], "joint": "E"},
+                 {"link": "rocker", "at": "D", "length": LEGS[2], "joint": "F"}],
+        "sides": list(SIDES), "angle": ANGLE,
+        "guess": {"A": [0.06, 0], "B": [0.17, 0.27], "E": [0.43, 0.10], "F": [0.51, 0.36]},
+    }],
+}
+
+
+def slider_variant() -> dict[str, Any]:
+    """The six-bar with its third leg a block sliding on a ground guide through G at 80°
+    (an RR-RR-PR triad)."""
+    data = copy.deepcopy(SIX_BAR)
+    data["ground"]["G"] = [G.real, G.imag]
+    data["groups"][0]["legs"][2] = {"link": "slider", "joint": "F",
+                                    "guide": {"through": "G", "angle": 80}}
+    return data
+
+
+# ------------------------------------------------------------------------------ the oracle
+
+
+def reference_joints(data: dict[str, Any]) -> np.ndarray:
+    """Joint positions B, E, F (complex, shape (N+1, 3)) from the distances between pins
+    and a sliding block's guide line, continued from the drawn positions."""
+    group = data["groups"][0]
+    legs = group["legs"]
+    s1, s2 = group["sides"]
+    k = s2 / s1 * cmath.exp(1j * math.radians(group["angle"]))
+    ground = {n: complex(*xy) for n, xy in data["ground"].items()}
+
+    def equations(x: np.ndarray, a: complex) -> list[float]:
+        b, e, f = complex(x[0], x[1]), complex(x[2], x[3]), complex(x[4], x[5])
+        out = [abs(b - a) ** 2 - legs[0]["length"] ** 2,
+               abs(e - ground[legs[1]["at"]]) ** 2 - legs[1]["length"] ** 2,
+               abs(e - b) ** 2 - s1 ** 2]
+        if "guide" in legs[2]:
+            g = ground[legs[2]["guide"]["through"]]
+            out.append(((f - g) * cmath.exp(-1j * math.radians(legs[2]["guide"]["angle"]))).imag)
+        else:
+            out.append(abs(f - ground[legs[2]["at"]]) ** 2 - legs[2]["length"] ** 2)
+        rigid = f - (b + (e - b) * k)
+        return [*out, rigid.real, rigid.imag]
+
+    x = np.array([v for n in "BEF" for v in group["guess"][n]], dtype=float)
+    out = []
+    for p in range(N + 1):
+        a = CRANK * cmath.exp(2j * math.pi * p / N)
+        x = root(equations, x, args=(a,), method="lm", tol=1e-15).x
+        assert max(map(abs, equations(x, a))) < 1e-12, f"the reference breaks at {p}"
+        out.append([complex(x[0], x[1]), complex(x[2], x[3]), complex(x[4], x[5])])
+    return np.array(out)
+
+
+def _value(vectors: dict, name: str, functions: dict[str, float], p: int) -> float:
+    """Parameter ``name`` of the emitted data at position ``p`` (model units)."""
+    role = vectors[int(name[1:])][name[0]]
+    if role == "function":
+        return functions[name]
+    if isinstance(role, dict) and "link" in role:
+        return _value(vectors, role["link"], functions, p) + role["delta"]
+    if isinstance(role, dict):  # the argument: the crank angle, 0..360 degrees over N
+        return 360.0 * p / N + role["offset"]
+    return float(role)
+
+
+def _vector(vectors: dict, k: int, functions: dict[str, float], p: int) -> complex:
+    return _value(vectors, f"r{k}", functions, p) * cmath.exp(
+        1j * math.radians(_value(vectors, f"a{k}", functions, p)))
+
+
+def solve_emitted(data: dict[str, Any]) -> list[list[complex]]:
+    """The ends of every vector of the emitted contours over the positions, from their
+    start, after solving the closure equations of the two triad contours (continued from
+    their ``guess``)."""
+    vectors, contours = data["vectors"], data["contours"]
+    names = [n for c in contours for n in c["guess"]]
+    x = np.array([v for c in contours for v in c["guess"].values()], dtype=float)
+    starts = {"origin": 0j}
+    out = []
+    for p in range(N + 1):
+        def closure(x: np.ndarray, p: int = p) -> list[float]:
+            functions = dict(zip(names, x, strict=True))
+            res = []
+            for c in contours:
+                z = sum(_vector(vectors, k, functions, p) for k in c["vectors"])
+                res += [z.real, z.imag]
+            return res
+
+        x = root(closure, x, method="lm", tol=1e-15).x
+        assert max(map(abs, closure(x))) < 1e-12
+        functions = dict(zip(names, x, strict=True))
+        ends = []
+        for c in contours:
+            start = c.get("start", "origin")
+            z = starts[start] if isinstance(start, str) else complex(*start)
+            for k in c["vectors"]:
+                z += _vector(vectors, k, functions, p)
+                ends.append(z)
+        out.append(ends)
+    return out
+
+
+def emitted(data: dict[str, Any]) -> dict[str, Any]:
+    return Builder(GroupMechanism.model_validate(data)).vector_data()
+
+
+# ------------------------------------------------------------------------------ tests
+
+
+@pytest.mark.parametrize("make", [lambda: SIX_BAR, slider_variant], ids=["RRR", "slider"])
+def test_the_triad_contours_close_where_the_pins_put_the_joints(make):
+    data = make()
+    reference = reference_joints(data)
+    ends = solve_emitted(emitted(data))
+    for p in range(N + 1):
+        for joint in reference[p]:
+            assert min(abs(z - joint) for z in ends[p]) < 1e-9, (p, joint)
+    # the mechanism really moves: the joints sweep, and come back after a turn
+    assert np.abs(reference - reference[0]).max() > 0.05
+    assert np.allclose(reference[0], reference[-1], atol=1e-9)
+
+
+def test_a_triad_is_two_contours_each_needing_the_other():
+    data = emitted(SIX_BAR)
+    vectors, contours = data["vectors"], data["contours"]
+    assert [c["name"] for c in contours] == ["III plate 1", "III plate 2"]
+    owner = {f"{letter}{k}": i for i, c in enumerate(contours) for k in c["vectors"]
+             for letter in "ra" if vectors[k][letter] == "function"}
+    assert sorted(owner.values()) == [0, 0, 1, 1]  # two functions each
+    for i, c in enumerate(contours):
+        assert set(c["guess"]) == {n for n, o in owner.items() if o == i}
+        read = {vectors[k][letter]["link"] for k in c["vectors"] for letter in "ra"
+                if isinstance(vectors[k][letter], dict) and "link" in vectors[k][letter]}
+        assert {owner[n] for n in read if n in owner} == {1 - i}  # needs the other one
+
+
+def test_the_guess_is_the_drawn_assembly():
+    """Each function's guess is the angle its vector has with the joints where the file
+    draws them (leg A→B from the guessed A, the plate's line B→E, E from C, F→D)."""
+    data = emitted(SIX_BAR)
+    drawn = {n: complex(*xy) for n, xy in SIX_BAR["groups"][0]["guess"].items()}
+    drawn.update(C=C, D=D)
+    expected = {"AB": drawn["B"] - drawn["A"], "BE": drawn["E"] - drawn["B"],
+                "CE": drawn["E"] - C, "FD": D - drawn["F"]}
+    found = {}
+    for c in data["contours"]:
+        for name, value in c["guess"].items():
+            ends = data["vectors"][int(name[1:])]["name"].split()[-1]
+            found[ends] = value
+    assert set(found) == set(expected)
+    for ends, z in expected.items():
+        assert found[ends] == pytest.approx(math.degrees(cmath.phase(z)), abs=1e-9)
+
+
+def test_a_sliding_legs_guess_is_its_distance_along_the_guide():
+    data = emitted(slider_variant())
+    (_, value), = [(n, v) for c in data["contours"] for n, v in c["guess"].items()
+                      if n.startswith("r")]
+    drawn = complex(*SIX_BAR["groups"][0]["guess"]["F"])
+    assert value == pytest.approx(((drawn - G) * cmath.exp(-1j * math.radians(80))).real,
+                                  abs=1e-12)
+
+
+def test_bodies_and_joints_of_a_triad():
+    data = emitted(slider_variant())
+    bodies = {b["name"]: n for n, b in data["bodies"].items()}
+    assert bodies == {"crank": 1, "rod": 2, "lever": 3, "slider": 4, "plate": 5}
+    joints = {name: (j["type"], tuple(j["bodies"])) for name, j in data["joints"].items()}
+    assert joints == {"O": ("revolute", (0, 1)), "A": ("revolute", (1, 2)),
+                      "C": ("revolute", (0, 3)), "SF": ("prismatic", (0, 4)),
+                      "B": ("revolute", (2, 5)), "E": ("revolute", (3, 5)),
+                      "F": ("revolute", (4, 5))}
+    mech = GroupMechanism.model_validate(slider_variant())
+    assert mech.formula == "L0(1) → III(2,3,4,5)"
+
+
+def test_the_triads_dimensions_are_carried_by_its_vectors():
+    """Synthesis may vary every dimension of a triad: each is a constant of the vector
+    model (a leg or side length, the middle link's angle as the delta of a link)."""
+    builder = Builder(GroupMechanism.model_validate(SIX_BAR))
+    data = builder.vector_data()
+    carriers = builder.carriers()
+    group = SIX_BAR["groups"][0]
+    values = {f"groups[0].legs[{j}].length": leg["length"]
+              for j, leg in enumerate(group["legs"])}
+    values.update({"groups[0].sides[0]": SIDES[0], "groups[0].sides[1]": SIDES[1],
+                   "groups[0].angle": ANGLE})
+    assert set(values) <= set(builder.dimension_names())
+    for name, value in values.items():
+        for carrier in carriers[name]:
+            k, letter = int(carrier.parameter[1:]), carrier.parameter[0]
+            role = data["vectors"][k][letter]
+            written = role["delta"] if carrier.part == "delta" else role
+            assert written == pytest.approx(value + carrier.shift, abs=1e-12), name
+    assert [c.part for c in carriers["groups[0].angle"]] == ["delta"]
+
+
+def _problems(data: dict[str, Any]) -> list[tuple[tuple, str]]:
+    with pytest.raises(ModelError) as info:
+        emitted(data)
+    return [(p.path, p.message) for p in info.value.problems]
+
+
+def test_a_triad_without_the_assembly_is_told_what_to_draw():
+    data = copy.deepcopy(SIX_BAR)
+    del data["groups"][0]["guess"]["A"]
+    ((path, message),) = _problems(data)
+    assert path == ("groups", 0, "guess") and "A" in message and "six" in message
+
+
+def test_a_guess_of_another_point_is_refused():
+    data = copy.deepcopy(SIX_BAR)
+    data["groups"][0]["guess"]["O"] = [0, 0]
+    ((path, message),) = _problems(data)
+    assert path == ("groups", 0, "guess", "O") and "not a joint" in message
+
+
+def test_a_sliding_leg_on_a_moving_guide_is_refused():
+    data = slider_variant()
+    data["groups"][0]["legs"][2]["guide"]["through"] = "A"
+    ((path, message),) = _problems(data)
+    assert path == ("groups", 0, "legs", 2, "guide", "through") and "ground" in message
+
+
+def test_a_leg_is_pinned_or_slides():
+    data = slider_variant()
+    data["groups"][0]["legs"][2]["at"] = "D"
+    with pytest.raises(ValueError, match="not both"):
+        GroupMechanism.model_validate(data)
+    data["groups"][0]["legs"][2] = {"link": "x", "joint": "F"}
+    with pytest.raises(ValueError, match="give at and length, or guide"):
+        GroupMechanism.model_validate(data)
+
+
+def test_triad_joints_and_links_are_named_once():
+    data = copy.deepcopy(SIX_BAR)
+    data["groups"][0]["legs"][2]["joint"] = "E"
+    found = _problems(data)
+    assert (("groups", 0, "legs", 2, "joint"), "point 'E' is already defined at "
+            "groups[0].legs[1].joint") in found
+    data = copy.deepcopy(SIX_BAR)
+    data["groups"][0]["link"] = "rod"
+    found = _problems(data)
+    assert any(p == ("groups", 0, "link") and "already defined" in m for p, m in found)
