@@ -286,3 +286,33 @@ def test_triad_joints_and_links_are_named_once():
     data["groups"][0]["link"] = "rod"
     found = _problems(data)
     assert any(p == ("groups", 0, "link") and "already defined" in m for p, m in found)
+
+
+# ------------------------------------------------------------------------------ structure
+
+
+def _pairs_of(data: dict[str, Any]) -> Any:
+    """The link graph of the emitted model: its joints as pairs and the crank's drive."""
+    from mechloop.dynamics.mechanism import Drive, Mechanism, Pair
+
+    pairs = tuple(Pair(name, j["type"], tuple(j["bodies"]), j["at"], j.get("along"), 0.0,
+                       0.0, 0.0, False) for name, j in data["joints"].items())
+    return Mechanism({}, (), pairs, (Drive(1, "angle", 1, (0, 1)),), 0.0)
+
+
+@pytest.mark.parametrize(("make", "letters"), [(lambda: SIX_BAR, "RRR"),
+                                               (slider_variant, "RRP")],
+                         ids=["RRR", "slider"])
+def test_the_structure_tool_finds_the_triad_with_its_pairs(make, letters):
+    from mechloop.structure.assur import decompose
+
+    dec = decompose(_pairs_of(emitted(make())))
+    assert dec.formula == "L0(1) → III(2,3,4,5)" and dec.mechanism_class == 3
+    triad = dec.groups[1]
+    assert triad.kind == "III" and triad.assur_class == 3 and not dec.rest
+    assert {(p.name, p.kind, p.link, p.to) for p in triad.internal} == {
+        ("B", "R", 2, 5), ("E", "R", 3, 5), ("F", "R", 4, 5)}
+    external = {(p.name, p.kind, p.link, p.to) for p in triad.external}
+    third = ("D", "R", 4, 0) if letters == "RRR" else ("SF", "P", 4, 0)
+    assert external == {("A", "R", 2, 1), ("C", "R", 3, 0), third}
+    assert sorted(triad.pairs) == sorted(letters)
