@@ -149,6 +149,10 @@ class Contour(_Frozen):
         "origin", description="where the tail of the first vector lies: 'origin', the tail "
         "or head of a vector of an earlier contour ({tail: K} / {head: K}), or fixed "
         "coordinates [x, y] (length units); places the contour's points in the plane")
+    guess: dict[ParamName, Scalar] | None = Field(
+        None, description="approximate values of the functions of this contour's coupled "
+        "block at position 0 (model units), e.g. {a5: 40, r7: 300}: the assembly Newton's "
+        "method starts from; only for contours solved as a coupled block")
 
 
 class Units(_Frozen):

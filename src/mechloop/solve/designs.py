@@ -418,7 +418,21 @@ def _with_extra_columns(part, args: Mapping[int, Signal], extra_at: Mapping[int,
                         np.concatenate([signal.accel, pad]))
         shift = np.concatenate([np.zeros((at.shape[0], n_pos)), at], axis=-1)
         driven[name] = (longer, offset + shift)
-    return replace(part, driven=driven)
+    return replace(part, driven=driven, n_regular=args[1].value.shape[-1],
+                   extra_start=_nearest(args[1].value, extra_at[1][lo:hi]))
+
+
+def _nearest(x: Array, inputs: Array) -> NDArray[np.int64]:
+    """The position nearest to each input by argument 1's value ``x`` ``(P,)``: where a
+    coupled block starts Newton's method for an extra column, ``(D, K)``."""
+    if x.size == 0:
+        return np.zeros(inputs.shape, dtype=np.int64)
+    order = np.argsort(x, kind="stable")
+    at = np.clip(np.searchsorted(x[order], inputs), 1, max(x.size - 1, 1))
+    below = order[at - 1]
+    above = order[np.minimum(at, x.size - 1)]
+    closer = np.abs(x[below] - inputs) <= np.abs(x[above] - inputs)
+    return np.where(closer, below, above).astype(np.int64)
 
 
 def _rows(table: Array, rows: NDArray[np.int64]) -> Array:

@@ -22,6 +22,7 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import NDArray
 
+from mechloop.errors import HintedError
 from mechloop.model.check import require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import is_function, param_role
@@ -83,6 +84,11 @@ def position_tangents(model: Model, values: Mapping[str, Array],
         params[name] = _Param(np.asarray(values[name])[None], tangent, 0.0)
         return params[name]
 
+    if structure.coupled:
+        raise HintedError("design sensitivities are not available for a model with a "
+                          "coupled block (contours solved together by Newton's method)",
+                          "vary the design and compare solves (solve_designs), or write "
+                          "the mechanism with elementary contours")
     for info in structure.ordered():
         u1, u2 = info.functions
         resolve_known(info, resolve)
