@@ -316,3 +316,71 @@ def test_the_structure_tool_finds_the_triad_with_its_pairs(make, letters):
     third = ("D", "R", 4, 0) if letters == "RRR" else ("SF", "P", 4, 0)
     assert external == {("A", "R", 2, 1), ("C", "R", 3, 0), third}
     assert sorted(triad.pairs) == sorted(letters)
+
+
+# ------------------------------------------------------------- solved (coupled blocks)
+
+
+@pytest.mark.parametrize("make", [lambda: SIX_BAR, slider_variant], ids=["RRR", "slider"])
+def test_a_triad_group_file_solves_to_the_joints_the_pins_give(make):
+    """The whole route: the group file built, solved by mechloop (the triad's contours as
+    one coupled block, started from the guess), its named points read from their chains."""
+    import mechloop
+    from mechloop.model.groups import build
+
+    data = make()
+    built = build(GroupMechanism.model_validate(data))
+    results = mechloop.solve(built.model)
+    assert not results.broken.any()
+    assert [b.coupled for b in results.structure.blocks] == [True]
+    reference = reference_joints(data)
+    for j, name in enumerate("BEF"):
+        x, y = built.points[name].xy(results)
+        np.testing.assert_allclose(x + 1j * y, reference[:, j], rtol=0, atol=1e-12,
+                                   err_msg=name)
+
+
+def with_task(data: dict[str, Any]) -> dict[str, Any]:
+    data = copy.deepcopy(data)
+    data["synthesis"] = {
+        "vary": {"groups[0].legs[0].length": [0.27, 0.31],
+                 "groups[0].legs[1].length": [0.23, 0.27],
+                 "groups[0].sides[0]": [0.29, 0.33], "groups[0].sides[1]": [0.33, 0.37],
+                 "groups[0].angle": [42, 52], "ground.C.x": [0.30, 0.34]},
+        "path": {"point": "F", "targets": [[0.5, 0.36], [0.45, 0.3]]}}
+    if "at" in data["groups"][0]["legs"][2]:
+        data["synthesis"]["vary"]["groups[0].legs[2].length"] = [0.28, 0.32]
+    else:
+        data["synthesis"]["vary"]["groups[0].legs[2].guide.angle"] = [75, 85]
+    return data
+
+
+@pytest.mark.parametrize("make", [lambda: SIX_BAR, slider_variant], ids=["RRR", "slider"])
+def test_synthesis_varies_a_triads_dimensions_as_the_pins_say(make):
+    """Each dimension of the triad moved by 5 % of its range through the synthesis
+    variables (a batch of designs in one solve) puts the joints where the independent
+    reference puts them with that dimension written in the file."""
+    from mechloop.model.groups import build, with_dimensions
+    from mechloop.synthesis.problem import SynthesisProblem
+    from mechloop.synthesis.variables import current_values
+
+    data = with_task(make())
+    mech = GroupMechanism.model_validate(data)
+    built = build(mech)
+    problem = SynthesisProblem(built.model)
+    variables = problem.variables
+    base = current_values(built.model, variables)
+    designs = np.repeat(base[None, :], len(variables.names), axis=0)
+    designs[np.arange(len(designs)), np.arange(len(designs))] += 0.05 * (
+        variables.high - variables.low)
+    results = problem.solve(designs)
+    assert not results.broken.any()
+    placed = {n: problem.place(results, designs, built.points[n].end) for n in "BEF"}
+    for d, name in enumerate(variables.names):
+        value = variables.to_model_units(designs[d])[name]
+        changed = with_dimensions(mech, {name: value}).model_dump(
+            mode="json", by_alias=True, exclude_defaults=True)
+        reference = reference_joints(changed)
+        for j, point in enumerate("BEF"):
+            np.testing.assert_allclose(placed[point][d], reference[:, j], rtol=0,
+                                       atol=1e-9, err_msg=f"{name}: {point}")

@@ -1,5 +1,21 @@
 """Mechanisms built from Assur groups: an input group L0 and a sequence of class-II dyads
-(seed 002: L1 RRR, L2 RRP, L3 RPR, L4 PRP, L5 RPP), turned into the ordinary vector model.
+(seed 002: L1 RRR, L2 RRP, L3 RPR, L4 PRP, L5 RPP) and class-III triads (``III``: a
+ternary middle link on three legs, :mod:`.triads`), turned into the ordinary vector model.
+
+The package, one step per module (imports flow down this list, never back):
+
+* :mod:`.files` — reading a group file (validated, every problem located), the mechanism
+  a file describes, dimensions set and the file written back;
+* :mod:`.build` — :func:`build`, :func:`build_model` and what a built model says;
+* :mod:`.builder` — the builder: the input, each group in file order, the loose ends, the
+  checked vector model;
+* :mod:`.inputs`, :mod:`.dyads`, :mod:`.triads` — one step per group kind;
+  :mod:`.bodies` — bodies, joints, masses and loads; :mod:`.dimensions` — point
+  locations, dimension carriers, the synthesis task;
+* :mod:`.core` — the builder's state and elementary steps (segments, contours, guides,
+  points on links);
+* :mod:`.located` — :class:`Carrier`, :class:`PointLocation`, :class:`BuiltModel`;
+* :mod:`.spec` — the file's schema (pydantic classes).
 
 A :class:`GroupMechanism` names its **points** and **links** and states dimensions; the
 builder (:func:`build_model`, :func:`build`) writes the vectors, the contours with their
@@ -8,11 +24,13 @@ top level has ``groups:`` (and no ``vectors:``) is such a mechanism;
 :func:`mechloop.load_model` returns the generated :class:`~mechloop.model.schema.Model`.
 
 **Points.**  Every point has a unique name (no dots): the ``ground`` points, the input's
-``joint``, each group's ``joint`` (``point`` for L5) and the ``points`` placed on links.  A
+``joint``, each group's ``joint`` (``point`` for L5; a triad's legs' ``joint``) and the
+``points`` placed on links.  A
 reference to a point is ``NAME`` or ``LINK.NAME``.  A bare name means the point on the link
 that introduced it — a ground point on the ground, the input's joint on the input link, a
 point of ``points`` on its link.  The internal joint of L1, L2 and L4 belongs to both links
-of its group, so name the link: ``coupler.B`` or ``rocker.B``.  A group may use only
+of its group (a triad's joints: the leg and the middle link), so name the link:
+``coupler.B`` or ``rocker.B``.  A group may use only
 points of the ground, the input and earlier groups.
 
 **Lines of links.**  Angles of points on a link are measured from the link's *line*,
@@ -28,12 +46,17 @@ L1 first / second link      attachment → joint (both: pivot to pin)           
 L2 rod                      attachment → joint                                     joint
 L3 block and guide          the guide's pivot → the block's pin (block: its pin)   —
 L5 block / yoke             pin, along the slot / ``point``, along the guide        —
+triad pinned leg            attachment → joint                                     joint
+triad sliding leg           its joint, along its guide's direction                 —
+triad middle link           first leg's joint → second leg's joint                 J2
 ==========================  =====================================================  =========
 
 **Assembly variants** (``variant: 1 | 2 | auto``): L1 — 1 puts the joint on the left of
 the line from the first attachment to the second; L2 — 1 puts the joint ahead of the
 attachment along the guide direction (2: behind).  L3 (whose slide passes through the
-guide's pivot), L4 and L5 have one assembly.
+guide's pivot), L4 and L5 have one assembly.  A triad has up to six: its ``guess``
+(approximate positions at position 0 of its joints and moving attachments) picks one, as
+the start of Newton's method on its coupled block.
 
 **A guide** is the line through a placed point ``through`` at ``angle`` from the line of
 that point's link (from +X on the ground), shifted ``offset`` to its left; the guide belongs

@@ -329,6 +329,8 @@ class GroupSynthesisTask(SynthesisTask):
         description="dimensions to vary with their bounds [low, high] (model units): "
         "input.length, input.angle, groups[i].lengths[j], groups[i].length, "
         "groups[i].guide.angle, groups[i].guide.offset, groups[i].slot, "
+        "groups[i].legs[j].length, groups[i].legs[j].guide.angle, groups[i].sides[k], "
+        "groups[i].angle, "
         "points.NAME.distance, points.NAME.angle, ground.NAME.x, ground.NAME.y")
     path: GroupPathTask | None = None  # type: ignore[assignment]
     motion: GroupMotionTask | None = None  # type: ignore[assignment]
