@@ -15,16 +15,19 @@ from __future__ import annotations
 import cmath
 import copy
 import math
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
+import yaml
 from scipy.optimize import root
 
 from mechloop.errors import ModelError
 from mechloop.model.groups import GroupMechanism
 from mechloop.model.groups.builder import Builder
 
+ROOT = Path(__file__).resolve().parents[1]
 N = 36
 CRANK = 0.06
 C, D, G = 0.32 - 0.12j, 0.62 + 0.08j, 0.42 + 0.0j
@@ -384,3 +387,57 @@ def test_synthesis_varies_a_triads_dimensions_as_the_pins_say(make):
         for j, point in enumerate("BEF"):
             np.testing.assert_allclose(placed[point][d], reference[:, j], rtol=0,
                                        atol=1e-9, err_msg=f"{name}: {point}")
+
+
+def test_mechloop_structure_prints_the_triads_pairs_from_the_group_file_and_its_vector_model(
+        tmp_path):
+    """The CLI on the example group file and on the vector model it generates (saved as an
+    ordinary vector-model file): the same triad, its external and internal pairs, class III."""
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+    from mechloop.model.groups import build_model, mechanism_of
+    from mechloop.model.load import save_model
+
+    example = ROOT / "examples" / "class3_six_bar_groups.yaml"
+    vector_file = tmp_path / "class3_vectors.yaml"
+    save_model(build_model(mechanism_of(example)), vector_file)
+    saved = yaml.safe_load(vector_file.read_text())
+    assert "groups" not in saved and [bool(c.get("guess")) for c in saved["contours"]] == [
+        True, True]
+    for path in (example, vector_file):
+        result = CliRunner().invoke(app, ["structure", str(path)])
+        assert result.exit_code == 0, result.output
+        text = " ".join(result.output.split())
+        assert "structure formula: L0(1) → III(2,3,4,5)" in text
+        assert "class of the mechanism: III" in text
+        assert ("III(2,3,4,5): external A R 2→1, C R 3→0, D R 4→0; internal B R 2–5, "
+                "E R 3–5, F R 4–5") in text
+
+
+def test_mechloop_check_accepts_the_triad_example():
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+
+    result = CliRunner().invoke(app, ["check", str(ROOT / "examples" /
+                                                 "class3_six_bar_groups.yaml")])
+    assert result.exit_code == 0, result.output
+    assert "OK — 2 contour(s)" in result.output
+
+
+def test_a_triad_file_with_missing_keys_is_located_with_the_fix(tmp_path):
+    import mechloop
+
+    data = copy.deepcopy(SIX_BAR)
+    del data["groups"][0]["guess"], data["groups"][0]["sides"]
+    data["groups"][0]["legs"] = data["groups"][0]["legs"][:2]
+    path = tmp_path / "triad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ModelError) as info:
+        mechloop.load_model(path)
+    found = {p.path: p.hint for p in info.value.problems}
+    assert found[("groups", 0, "guess")].startswith("add guess:")
+    assert found[("groups", 0, "sides")].startswith("add sides:")
+    assert found[("groups", 0, "legs", 2)] == "give exactly three legs"
+    assert all(p.line for p in info.value.problems)

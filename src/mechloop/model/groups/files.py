@@ -119,8 +119,8 @@ def save_mechanism(mech: GroupMechanism, path: str | Path) -> Path:
 
 #: What each field a group file may miss holds, for the fix of a "missing" error.
 _FIELD_HINTS = {
-    "kind": "add kind: L1 (RRR), L2 (RRP), L3 (RPR), L4 (PRP) or L5 (RPP); for the input "
-            "crank or slider",
+    "kind": "add kind: L1 (RRR), L2 (RRP), L3 (RPR), L4 (PRP), L5 (RPP) or III (a triad); "
+            "for the input crank or slider",
     "links": "add links: [first, second], the names of the group's two links",
     "at": "add at: the placed point(s) the group is pinned to, e.g. at: [A, C]",
     "joint": "add joint: the name of the new pin, e.g. joint: B",
@@ -139,6 +139,11 @@ _FIELD_HINTS = {
     "positions": "add positions: N (the model is calculated at positions 0..N)",
     "mass": "add mass: the link's mass (mass units)",
     "value": "add value: the magnitude (a number, a quantity or a table)",
+    "legs": "add legs: three of {link: l, at: A, length: d, joint: B} (or {link: l, guide: "
+            "{through: O, angle: 0}, joint: B} for a sliding leg)",
+    "sides": "add sides: [|J1 J2|, |J1 J3|], the middle link's joints from the first one",
+    "guess": "add guess: {B: [x, y], ...}, where the triad's joints (and moving attachments) "
+             "roughly are at position 0",
 }
 
 
@@ -148,7 +153,8 @@ def _group_hint(error: dict[str, Any], message: str, hint: str) -> tuple[str, st
     if kind == "missing" and loc and str(loc[-1]) in _FIELD_HINTS:
         return message, _FIELD_HINTS[str(loc[-1])]
     if kind == "group_kind":
-        return message, "write kind: L1 (RRR), L2 (RRP), L3 (RPR), L4 (PRP) or L5 (RPP)"
+        return message, "write kind: L1 (RRR), L2 (RRP), L3 (RPR), L4 (PRP), L5 (RPP) or " \
+                        "III (a triad)"
     if kind == "input_kind":
         return message, "write kind: crank (with pivot, joint, length) or kind: slider " \
                         "(with guide, joint)"
@@ -158,7 +164,12 @@ def _group_hint(error: dict[str, Any], message: str, hint: str) -> tuple[str, st
     if kind == "string_pattern_mismatch":
         return message, "write a name without dots or surrounding spaces (a dot separates " \
                         "a link from a point: coupler.B)"
+    legs = (kind == "missing" and len(loc) >= 2 and str(loc[-2]) == "legs"
+            and isinstance(loc[-1], int))
+    if legs or (kind in ("too_short", "too_long") and loc and str(loc[-1]) == "legs"):
+        return "a triad has three legs", "give exactly three legs"
     if kind in ("too_short", "too_long") and loc and str(loc[-1]) in (
-            "links", "at", "lengths", "guides"):
-        return message, "give exactly two items, one per link of the group"
+            "links", "at", "lengths", "guides", "sides"):
+        return message, "give exactly two items, one per link of the group" if str(
+            loc[-1]) != "sides" else "give two sides: [|J1 J2|, |J1 J3|]"
     return message, hint
