@@ -48,6 +48,10 @@ HAND = {
     # links with the drive: class III by the seed's rule).
     "roof_support.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
     "roof_support_synthesis.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+    # the same three links with the leg pinned to the shield at its own point K: the leg
+    # is a drive (not a link), pins O1, O2, A, B: n = 3, p5 = 4, W = 1; the shield held
+    # by three binary members (two links and the driven leg) — the input group, class III.
+    "roof_support_groups.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
 }
 
 WITHOUT_BODIES = {

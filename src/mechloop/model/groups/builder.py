@@ -127,8 +127,8 @@ class Builder(InputSteps, DyadSteps, TriadSteps, BodySteps, DimensionSteps):
 
     def close_loose_ends(self) -> None:
         """Pl1 contours for the input and the points of links that no group used."""
-        joint = self.points[self.mech.input.joint]
-        if any(self.segs[s].vector is None for s, _ in joint.path):
+        joint = self.points[self.mech.input.joint] if self.mech.input is not None else None
+        if joint is not None and any(self.segs[s].vector is None for s, _ in joint.path):
             closer = self.seg(f"closing {joint.name}{joint.ground}", joint.name, joint.ground,
                               ("function",), ("function",), GROUND)
             self.contour([*joint.path, (closer, +1)], start=self.start_at(joint.ground),

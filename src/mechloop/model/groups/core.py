@@ -155,7 +155,8 @@ class BuilderCore:
 
         for name in mech.ground:
             add(name, "ground", ("ground", name))
-        add(mech.input.joint, "input", ("input", "joint"))
+        if mech.input is not None:
+            add(mech.input.joint, "input", ("input", "joint"))
         for i, g in enumerate(mech.groups):
             if isinstance(g, Triad):
                 for j, leg in enumerate(g.legs):
@@ -168,7 +169,8 @@ class BuilderCore:
         for name in mech.points:
             add(name, "points", ("points", name))
         names: dict[str, tuple] = {}
-        for link, path in [(mech.input.link, ("input", "link"))] + [
+        inputs = [] if mech.input is None else [(mech.input.link, ("input", "link"))]
+        for link, path in inputs + [
                 (name, _link_path(g, i, j)) for i, g in enumerate(mech.groups)
                 for j, name in enumerate(g.links)]:
             if link == GROUND:
@@ -495,7 +497,8 @@ class BuilderCore:
 def _link_path(group: Any, i: int, j: int) -> tuple:
     """Where link ``j`` of ``group`` (number ``i``) is named in the document."""
     if isinstance(group, Triad):
-        return ("groups", i, "legs", j, "link") if j < 3 else ("groups", i, "link")
+        legs = [k for k, leg in enumerate(group.legs) if leg.link is not None]
+        return ("groups", i, "legs", legs[j], "link") if j < len(legs) else ("groups", i, "link")
     return ("groups", i, "links", j)
 
 

@@ -14,6 +14,8 @@ class InputSteps(BuilderCore):
 
     def add_input(self) -> None:
         spec = self.mech.input
+        if spec is None:  # a triad's driven leg is the input
+            return
         path = ("input",)
         if spec.argument not in self.mech.arguments:
             self.problems.append(Problem((*path, "argument"), f"argument {spec.argument} is "

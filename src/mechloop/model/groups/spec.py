@@ -160,19 +160,36 @@ class RPP(_Frozen):
     variant: Variant = Field(1, description="one assembly: 1")
 
 
+class LegDrive(_Frozen):
+    """The length of a driven leg: model argument ``argument`` plus ``shift``."""
+
+    argument: int = Field(ge=1, description="the model argument that sets the length")
+    shift: Scalar = Field(0.0, description="added to the argument (length units)")
+
+
 class TriadLeg(_Frozen):
     """An outer link (leg) of a triad: pinned to the middle link at ``joint``, and either
     pinned to the placed point ``at`` (``length`` from ``at`` to ``joint``: an RR leg) or
-    sliding along a ground ``guide`` (a block at ``joint``: a PR leg)."""
+    sliding along a ground ``guide`` (a block at ``joint``: a PR leg).  A leg whose length
+    is an argument (``length: {argument: 1}``) is a hydraulic leg: the mechanism's drive
+    between ``at`` and ``joint`` (massless, not a link: it has no ``link``), and the triad
+    with it is the input group."""
 
-    link: Name = Field(description="name of the leg")
+    link: Name | None = Field(None, description="name of the leg (none for a driven leg)")
     joint: Name = Field(description="name of the pin between the leg and the middle link "
                         "(a new point)")
     at: PointRef | None = Field(None, description="the placed point the leg is pinned to "
                                 "(an RR leg; with length)")
-    length: Scalar | None = Field(None, description="|at joint| (length units; an RR leg)")
+    length: Scalar | LegDrive | None = Field(
+        None, description="|at joint| (length units; an RR leg), or {argument: k, shift: "
+        "c}: a driven leg")
     guide: Guide | None = Field(None, description="the ground guide the leg's block slides "
                                 "along (a PR leg, instead of at and length)")
+
+    @property
+    def driven(self) -> bool:
+        """Whether the leg's length is an argument (a hydraulic leg)."""
+        return isinstance(self.length, LegDrive)
 
     @model_validator(mode="after")
     def _one_kind(self) -> TriadLeg:
@@ -181,6 +198,11 @@ class TriadLeg(_Frozen):
                              "{through: O, angle: φ}}): give at and length, or guide")
         if self.guide is not None and (self.at is not None or self.length is not None):
             raise ValueError("a leg is pinned (at, length) or slides (guide), not both")
+        if self.driven and self.link is not None:
+            raise ValueError("a driven leg is a drive between its two points, not a link: "
+                             "remove its link")
+        if not self.driven and self.link is None:
+            raise ValueError("a leg needs link: its name")
         return self
 
 
@@ -209,9 +231,15 @@ class Triad(_Frozen):
         "starts in")
 
     @property
-    def links(self) -> tuple[str, str, str, str]:
-        """The legs and the middle link, in the order their bodies are numbered."""
-        return (self.legs[0].link, self.legs[1].link, self.legs[2].link, self.link)
+    def links(self) -> tuple[str, ...]:
+        """The legs (but a driven one) and the middle link, in the order their bodies are
+        numbered."""
+        return (*(leg.link for leg in self.legs if leg.link is not None), self.link)
+
+    @property
+    def driven(self) -> bool:
+        """Whether a leg of the triad is driven (the triad is then the input group)."""
+        return any(leg.driven for leg in self.legs)
 
 
 KIND = {"L1": "L1", "RRR": "L1", "L2": "L2", "RRP": "L2", "L3": "L3", "RPR": "L3",
@@ -355,7 +383,8 @@ class GroupMechanism(_Frozen):
     ground: dict[Name, tuple[Scalar, Scalar]] = Field(
         min_length=1, description="fixed points: name: [x, y] (length units); the first is "
         "the root the contours start from")
-    input: Input = Field(description="the input group L0: a crank or a driven slider")
+    input: Input | None = Field(None, description="the input group L0: a crank or a driven "
+                                "slider (none when a triad has a driven leg)")
     groups: list[Group] = Field(default_factory=list, description="Assur groups in the "
                                 "order they attach")
     points: dict[Name, LinkPoint] = Field(default_factory=dict, description="named points "
@@ -370,13 +399,26 @@ class GroupMechanism(_Frozen):
         None, description="a synthesis task that varies the dimensions by their names "
         "(mechloop synthesize)")
 
+    @model_validator(mode="after")
+    def _one_drive(self) -> GroupMechanism:
+        driven = sum(leg.driven for g in self.groups if isinstance(g, Triad) for leg in g.legs)
+        if self.input is None and driven != 1:
+            raise ValueError("the mechanism needs one input: give input: (a crank or a "
+                             "slider), or drive one leg of a triad (length: {argument: 1})")
+        if self.input is not None and driven:
+            raise ValueError("a triad's leg is driven and there is an input: drive the "
+                             "mechanism once (remove input:, or give the leg a length)")
+        return self
+
     @property
     def formula(self) -> str:
-        """The structure formula the generated model has: ``L0(1) → L1(2,3) → …``."""
-        parts, body = ["L0(1)"], 2
+        """The structure formula the generated model has: ``L0(1) → L1(2,3) → …``; a
+        triad with a driven leg is the input group (``L0(1,2,3)``)."""
+        parts, body = (["L0(1)"], 2) if self.input is not None else ([], 1)
         for g in self.groups:
             count = len(g.links)
-            parts.append(f"{KIND[g.kind]}({','.join(map(str, range(body, body + count)))})")
+            kind = "L0" if isinstance(g, Triad) and g.driven else KIND[g.kind]
+            parts.append(f"{kind}({','.join(map(str, range(body, body + count)))})")
             body += count
         return " → ".join(parts)
 

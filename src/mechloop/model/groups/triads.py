@@ -26,7 +26,7 @@ from typing import Any
 
 from mechloop.errors import Problem
 from mechloop.model.groups.core import GROUND, BuilderCore, _tidy
-from mechloop.model.groups.spec import Triad
+from mechloop.model.groups.spec import LegDrive, Triad
 
 
 class TriadSteps(BuilderCore):
@@ -41,6 +41,20 @@ class TriadSteps(BuilderCore):
         legs: list[tuple[Any, ...]] = []
         for j, leg in enumerate(g.legs):
             where, name = (*path, "legs", j), f"{dim}.legs[{j}]"
+            if isinstance(leg.length, LegDrive):
+                assert leg.at is not None  # TriadLeg checks
+                drive = leg.length
+                shift = self.num(drive.shift, "length", (*where, "length", "shift"),
+                                 dim=f"{name}.length.shift")
+                if drive.argument not in self.mech.arguments:
+                    self.problems.append(Problem((*where, "length", "argument"),
+                                                 f"argument {drive.argument} is not defined",
+                                                 f"add it under arguments: (e.g. "
+                                                 f"{drive.argument}: {{table: {{0: 1.0, N: "
+                                                 "1.6}}}) or use one that exists"))
+                at = self.resolve(leg.at, (*where, "at"))
+                legs.append(("D", at, drive.argument, shift) if at is not None else None)
+                continue
             if leg.guide is None:
                 assert leg.at is not None and leg.length is not None  # TriadLeg checks
                 length = self.num(leg.length, "length", (*where, "length"), positive=True,
@@ -78,9 +92,9 @@ class TriadSteps(BuilderCore):
         theta = cmath.phase(guess[j2] - guess[j1]) * self.half / math.pi
         seg2 = unknowns[1][0]
         tail, head = self.segs[seg2].tail, self.segs[seg2].head
-        copy2 = self.seg(f"{g.legs[1].link} copy {tail}{head}", tail, head,
+        copy2 = self.seg(f"{g.legs[1].link or 'leg'} copy {tail}{head}", tail, head,
                          ("link", seg2, "r", 0.0, None), ("link", seg2, "a", 0.0, None),
-                         g.legs[1].link)
+                         g.legs[1].link or GROUND)
         ground2, chain2 = chains[1]
         self.loop(chains[0], [(m12, +1)], (ground2, (*chain2[:-1], (copy2, +1))),
                   name=f"III {g.link} 1", variant=1, module="coupled")
@@ -91,6 +105,10 @@ class TriadSteps(BuilderCore):
         local = {j1: 0j, j2: complex(sides[0]),
                  j3: sides[1] * cmath.exp(1j * gamma * math.pi / self.half)}
         for (seg, _, _), leg, spec in zip(unknowns, legs, g.legs, strict=True):
+            if leg[0] == "D":  # a drive between its ends, not a link
+                self.input_segs.add(seg)
+                continue
+            assert spec.link is not None
             if leg[0] == "R":
                 at = leg[1]
                 self.new_link(spec.link, seg, 0.0, {at.name: 0j, spec.joint: complex(leg[2])},
@@ -103,14 +121,24 @@ class TriadSteps(BuilderCore):
         self.new_link(g.link, m12, 0.0, local, j1, j2)
         self.links[g.link].segments += [m12, m13]
         for (seg, _, _), (ground, chain), spec in zip(unknowns, chains, g.legs, strict=True):
+            if spec.link is None:  # the driven leg's end: a point of the middle link
+                self.new_point(spec.joint, (g.link,), ground, chain)
+                continue
             self.new_point(spec.joint, (spec.link, g.link), ground, chain)
             self.pins.append((spec.joint, spec.link, g.link, seg, "head"))
         return True
 
-    def _leg(self, j: int, leg: tuple[Any, ...], link: str, joint: str, dim: str
+    def _leg(self, j: int, leg: tuple[Any, ...], link: str | None, joint: str, dim: str
              ) -> tuple[tuple[str, tuple], int]:
         """The segment of leg ``j`` (to its joint) and the chain from the ground to the
         joint through it."""
+        if leg[0] == "D":
+            _, at, argument, shift = leg
+            seg = self.seg(f"leg {at.name}{joint}", at.name, joint,
+                           ("arg", argument, shift, f"{dim}.legs[{j}].length.shift"),
+                           ("function",), GROUND)
+            return (at.ground, (*at.path, (seg, +1))), seg
+        assert link is not None
         if leg[0] == "R":
             _, at, length = leg
             seg = self.seg(f"{link} {at.name}{joint}", at.name, joint,
@@ -128,7 +156,7 @@ class TriadSteps(BuilderCore):
                    ) -> tuple[str, float]:
         """The unknown of a leg's segment (``"a"`` or ``"r"``) and its value (model units)
         with the points at their ``guess`` positions."""
-        if leg[0] == "R":
+        if leg[0] in "RD":
             at = leg[1]
             start = self.coords[at.name] if at.links[0] == GROUND else guess[at.name]
             return "a", cmath.phase(guess[joint] - start) * self.half / math.pi
@@ -143,7 +171,7 @@ class TriadSteps(BuilderCore):
         name the joints and the moving attachments, each once."""
         base = (*path, "guess")
         needed = [leg.joint for leg in g.legs] + [
-            leg[1].name for leg in legs if leg is not None and leg[0] == "R"
+            leg[1].name for leg in legs if leg is not None and leg[0] in "RD"
             and leg[1].links[0] != GROUND]
         out: dict[str, complex] = {}
         for name, (x, y) in g.guess.items():
