@@ -520,3 +520,20 @@ def test_the_roof_supports_leg_force_is_the_virtual_work_of_its_loads():
                                                           + 500 * rear.imag))
     np.testing.assert_allclose(frame["F_bal [N]"].to_numpy(), -work, rtol=1e-6)
     assert frame["F_bal [N]"].min() > 1e6  # the leg pushes: meganewtons under the roof
+
+
+def test_a_mechanism_is_driven_once():
+    roof = yaml.safe_load(ROOF.read_text())
+    both = dict(roof, input={"kind": "crank", "pivot": "D", "joint": "Q", "length": 0.1})
+    with pytest.raises(ValueError, match="drive the mechanism once"):
+        GroupMechanism.model_validate(both)
+    with pytest.raises(ValueError, match="needs one input"):
+        GroupMechanism.model_validate({k: v for k, v in SIX_BAR.items() if k != "input"})
+    named = copy.deepcopy(roof)
+    named["groups"][0]["legs"][2]["link"] = "leg"
+    with pytest.raises(ValueError, match="not a link: remove its link"):
+        GroupMechanism.model_validate(named)
+    undefined = copy.deepcopy(roof)
+    undefined["groups"][0]["legs"][2]["length"] = {"argument": 2}
+    ((path, message),) = _problems(undefined)
+    assert path == ("groups", 0, "legs", 2, "length", "argument") and "2" in message
