@@ -12,8 +12,9 @@ The package, one step per module (imports flow down this list, never back):
 * :mod:`.inputs`, :mod:`.dyads`, :mod:`.triads` — one step per group kind;
   :mod:`.bodies` — bodies, joints, masses and loads; :mod:`.dimensions` — point
   locations, dimension carriers, the synthesis task;
-* :mod:`.core` — the builder's state and elementary steps (segments, contours, guides,
-  points on links);
+* :mod:`.places` — guides and points fixed in links; :mod:`.names` — point and link
+  names declared and resolved;
+* :mod:`.core` — the builder's state and elementary steps (numbers, segments, contours);
 * :mod:`.located` — :class:`Carrier`, :class:`PointLocation`, :class:`BuiltModel`;
 * :mod:`.spec` — the file's schema (pydantic classes).
 

@@ -14,12 +14,13 @@ from mechloop.model.dynamic import (
     TailPoint,
     VectorPoint,
 )
-from mechloop.model.groups.core import GROUND, BuilderCore, _Link
+from mechloop.model.groups.core import GROUND, _Link
+from mechloop.model.groups.names import NameSteps
 from mechloop.model.groups.spec import Share
 from mechloop.model.units import UnitProblem, to_si, unit_factor
 
 
-class BodySteps(BuilderCore):
+class BodySteps(NameSteps):
     """Writes the model data: vectors, contours, bodies, joints, loads."""
 
     def model_data(self) -> dict[str, Any]:

@@ -49,6 +49,7 @@ class Builder(InputSteps, DyadSteps, TriadSteps, BodySteps, DimensionSteps):
         """The plain data of the vector model, before it is validated and checked; every
         problem of the group file raised at once."""
         mech = self.mech
+        self.declare()
         for kind in ("angle", "length"):
             try:
                 factor = unit_factor(getattr(self.units, kind), kind)

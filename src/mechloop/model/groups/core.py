@@ -21,7 +21,7 @@ from mechloop.model.dynamic import (
     HeadPoint,
     TailPoint,
 )
-from mechloop.model.groups.spec import GROUND, GroupMechanism, Guide, Triad, Variant
+from mechloop.model.groups.spec import GROUND, GroupMechanism, Variant
 from mechloop.model.signals import Scalar
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
@@ -108,7 +108,7 @@ class BuilderCore:
         self.root = next(iter(mech.ground))
         self.half = 0.0
         self.link_names: dict[str, tuple] = {}
-        self.declared = self._declared()
+        self.declared: dict[str, tuple[str, tuple]] = {}  # set by NameSteps.declare
         self.pending = dict(mech.points)
         self.starts: dict[int, str] = {}  # contour number -> the ground point it starts at
         task = mech.synthesis
@@ -136,102 +136,6 @@ class BuilderCore:
         if dim is not None:
             self.dims[dim] = out
         return out
-
-    # -- names ---------------------------------------------------------------------------
-
-    def _declared(self) -> dict[str, tuple[str, tuple]]:
-        """Every point name and where it is defined ("ground", "input", "groups[i]",
-        "points")."""
-        mech = self.mech
-        out: dict[str, tuple[str, tuple]] = {}
-
-        def add(name: str, what: str, path: tuple) -> None:
-            if name in out:
-                self.problems.append(Problem(path, f"point {name!r} is already defined at "
-                                             f"{format_path(out[name][1])}",
-                                             "give every point its own name"))
-            else:
-                out[name] = (what, path)
-
-        for name in mech.ground:
-            add(name, "ground", ("ground", name))
-        if mech.input is not None:
-            add(mech.input.joint, "input", ("input", "joint"))
-        for i, g in enumerate(mech.groups):
-            if isinstance(g, Triad):
-                for j, leg in enumerate(g.legs):
-                    add(leg.joint, f"groups[{i}]", ("groups", i, "legs", j, "joint"))
-                continue
-            new = getattr(g, "joint", None) or getattr(g, "point", None)
-            if new is not None:
-                key = "joint" if hasattr(g, "joint") else "point"
-                add(new, f"groups[{i}]", ("groups", i, key))
-        for name in mech.points:
-            add(name, "points", ("points", name))
-        names: dict[str, tuple] = {}
-        inputs = [] if mech.input is None else [(mech.input.link, ("input", "link"))]
-        for link, path in inputs + [
-                (name, _link_path(g, i, j)) for i, g in enumerate(mech.groups)
-                for j, name in enumerate(g.links)]:
-            if link == GROUND:
-                self.problems.append(Problem(path, "'ground' names the fixed link",
-                                             "give the link another name"))
-            elif link in names:
-                self.problems.append(Problem(path, f"link {link!r} is already defined at "
-                                             f"{format_path(names[link])}",
-                                             "give every link its own name"))
-            else:
-                names[link] = path
-        self.link_names = names
-        return out
-
-    def resolve(self, ref: str, path: tuple) -> _Point | None:
-        """The point a reference names (on the asked link); a problem and None otherwise.
-        Returns the point with ``links`` narrowed to the one meant (``links[0]``)."""
-        link: str | None = None
-        name = ref.strip()
-        if "." in name:
-            link, name = (s.strip() for s in name.split(".", 1))
-            if link != GROUND and link not in self.link_names:
-                self.problems.append(Problem(path, f"no link named {link!r}",
-                                             _choose(link, [GROUND, *self.link_names])))
-                return None
-        if name not in self.declared:
-            self.problems.append(Problem(path, f"unknown point {name!r}", _choose(
-                name, [*self.points, *(p for p in self.declared if p not in self.points)],
-                "the ground points, the input's joint, joints of earlier groups and points "
-                "on links")))
-            return None
-        if name not in self.points:
-            where, at = self.declared[name]
-            if where == "points":
-                on = self.mech.points[name].link
-                defined = self.link_names.get(on)
-                fix = (f"point {name} is on link {on!r}, defined at {format_path(defined)}: "
-                       "attach this group after that one" if defined is not None else
-                       f"point {name} is on link {on!r}, which no group defines")
-            else:
-                fix = (f"{name} is defined by {where} ({format_path(at)}): a group can only "
-                       "use points of the ground, the input and earlier groups — move this "
-                       "group after that one")
-            self.problems.append(Problem(path, f"point {name!r} is not defined yet", fix))
-            return None
-        point = self.points[name]
-        if point.broken:
-            return None
-        if link is None:
-            if len(point.owners) > 1:
-                options = " or ".join(f"{k}.{name}" for k in point.owners)
-                self.problems.append(Problem(path, f"point {name!r} joins links "
-                                             f"{' and '.join(point.owners)}: which one is "
-                                             "meant is not clear", f"write {options}"))
-                return None
-            link = point.owners[0]
-        if link not in point.links:
-            self.problems.append(Problem(path, f"point {name!r} is not on link {link!r}",
-                                         f"{name} is on {', '.join(point.links)}"))
-            return None
-        return _Point(point.name, point.owners, [link], point.ground, point.path)
 
     # -- segments and roles --------------------------------------------------------------
 
@@ -385,88 +289,6 @@ class BuilderCore:
                 return self.end_of(seg.id, "tail" if seg.tail == point else "head")
         raise AssertionError(f"point {point} is not placed")  # every placed point has one
 
-    def guide(self, spec: Guide, path: tuple, dim: str
-              ) -> tuple[_Point, float, float | None] | None:
-        """The point a guide runs through, its angle and offset (model units)."""
-        through = self.resolve(spec.through, (*path, "through"))
-        angle = self.num(spec.angle, "angle", (*path, "angle"), dim=f"{dim}.angle")
-        offset = None if spec.offset is None else self.num(spec.offset, "length",
-                                                           (*path, "offset"),
-                                                           dim=f"{dim}.offset")
-        return None if through is None else (through, angle, offset)
-
-    def guide_chain(self, through: _Point, offset: float | None, slide: int, turn: float,
-                    dim: str, name: str) -> tuple[tuple[int, int], ...]:
-        """The chain to the guide's origin (the foot of the slide): the chain of
-        ``through`` plus the offset segment, whose direction is the slide's turned by
-        ``turn`` degrees."""
-        if offset is None:
-            return through.path
-        link = through.links[0]
-        off = self.seg(name, through.name, ".foot", ("const", offset, f"{dim}.offset"),
-                       ("link", slide, "a", turn * self.half / 180.0, None), link)
-        if link != GROUND:
-            self.links[link].segments.append(off)
-        return (*through.path, (off, +1))
-
-    def add_points(self, link: str) -> None:
-        """Register the points of ``points`` that are fixed in ``link`` (in file order)."""
-        owner = self.links[link]
-        for name, spec in list(self.pending.items()):
-            if spec.link != link:
-                continue
-            del self.pending[name]
-            path = ("points", name)
-            distance = self.num(spec.distance, "length", (*path, "distance"), positive=True,
-                                dim=f"points.{name}.distance")
-            angle = self.num(spec.angle, "angle", (*path, "angle"),
-                             dim=f"points.{name}.angle")
-            origin_name = spec.from_ or owner.first
-            if owner.ref is None:  # the link itself failed
-                self.new_point(name, (link,), self.root, (), broken=True)
-                continue
-            later = (origin_name or "").split(".")[-1].strip()
-            if later in self.pending and self.pending[later].link == link:
-                self.problems.append(Problem((*path, "from"), f"point {name} is measured from "
-                                             f"{later}, which is listed after it",
-                                             f"list {later} before {name} under points:"))
-                self.new_point(name, (link,), self.root, (), broken=True)
-                continue
-            if origin_name is None:
-                self.problems.append(Problem((*path, "from"), f"link {link!r} has no first "
-                                             "point to measure from", "give from: a point "
-                                             "of the link"))
-                self.new_point(name, (link,), self.root, (), broken=True)
-                continue
-            origin = self.resolve(f"{link}.{origin_name.split('.')[-1]}", (*path, "from"))
-            if origin is None:
-                self.new_point(name, (link,), self.root, (), broken=True)
-                continue
-            if origin.name not in owner.local:
-                self.problems.append(Problem((*path, "from"), f"{origin.name} is not a fixed "
-                                             f"point of link {link!r}",
-                                             f"measure from one of {', '.join(owner.local)}"))
-                self.new_point(name, (link,), self.root, (), broken=True)
-                continue
-            seg = self.seg(f"{link} point {name}", origin.name, name,
-                           ("const", distance, f"points.{name}.distance"),
-                           self.angle_on(link, angle, f"points.{name}.angle"), link)
-            owner.local[name] = owner.local[origin.name] + distance * cmath.exp(
-                1j * angle * math.pi / self.half)
-            owner.segments.append(seg)
-            self.new_point(name, (link,), origin.ground, (*origin.path, (seg, +1)))
-
-    def _attach(self, refs: list[tuple[str, tuple]]) -> list[_Point] | None:
-        out = [self.resolve(ref, p) for ref, p in refs]
-        if any(p is None for p in out):
-            return None
-        names = [p.name for p in out if p is not None]
-        if len(set(names)) < len(names):
-            self.problems.append(Problem(refs[-1][1], f"both attachments are {names[0]}",
-                                         "attach the group's links at two different points"))
-            return None
-        return out  # type: ignore[return-value]
-
     # -- output ----------------------------------------------------------------------------
 
     def role(self, template: Template, letter: str, reversed_: bool) -> Any:
@@ -485,21 +307,6 @@ class BuilderCore:
         if letter == "a":
             delta = _tidy(delta, self.half)
         return {"link": f"{letter}{target.vector}", "delta": delta}
-
-    def link_of(self, name: str, path: tuple) -> _Link | None:
-        if name in self.links and name != GROUND:
-            return self.links[name]
-        self.problems.append(Problem(path, f"no moving link named {name!r}",
-                                     _choose(name, [k for k in self.links if k != GROUND])))
-        return None
-
-
-def _link_path(group: Any, i: int, j: int) -> tuple:
-    """Where link ``j`` of ``group`` (number ``i``) is named in the document."""
-    if isinstance(group, Triad):
-        legs = [k for k, leg in enumerate(group.legs) if leg.link is not None]
-        return ("groups", i, "legs", legs[j], "link") if j < len(legs) else ("groups", i, "link")
-    return ("groups", i, "links", j)
 
 
 def _plain(value: Scalar) -> float | None:

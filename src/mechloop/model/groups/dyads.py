@@ -7,11 +7,11 @@ from __future__ import annotations
 import math
 
 from mechloop.errors import Problem
-from mechloop.model.groups.core import BuilderCore
+from mechloop.model.groups.places import PlaceSteps
 from mechloop.model.groups.spec import PRP, RPP, RPR, RRP, RRR, Variant
 
 
-class DyadSteps(BuilderCore):
+class DyadSteps(PlaceSteps):
     """Builds the dyads."""
 
     def _l1(self, g: RRR, path: tuple, dim: str, l1: str, l2: str, variant: Variant) -> bool:

@@ -5,11 +5,11 @@ driven along a ground guide.
 from __future__ import annotations
 
 from mechloop.errors import Problem
-from mechloop.model.groups.core import BuilderCore
+from mechloop.model.groups.places import PlaceSteps
 from mechloop.model.groups.spec import GROUND, CrankInput
 
 
-class InputSteps(BuilderCore):
+class InputSteps(PlaceSteps):
     """Builds the input group."""
 
     def add_input(self) -> None:

@@ -25,11 +25,12 @@ import math
 from typing import Any
 
 from mechloop.errors import Problem
-from mechloop.model.groups.core import GROUND, BuilderCore, _tidy
+from mechloop.model.groups.core import GROUND, _tidy
+from mechloop.model.groups.places import PlaceSteps
 from mechloop.model.groups.spec import LegDrive, Triad
 
 
-class TriadSteps(BuilderCore):
+class TriadSteps(PlaceSteps):
     """Builds triads."""
 
     def add_triad(self, g: Triad, path: tuple, dim: str) -> bool:
