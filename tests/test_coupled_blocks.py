@@ -121,8 +121,8 @@ def test_link_to_own_function_is_a_coupled_block_of_one():
     assert block.coupled and block.contours == (1,)
     res = mechloop.solve(model)
     eq = Equations(model)
-    for k in range(0, 37, 6):
-        roots = eq.assemblies(k, starts=30)
+    for k in (0, 13, 29):
+        roots = eq.assemblies(k, starts=20)
         assert min(eq.distance(_unknowns(res, eq, k), x) for x in roots) < 1e-10
 
 
@@ -226,7 +226,7 @@ def test_forced_designs_give_the_closed_form_numbers():
 def test_every_assembly_at_position_0_is_reached_from_its_guess():
     model = triad(**BASE, sweep=30, n=6)
     eq = Equations(model)
-    roots = eq.assemblies(0, starts=200)
+    roots = eq.assemblies(0, starts=80)
     assert len(roots) >= 2
     data = _triad_dict(model)
     for root in roots:
@@ -256,7 +256,7 @@ points = st.tuples(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0))
 
 @st.composite
 def triads(draw):
-    B1 = np.array(draw(points)) + (0.0, 1.0)
+    B1 = np.array(draw(points)) + np.array([0.0, 1.0])
     B2 = B1 + draw(st.floats(0.3, 0.8)) * np.array(
         [math.cos(t := draw(st.floats(-1.0, 1.0))), math.sin(t)])
     B3 = B1 + draw(st.floats(0.3, 0.8)) * np.array(
@@ -269,29 +269,35 @@ def triads(draw):
     return dict(B1=B1, B2=B2, B3=B3, A1=A1, A2=A2, c=c)
 
 
-def _followed(eq: Equations, u: np.ndarray, k: int, x: np.ndarray, steps: int = 40
-              ) -> np.ndarray | None:
-    """The oracle's own continuation of root ``u`` from position ``k`` to ``k + 1`` in
-    ``steps`` fine steps (None where the branch is lost: no root, a singular Jacobian
-    crossed, or a jump)."""
+def _followed(eq: Equations, u: np.ndarray, k: int, x: np.ndarray) -> np.ndarray | None:
+    """The oracle's own continuation of root ``u`` from position ``k`` to ``k + 1``:
+    steps of 1/8 of the way, halved (down to 2⁻¹⁶ of it) wherever a step moves the
+    root by more than 0.05 rad; None where the branch is lost (no root within the
+    smallest step, or the Jacobian's determinant changes sign)."""
     sign = eq.jacobian_sign(u, k)
     dx = x[k + 1] - x[k]
-    for i in range(1, steps + 1):
-        nxt = eq.solve_from(u, k, dx * i / steps)
-        if nxt is None or eq.distance(nxt, u) > 0.3:
-            return None
-        u = nxt
+    at, step = 0.0, 1.0 / 8
+    while at < 1.0:
+        step = min(step, 1.0 - at)
+        nxt = eq.solve_from(u, k, dx * (at + step))
+        if nxt is None or eq.distance(nxt, u) > 0.05:
+            if step < 2.0 ** -16:
+                return None
+            step /= 2
+            continue
+        u, at = nxt, at + step
+        step *= 2
     root = eq.solve_from(u, k + 1)
     if root is None or eq.jacobian_sign(root, k + 1) != sign:
         return None
     return root
 
 
-@settings(max_examples=12, deadline=None,
+@settings(max_examples=8, deadline=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 @given(triads())
 def test_random_triads_follow_the_oracle(geometry):
-    n = 20
+    n = 12
     model = triad(**geometry, sweep=120, n=n)
     res = mechloop.solve(model, analogs_of=1)
     eq = Equations(model)
@@ -312,16 +318,19 @@ def test_random_triads_follow_the_oracle(geometry):
     if reached < n:
         # the oracle lost the branch between `reached` and `reached + 1`: so does the solver
         assert res.broken[reached + 1]
-    for k in range(0, reached + 1, 4):
+    for k in range(0, reached + 1, 3):
         if eq.jacobian_sign(_unknowns(res, eq, k), k) == 0:
             continue
-        d1, d2 = eq.rates(_unknowns(res, eq, k), k)
-        scale = max(1.0, float(np.abs(d1).max()))
-        assert np.abs(np.array([res.rates[n][k] for n in eq.names]) - d1).max() \
-            < 1e-5 * scale
-        scale2 = max(1.0, float(np.abs(d2).max()))
-        assert np.abs(np.array([res.accels[n][k] for n in eq.names]) - d2).max() \
-            < 1e-3 * scale2
+        found = eq.rates(_unknowns(res, eq, k), k)
+        if found is None:
+            continue  # a limit position within the difference step
+        d1, d2, e1, e2 = found
+        # within 1e-7 (rates) and 1e-5 (accelerations) of the size, or the oracle's own
+        # error estimate where a limit position is near
+        rates = np.array([res.rates[n][k] for n in eq.names])
+        accels = np.array([res.accels[n][k] for n in eq.names])
+        assert (np.abs(rates - d1) <= 1e-7 * max(1.0, np.abs(d1).max()) + 10 * e1).all()
+        assert (np.abs(accels - d2) <= 1e-4 * max(1.0, np.abs(d2).max()) + 10 * e2).all()
 
 
 def test_results_do_not_depend_on_the_blocks_of_positions():

@@ -26,11 +26,13 @@ here has the same assembly as in closed form.  A block with several assemblies o
 near the previous one: past a limit position), the Jacobian is singular (a dead point:
 ``|det J| / Π ‖column‖`` below :data:`~mechloop.solve.kinematics.SINGULAR_SIN`, the
 relative test the elementary modules use — for 2×2 it is the sine between the columns),
-or the solution jumped to another assembly branch (the determinant changed sign, or a
-continuing step moved an angle by more than :data:`JUMP_ANGLE` or a length by more than
-:data:`JUMP_LENGTH` of the block's size away from the predictor).  After a break, later
-positions restart from the last good solution (no predictor); on that restart only the
-sign of the determinant decides whether the branch is the same.
+or the solution jumped to another assembly branch (the determinant changed sign, or,
+with a predictor from the last two positions, the solution lies farther from it than
+twice the last step and more than :data:`JUMP_ANGLE` for an angle or :data:`JUMP_LENGTH`
+of the block's size for a length).  The first step after position 0 and after a break
+has no such predictor: there only the determinant's sign tells the branch (a jump to
+another assembly of the same sign is not seen there).  After a break, later positions
+restart from the last good solution (no predictor).
 
 The continuation is sequential along positions and runs compiled (numba): a block is
 described by integer and float arrays (where each vector's ``r`` and ``α`` come from — a
@@ -59,8 +61,8 @@ MAX_ITERATIONS = 60
 STEP_TOL = 1e-11
 #: The closure residual (relative to the block's size) a converged solution must meet.
 RESIDUAL_TOL = 1e-9
-#: A continuing step whose solution lies farther than this from the predictor (rad) has
-#: jumped to another assembly.
+#: A continuing step whose solution lies farther than this from the predictor (rad), and
+#: farther than twice the last step, has jumped to another assembly.
 JUMP_ANGLE = math.pi / 4
 #: The same for a length, as a fraction of the block's size (sum of its known lengths).
 JUMP_LENGTH = 0.25
@@ -310,13 +312,12 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                 code = DEAD
             elif (det > 0) != (sign[row] > 0):
                 code = JUMP
-            elif run[row] >= 1:
+            elif run[row] >= 2:
                 for i in range(m):
-                    if run[row] >= 2:
-                        d = abs(u[i] - (2.0 * last[row, i] - prev[row, i]))
-                    else:
-                        d = abs(u[i] - last[row, i])
-                    if (d > JUMP_ANGLE) if angle[i] else (d > JUMP_LENGTH * size):
+                    d = abs(u[i] - (2.0 * last[row, i] - prev[row, i]))
+                    step = 2.0 * abs(last[row, i] - prev[row, i])
+                    limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size, step)
+                    if d > limit:
                         code = JUMP
             status[row, col] = code
             det_out[row, col] = det if code == OK else 0.0
