@@ -252,7 +252,7 @@ def test_a_triad_without_the_assembly_is_told_what_to_draw():
     data = copy.deepcopy(SIX_BAR)
     del data["groups"][0]["guess"]["A"]
     ((path, message),) = _problems(data)
-    assert path == ("groups", 0, "guess") and "A" in message and "six" in message
+    assert path == ("groups", 0, "guess", "A") and "A" in message and "six" in message
 
 
 def test_a_guess_of_another_point_is_refused():
@@ -441,6 +441,17 @@ def test_a_triad_file_with_missing_keys_is_located_with_the_fix(tmp_path):
     assert found[("groups", 0, "sides")].startswith("add sides:")
     assert found[("groups", 0, "legs", 2)] == "give exactly three legs"
     assert all(p.line for p in info.value.problems)
+    bad = copy.deepcopy(SIX_BAR)
+    bad["groups"][0]["guess"]["B"] = [1]
+    bad["groups"][0]["sides"] = [0.31, "abc"]
+    bad["groups"][0]["legs"][0]["at"] = "Q"
+    path.write_text(yaml.safe_dump(bad))
+    with pytest.raises(ModelError) as info:
+        mechloop.load_model(path)
+    found = {p.path: p.message for p in info.value.problems}
+    assert set(found) == {("groups", 0, "guess", "B", 1), ("groups", 0, "sides", 1),
+                          ("groups", 0, "legs", 0, "at")}  # nothing about the stand-ins
+    assert found[("groups", 0, "guess", "B", 1)] == "a position is [x, y]"
 
 
 # ------------------------------------------------------------- a driven leg: the roof support

@@ -164,6 +164,8 @@ def _group_hint(error: dict[str, Any], message: str, hint: str) -> tuple[str, st
     if kind == "string_pattern_mismatch":
         return message, "write a name without dots or surrounding spaces (a dot separates " \
                         "a link from a point: coupler.B)"
+    if "guess" in loc[:-1] and kind in ("missing", "too_short", "too_long", "tuple_type"):
+        return "a position is [x, y]", "write the point's approximate [x, y] (length units)"
     legs = (kind == "missing" and len(loc) >= 2 and str(loc[-2]) == "legs"
             and isinstance(loc[-1], int))
     if legs or (kind in ("too_short", "too_long") and loc and str(loc[-1]) == "legs"):

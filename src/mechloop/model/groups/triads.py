@@ -175,18 +175,20 @@ class TriadSteps(PlaceSteps):
             leg[1].name for leg in legs if leg is not None and leg[0] in "RD"
             and leg[1].links[0] != GROUND]
         out: dict[str, complex] = {}
+        known = all(leg is not None for leg in legs)  # else the attachments are unknown
         for name, (x, y) in g.guess.items():
             if name not in needed:
-                self.problems.append(Problem((*base, name), f"{name!r} is not a joint of this "
-                                             "triad or a moving point its legs are pinned to",
-                                             f"give approximate positions of "
-                                             f"{', '.join(needed)}"))
+                if known:
+                    self.problems.append(Problem((*base, name), f"{name!r} is not a joint of "
+                                                 "this triad or a moving point its legs are "
+                                                 "pinned to", f"give approximate positions "
+                                                 f"of {', '.join(needed)}"))
                 continue
             out[name] = complex(self.num(x, "length", (*base, name, 0)),
                                 self.num(y, "length", (*base, name, 1)))
         missing = [name for name in needed if name not in g.guess]
         if missing:
-            self.problems.append(Problem(base, f"no approximate position of "
+            self.problems.append(Problem((*base, missing[0]), f"no approximate position of "
                                          f"{', '.join(missing)}: a triad has up to six "
                                          "assemblies, and these pick one",
                                          f"add {missing[0]}: [x, y] (where it is at position "
