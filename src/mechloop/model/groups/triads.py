@@ -2,8 +2,10 @@
 contours.
 
 A triad's middle (ternary) link carries the joints J1, J2, J3 of its three legs; a leg is
-pinned to a placed point (an RR leg: its angle is unknown) or slides along a ground guide
-(a PR leg: its position along the guide is unknown).  With the angle θ of the middle
+pinned to a placed point (an RR leg: its angle is unknown), slides along a ground guide
+(a PR leg: its position along the guide is unknown) or is a hydraulic leg, a drive whose
+length is an argument (its angle is unknown; the triad is then the mechanism's input
+group, and the leg no link of it).  With the angle θ of the middle
 link that makes four unknowns, and the two contours
 
 * contour 1: the chain to J1 (leg 1), J1 → J2 on the middle link (θ), back along leg 2 —
@@ -107,7 +109,6 @@ class TriadSteps(PlaceSteps):
                  j3: sides[1] * cmath.exp(1j * gamma * math.pi / self.half)}
         for (seg, _, _), leg, spec in zip(unknowns, legs, g.legs, strict=True):
             if leg[0] == "D":  # a drive between its ends, not a link
-                self.input_segs.add(seg)
                 continue
             assert spec.link is not None
             if leg[0] == "R":
