@@ -294,6 +294,10 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"\((?P<fig>3\.5) to 3\.6 over", ("bench", "benchmarks/bench_fourbar.py", True)),
     (R, r"3\.5 to (?P<fig>3\.6) over", ("bench", "benchmarks/bench_fourbar.py", True)),
     (R, r"elsewhere (?P<fig>3\.0)", ("bench", "benchmarks/bench_fourbar.py", True)),
+    (R, r"coupled vs closed form: (?P<fig>4\.9)", ("bench", "benchmarks/bench_coupled.py",
+                                                  True)),
+    (R, r"the triad (?P<fig>441) ms", ("bench", "benchmarks/bench_coupled.py", True)),
+    (R, r"(?P<fig>5\.3) times the four-bar", ("bench", "benchmarks/bench_coupled.py", True)),
     (R, r"printed (?P<fig>12\.7)–17\.3", ("bench", "benchmarks/bench_synthesis.py", True)),
     (R, r"12\.7–(?P<fig>17\.3)", ("bench", "benchmarks/bench_synthesis.py", True)),
     (R, r"mechloop\s(?P<fig>122,700)–", ("bench", "benchmarks/bench_synthesis.py", True)),
@@ -400,6 +404,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"0666 less the umask|1,048,575 rows|16,384 columns",
      "the POSIX default file mode and Excel's sheet limits (constants of mechloop.output)"),
     (R, r"blocks \(8192", "the block size in mechloop.solve"),
+    (R, r"100,001\s+positions|within 1e-12 of their size", "bench_coupled.py's settings "
+        "(--n 100000) and its check"),
     (R, r"\d+ unknowns, \d+ equations", "counts of the source's formulation"),
     (R, r"41, exact|of the 41 positions", "the example's positions 0..40"),
     (R, r"\d+ × \d+ lever angles at \d°, kept where 0\.72 ≤ L² ≤ 0\.73 m²|"
