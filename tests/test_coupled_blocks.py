@@ -366,6 +366,13 @@ def test_designs_of_a_triad_match_one_solve_each():
     np.testing.assert_array_equal(at.broken, regular.broken[:, 20:30])
 
 
+def test_some_positions_only_are_refused_for_a_coupled_block():
+    from mechloop.errors import SolveError
+
+    with pytest.raises(SolveError, match="coupled block is continued"):
+        solve_designs(triad(**BASE, sweep=60, n=12), {"r6": [1.2]}, positions=[0, 5])
+
+
 def test_sensitivities_refuse_a_coupled_block():
     from mechloop.solve.sensitivity import position_tangents
 

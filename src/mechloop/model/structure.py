@@ -1,10 +1,12 @@
 """Structure of a vector model: roles resolved, modules named, contours put in order.
 
 :func:`analyze` reads a :class:`~mechloop.model.schema.Model` and returns a
-:class:`Structure` — for every contour its functions, module type (Pl1–Pl4) and the
-contours it needs first — together with every structural problem it found (a contour with
-the wrong number of functions, a link to nothing, a cycle, ...), each with its place in the
-document and the fix.  Nothing here touches numbers beyond reading roles.
+:class:`Structure` — for every contour its functions, module type (Pl1–Pl4, or
+``coupled``) and the contours it needs, and the blocks solved one after another
+(:func:`find_blocks`: a contour alone in closed form, or a coupled block) — together with
+every structural problem it found (a contour or block with the wrong number of functions,
+a link to nothing, a cycle of links, ...), each with its place in the document and the
+fix.  Nothing here touches numbers beyond reading roles.
 """
 
 from __future__ import annotations

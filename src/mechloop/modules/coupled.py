@@ -45,6 +45,7 @@ call solves every design × position of a block with no Python loop.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -365,6 +366,7 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     U[row, col, i] = u[i]
 
 
+@functools.lru_cache(maxsize=8)
 def start_points(m: int) -> Array:
     """The fixed starts of the first assembly, ``(STARTS, m)`` fractions in [0, 1): a
     scrambled Halton sequence with a fixed seed (reproducible), the middle of the box
@@ -477,7 +479,8 @@ def block_rates(plan: Plan, r: list[Array], a: list[Array], r_rate: list[Array],
         b[..., e + 1] += r_rate[t] * s + w * c
     J[~good] = np.eye(m)
     b[~good] = 0.0
-    rate = -np.linalg.solve(J, b[..., None])[..., 0]
+    inverse = np.linalg.inv(J)  # one factorization for both right-hand sides
+    rate = -(inverse @ b[..., None])[..., 0]
     rate[~good] = np.nan
     if r_accel is None:
         return rate, None
@@ -492,6 +495,6 @@ def block_rates(plan: Plan, r: list[Array], a: list[Array], r_rate: list[Array],
         b[..., e] += radial * c - tangential * s
         b[..., e + 1] += radial * s + tangential * c
     b[~good] = 0.0
-    accel = -np.linalg.solve(J, b[..., None])[..., 0]
+    accel = -(inverse @ b[..., None])[..., 0]
     accel[~good] = np.nan
     return rate, accel

@@ -164,8 +164,9 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
     synthesis evaluates so when its objective reads the target positions only.  The
     positions need not be neighbours, so the angles found are not unwrapped: each lies
     in (−π, π] (plus its link's delta), the same direction as in a solve of all.  A
-    contour whose variant is tracked (``auto``) follows its neighbours, so such a model
-    cannot be solved at some positions only (:class:`SolveError`).
+    contour whose variant is tracked (``auto``) follows its neighbours, and so does a
+    coupled block (Newton's continuation), so such a model cannot be solved at some
+    positions only (:class:`SolveError`).
 
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
@@ -187,6 +188,9 @@ def _chosen(model: Model, positions: ArrayLike | None) -> NDArray[np.int64] | No
     if any(c.variant == "auto" for c in model.contours):
         raise SolveError("a contour with variant auto follows its neighbours: it is "
                          "solved at every position", "give its variant as 1 or 2")
+    if require_valid(model).coupled:
+        raise SolveError("a coupled block is continued from position to position: it is "
+                         "solved at every position", "solve every position (positions=None)")
     return chosen
 
 

@@ -10,6 +10,12 @@ the whole array of positions, then two 2×2 linear solves with the module's Jaco
 with ``e = (cos α, sin α)``, ``n = (−sin α, cos α)``: the unknown rates multiply the
 Jacobian columns (``e_j`` for an unknown length, ``r_j n_j`` for an unknown angle) and all
 other terms are known.  No Python loop runs over positions.
+
+The contours come in *blocks* (:attr:`~mechloop.model.structure.Structure.blocks`): an
+elementary block is one contour solved as above; a coupled block (contours that need each
+other's functions, or link to their own) is solved by Newton's continuation along the
+positions (:mod:`mechloop.solve.blocks`, :mod:`mechloop.modules.coupled`), its rates by
+the same two linear systems with the block's ``2k × 2k`` Jacobian.
 """
 
 from __future__ import annotations
