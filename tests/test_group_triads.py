@@ -460,11 +460,11 @@ ROOF = ROOT / "examples" / "roof_support_groups.yaml"
 
 
 def roof_reference(lengths: np.ndarray, guess: dict[str, complex]) -> dict[str, np.ndarray]:
-    """Joints B, A, K of the roof support's triad for each leg length |K D| (m), from the
-    pins' distances alone (front link, rear link, the shield as a rigid triangle),
-    continued from the drawn positions; E on the shield line 1.72 m past B."""
+    """Joints B, A, C of the roof support's triad for each leg length |C D| (m), from the
+    pins' distances alone (front link, rear link, the shield as a rigid bar with C 0.40 m
+    past B), continued from the drawn positions; E on the shield line 1.72 m past B."""
     o1, o2, d = 0.30 + 0.20j, 1.605 + 0.725j, 0.15j
-    k_of = 0.3 / 0.85 * cmath.exp(1j * math.radians(20))
+    k_of = 0.40 / 0.85 * cmath.exp(1j * math.pi)
 
     def equations(x: np.ndarray, length: float) -> list[float]:
         b, a = complex(x[0], x[1]), complex(x[2], x[3])
@@ -473,14 +473,14 @@ def roof_reference(lengths: np.ndarray, guess: dict[str, complex]) -> dict[str, 
                 abs(a - b) ** 2 - 0.85 ** 2, abs(k - d) ** 2 - length ** 2]
 
     x = np.array([guess["B"].real, guess["B"].imag, guess["A"].real, guess["A"].imag])
-    out: dict[str, list[complex]] = {"B": [], "A": [], "K": [], "E": []}
+    out: dict[str, list[complex]] = {"B": [], "A": [], "C": [], "E": []}
     for length in lengths:
         x = root(equations, x, args=(length,), method="lm", tol=1e-15).x
         assert max(map(abs, equations(x, length))) < 1e-12
         b, a = complex(x[0], x[1]), complex(x[2], x[3])
         out["B"].append(b)
         out["A"].append(a)
-        out["K"].append(b + (a - b) * k_of)
+        out["C"].append(b + (a - b) * k_of)
         out["E"].append(b + 1.72 * (b - a) / abs(b - a))
     return {n: np.array(v) for n, v in out.items()}
 
@@ -494,7 +494,7 @@ def test_the_roof_support_with_its_leg_on_the_shield_solves_to_the_pins_joints()
     built = build(mech)
     results = mechloop.solve(built.model)
     assert not results.broken.any()
-    lengths = np.linspace(0.80, 1.28, 41)
+    lengths = np.linspace(1.35, 1.95, 41)
     guess = {n: complex(*xy) for n, xy in mech.groups[0].guess.items()}
     reference = roof_reference(lengths, guess)
     for name, z in reference.items():
@@ -514,7 +514,7 @@ def test_the_roof_supports_leg_force_is_the_virtual_work_of_its_loads():
 
     mech = mechanism_of(ROOF)
     frame = solve_dynamics(build(mech).model).to_frame()
-    lengths = np.linspace(0.80, 1.28, 41)
+    lengths = np.linspace(1.35, 1.95, 41)
     guess = {n: complex(*xy) for n, xy in mech.groups[0].guess.items()}
     h = 1e-6
     up, down = roof_reference(lengths + h, guess), roof_reference(lengths - h, guess)
@@ -524,7 +524,7 @@ def test_the_roof_supports_leg_force_is_the_virtual_work_of_its_loads():
 
     g = 9.81
     o1, o2 = 0.30 + 0.20j, 1.605 + 0.725j
-    shield = rate(lambda p: p["B"] + 0.86 * (p["B"] - p["A"]) / np.abs(p["B"] - p["A"]))
+    shield = rate(lambda p: p["B"] + 0.5 * (p["B"] - p["A"]) / np.abs(p["B"] - p["A"]))
     front, rear = rate(lambda p: (p["B"] + o2) / 2), rate(lambda p: (p["A"] + o1) / 2)
     work = (-2000e3 * rate(lambda p: p["E"]).imag - g * (6000 * shield.imag
                                                           + 650 * front.imag
@@ -548,3 +548,30 @@ def test_a_mechanism_is_driven_once():
     undefined["groups"][0]["legs"][2]["length"] = {"argument": 2}
     ((path, message),) = _problems(undefined)
     assert path == ("groups", 0, "legs", 2, "length", "argument") and "2" in message
+
+
+def test_the_roof_support_group_file_is_the_hand_written_real_one():
+    """examples/roof_support_real.yaml writes the same mechanism as a vector model by
+    hand (its leg's pin C 0.40 m past B on the shield line): the generated model moves the
+    shield's points and pushes the leg as the hand-written one does."""
+    import mechloop
+    from mechloop.dynamics.analysis import solve_dynamics
+    from mechloop.dynamics.points import Placement
+    from mechloop.model.groups import build, mechanism_of
+    from mechloop.model.schema import HeadPoint
+
+    built = build(mechanism_of(ROOF))
+    ours = mechloop.solve(built.model)
+    real_model = mechloop.load_model(ROOT / "examples" / "roof_support_real.yaml")
+    real = Placement(mechloop.solve(real_model))
+    # B, A, C and E in the hand-written model: heads of the front link, the shield, the
+    # B->C vector and the canopy
+    ends = {"B": HeadPoint(head=3), "A": HeadPoint(head=8), "C": HeadPoint(head=13),
+            "E": HeadPoint(head=11)}
+    for name, end in ends.items():
+        x, y = built.points[name].xy(ours)
+        np.testing.assert_allclose(x + 1j * y, real.point(end).z, rtol=0, atol=1e-12,
+                                   err_msg=name)
+    np.testing.assert_allclose(solve_dynamics(built.model).to_frame()["F_bal [N]"],
+                               solve_dynamics(real_model).to_frame()["F_bal [N]"],
+                               rtol=1e-9)
