@@ -447,6 +447,36 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
     return U, status, det, carry
 
 
+def block_jacobian(plan: Plan, r: list[Array], a: list[Array], r_scale: list[Array],
+                   a_scale: list[Array], shape: tuple[int, ...]) -> Array:
+    """The block Jacobian ``(*shape, m, m)`` at the values ``r[t]``, ``a[t]`` of its terms
+    (columns: ``scale·e`` for a length unknown, ``scale·r·n`` for an angle unknown)."""
+    m = len(plan.unknowns)
+    J = np.zeros((*shape, m, m))
+    for t in range(len(r)):
+        c, s = np.cos(a[t]), np.sin(a[t])
+        e = 2 * int(plan.eq[t])
+        ru, au = int(plan.r_unknown[t]), int(plan.a_unknown[t])
+        if ru >= 0:
+            J[..., e, ru] += r_scale[t] * c
+            J[..., e + 1, ru] += r_scale[t] * s
+        if au >= 0:
+            J[..., e, au] -= a_scale[t] * r[t] * s
+            J[..., e + 1, au] += a_scale[t] * r[t] * c
+    return J
+
+
+def block_hadamard(plan: Plan, r: list[Array], a: list[Array], r_scale: list[Array],
+                   a_scale: list[Array], shape: tuple[int, ...]) -> Array:
+    """``|det J| / Π ‖column‖`` of the block Jacobian, ``shape`` (NaN where a value is):
+    the dead-point measure of :func:`continue_block`."""
+    J = block_jacobian(plan, r, a, r_scale, a_scale, shape)
+    finite = np.isfinite(J).all(axis=(-2, -1))
+    J[~finite] = np.eye(len(plan.unknowns))
+    ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=-2), axis=-1)
+    return np.where(finite, ratio, np.nan)
+
+
 def block_rates(plan: Plan, r: list[Array], a: list[Array], r_rate: list[Array],
                 a_rate: list[Array], r_accel: list[Array] | None,
                 a_accel: list[Array] | None, r_scale: list[Array], a_scale: list[Array],

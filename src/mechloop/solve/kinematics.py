@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 from mechloop.errors import SolveError
 from mechloop.model.check import KIND_OF, argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
-from mechloop.model.structure import ContourInfo, Structure, is_function
+from mechloop.model.structure import BlockInfo, ContourInfo, Structure, is_function
 from mechloop.model.units import to_si
 from mechloop.modules.planar import (
     EXISTENCE_RTOL,
@@ -274,7 +274,10 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
     from mechloop.solve import blocks as coupled
 
     by_number = {c.number: c for c in setup.ordered}
-    for part in structure.blocks:
+    parts = structure.blocks or tuple(  # a Structure built without blocks: one each
+        BlockInfo(i + 1, (c.number,), c.functions, (), False)
+        for i, c in enumerate(setup.ordered))
+    for part in parts:
         if not (part.coupled or coupled.FORCE_COUPLED):
             info = by_number[part.contours[0]]
             inherited = np.zeros(shape, dtype=bool)
