@@ -39,15 +39,13 @@ CASES = [
     ("link_to_other_kind", GOOD.replace("4: {r: 0.01, a: 90}",
                                         "4: {r: 0.01, a: {link: r1}}"),
      9, ["a4 (angle) links to r1 (length)", "link to a1 instead"]),
-    ("link_to_own_function", GOOD.replace("4: {r: 0.01, a: 90}",
-                                          "4: {r: 0.01, a: {link: a2, delta: 90}}"),
-     9, ["a4 links to a2, a function of its own contour 1", "fix:"]),
-    ("cycle_of_contours", GOOD.replace("3: {r: function, a: 180}",
-                                       "3: {r: function, a: {link: a6}}").replace(
+    ("block_with_wrong_count", GOOD.replace("3: {r: function, a: 180}",
+                                            "3: {r: function, a: {link: a6}}").replace(
         "4: {r: 0.01, a: 90}",
-        "4: {r: 0.01, a: 90}\n  5: {r: 0.1, a: {link: a2}}\n  6: {r: function, a: function}",
-    ) + "  - vectors: [5, 6]\n",
-     12, ["cycle", "contour 1 -> contour 2 -> contour 1", "fix:"]),
+        "4: {r: 0.01, a: 90}\n  5: {r: 0.1, a: {link: a2}}\n  6: {r: function, a: function}"
+        "\n  7: {r: 0.1, a: function}",
+    ) + "  - vectors: [5, 6, 7]\n",
+     15, ["contour 2 has 3 function parameters (r6, a6, a7)", "coupled block", "fix:"]),
     ("cycle_of_links", GOOD.replace("4: {r: 0.01, a: 90}",
                                     "4: {r: 0.01, a: {link: a5}}\n  5: {r: 1, a: {link: a4}}"
                                     ).replace("[1, 2, 3, 4]", "[1, 2, 3, 4, 5]"),

@@ -77,6 +77,7 @@ SLIDER = _example("crank_slider.yaml")
 DYNAMICS = _example("crank_slider_dynamics.yaml")
 FOUR_BAR_GROUPS = _example("four_bar_groups.yaml")
 SIX_BAR_GROUPS = _example("six_bar_groups.yaml")
+TRIAD = _example("class3_six_bar_groups.yaml")
 FORCE = "value: 1000, angle: 180"
 
 
@@ -94,6 +95,11 @@ KNOWN = {
     "group_guide_angle_1e20": _replace(SIX_BAR_GROUPS, "through: G, angle: 0",
                                        "through: G, angle: -1e20"),
     "alias_bomb": BILLION_LAUGHS + SLIDER,
+    # a triad's numbers (its middle link, its assembly guess)
+    "triad_angle_1e20": _replace(TRIAD, "angle: 47 ", "angle: 1e20 "),
+    "triad_guess_nan": _replace(TRIAD, "B: [170, 270]", "B: [.nan, 270]"),
+    "triad_side_inf": _replace(TRIAD, "sides: [310, 350]", "sides: [.inf, 350]"),
+    "triad_guess_1e300": _replace(TRIAD, "guess: {A: [60, 0]", "guess: {A: [1e300, 0]"),
     "table_value_100k_string": _replace(SLIDER, "72: 360}", "72: " + "x" * 100_000 + "}"),
     "table_value_100k_digits": _replace(SLIDER, "72: 360}", "72: " + "9" * 100_000 + "}"),
     # tracebacks

@@ -345,7 +345,9 @@ def test_example_formula_and_schema(path: Path):
     assert dec.formula == {"four_bar_groups.yaml": "L0(1) → L1(2,3)",
                            "four_bar_groups_synthesis.yaml": "L0(1) → L1(2,3)",
                            "crank_slider_groups.yaml": "L0(1) → L2(2,3)",
-                           "six_bar_groups.yaml": "L0(1) → L1(2,3) → L2(4,5)"}[path.name]
+                           "six_bar_groups.yaml": "L0(1) → L1(2,3) → L2(4,5)",
+                           "class3_six_bar_groups.yaml": "L0(1) → III(2,3,4,5)",
+                           "roof_support_groups.yaml": "L0(1,2,3)"}[path.name]
     assert all(g.variant in (1, None) for g in dec.groups)
 
 
@@ -627,7 +629,15 @@ def test_random_slider_cranks_match_the_slider_crank_formula(a, e_share, ratio, 
 
 
 def test_docstring_examples_run():
-    assert doctest.testmod(groups_module, raise_on_error=True).attempted > 0
+    """The docstring examples of every module of the groups package run."""
+    import importlib
+    import pkgutil
+
+    attempted = 0
+    for info in pkgutil.iter_modules(groups_module.__path__):
+        module = importlib.import_module(f"{groups_module.__name__}.{info.name}")
+        attempted += doctest.testmod(module, raise_on_error=True).attempted
+    assert attempted > 0
 
 
 def test_group_model_saves_as_a_vector_model(tmp_path):

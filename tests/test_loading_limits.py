@@ -170,11 +170,11 @@ def test_csv_size_is_capped(tmp_path, monkeypatch):
 def test_a_csv_table_is_read_once_also_when_the_file_has_problems(tmp_path, monkeypatch):
     """On the error path the tables were read a second time for the structural check (a
     large CSV twice); each is read once, and the problems of both kinds are reported."""
-    from mechloop.model import load
+    from mechloop.model import document
 
     reads = []
-    real = load.read_csv_table
-    monkeypatch.setattr(load, "read_csv_table", lambda *a: reads.append(a) or real(*a))
+    real = document.read_csv_table
+    monkeypatch.setattr(document, "read_csv_table", lambda *a: reads.append(a) or real(*a))
     (tmp_path / "t.csv").write_text("k,v\n0,0\n72,360\n")
     path = tmp_path / "m.yaml"
     path.write_text(CRANK.replace("{table: {0: 0, 72: 360}}", "{csv: t.csv}")

@@ -137,6 +137,19 @@ def _roof() -> dict[str, float]:
 
 
 @functools.cache
+def _roof_real() -> dict[str, float]:
+    """The real leg's force (examples/roof_support_real.yaml) at its lowest and top
+    positions, and the simplification's at the same shield angles (interpolated)."""
+    real = mechloop.solve_dynamics(mechloop.load_model(EXAMPLES / "roof_support_real.yaml"))
+    simple = mechloop.solve_dynamics(mechloop.load_model(EXAMPLES / "roof_support.yaml"))
+    fr = real.to_frame()["F_bal [N]"].to_numpy()
+    fs = simple.to_frame()["F_bal [N]"].to_numpy()
+    at = np.interp(real.kinematics.value("a8"), simple.kinematics.value("a8"), fs)
+    return {"real low MN": fr[0] / 1e6, "real top MN": fr[-1] / 1e6,
+            "simple at real low MN": at[0] / 1e6, "simple at real top MN": at[-1] / 1e6}
+
+
+@functools.cache
 def _swings() -> dict[str, float]:
     def solved(name):
         return mechloop.solve(mechloop.load_model(EXAMPLES / name))
@@ -214,6 +227,8 @@ COMPUTED: dict[str, Callable[[], float]] = {
     **{key: (lambda key=key: _roof()[key]) for key in (
         "F low MN", "F least MN", "leg at least", "F top MN", "F low kN", "E low", "E high",
         "band mm", "rise")},
+    **{key: (lambda key=key: _roof_real()[key]) for key in (
+        "real low MN", "real top MN", "simple at real low MN", "simple at real top MN")},
     **{key: (lambda key=key: _swings()[key]) for key in (
         "six rocker", "six output", "ram mm", "bell", "leg swing")},
     **{key: (lambda key=key: _published()[key]) for key in (
@@ -248,6 +263,11 @@ FIGURES: list[tuple[str, str, tuple]] = [
                                    "test_compressor_start_up_figures")),
     (R, r"closes to (?P<fig>0\.02) J", ("test", "tests/test_simulate.py::"
                                         "test_compressor_start_up_figures")),
+    # the real roof support against the simplification
+    (R, r"(?P<fig>4\.30) MN at the lowest", ("computed", "real low MN")),
+    (R, r"(?P<fig>3\.32) MN at the top", ("computed", "real top MN")),
+    (R, r"needs (?P<fig>4\.54) MN", ("computed", "simple at real low MN")),
+    (R, r"4\.54 MN and (?P<fig>3\.66) MN", ("computed", "simple at real top MN")),
     # roof support table and text
     (R, r"41, exact \| (?P<fig>9\.4) mm \| 4658 kN", ("computed", "band mm")),
     (R, r"9\.4 mm \| (?P<fig>4658) kN", ("computed", "F low kN")),
@@ -307,6 +327,10 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"\((?P<fig>3\.5) to 3\.6 over", ("bench", "benchmarks/bench_fourbar.py", True)),
     (R, r"3\.5 to (?P<fig>3\.6) over", ("bench", "benchmarks/bench_fourbar.py", True)),
     (R, r"elsewhere (?P<fig>3\.0)", ("bench", "benchmarks/bench_fourbar.py", True)),
+    (R, r"coupled vs closed form: (?P<fig>4\.9)", ("bench", "benchmarks/bench_coupled.py",
+                                                  True)),
+    (R, r"the triad (?P<fig>441) ms", ("bench", "benchmarks/bench_coupled.py", True)),
+    (R, r"(?P<fig>5\.3) times the four-bar", ("bench", "benchmarks/bench_coupled.py", True)),
     (R, r"printed (?P<fig>12\.7)–17\.3", ("bench", "benchmarks/bench_synthesis.py", True)),
     (R, r"12\.7–(?P<fig>17\.3)", ("bench", "benchmarks/bench_synthesis.py", True)),
     (R, r"mechloop\s(?P<fig>122,700)–", ("bench", "benchmarks/bench_synthesis.py", True)),
@@ -415,6 +439,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"0666 less the umask|1,048,575 rows|16,384 columns",
      "the POSIX default file mode and Excel's sheet limits (constants of mechloop.output)"),
     (R, r"blocks \(8192", "the block size in mechloop.solve"),
+    (R, r"100,001\s+positions|within 1e-12 of their size", "bench_coupled.py's settings "
+        "(--n 100000) and its check"),
     (R, r"\d+ unknowns, \d+ equations", "counts of the source's formulation"),
     (R, r"41, exact|of the 41 positions", "the example's positions 0..40"),
     (R, r"\d+ × \d+ lever angles at \d°, kept where 0\.72 ≤ L² ≤ 0\.73 m²|"
@@ -425,6 +451,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"K = 1\.4", "the task's time ratio"),
     ("crank_slider_friction.yaml", r"pins of 15 mm", "the friction radius, 0.015 m"),
     ("roof_support.yaml", r"leg 1\.30 m", "where the drawing is"),
+    (R, r"0\.40 m from B", "the real leg's pin, examples/roof_support_real.yaml"),
+    ("roof_support_real.yaml", r"0\.725\)", "O2's height: 0.15 + 0.575 m, the base vectors"),
     ("roof_support.yaml", r"0\.725\)", "O2's height: 0.15 + 0.575 m, the base vectors"),
     (None, r"0\.72 ?(<=|\.\.)( L\^2 <=)? ?0\.73 m\^2(, and 0\.85\^2 = 0\.7225)?",
      "the seed's tabulation window"),

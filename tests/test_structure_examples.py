@@ -37,6 +37,11 @@ HAND = {
     # crank 1, coupler 2, rocker 3 (RRR dyad), then link 4 and slider 5 (R, R, P: RRP)
     # hung on the rocker: n = 5, p5 = 7, W = 15 − 14 = 1.
     "six_bar_groups.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L2(4,5)", 2),
+    # crank 1, then rod 2, lever 3, rocker 4 each pinned to the plate 5 and to the crank
+    # pin, C and D: n = 5, p5 = 7, W = 15 − 14 = 1.  Two links of 2..5 never have the three
+    # pairs of a dyad to placed links; all four with their six pairs are a triad (class
+    # III: no closed contour inside, the plate holds three pairs).
+    "class3_six_bar_groups.yaml": (5, 7, 0, 1, "L0(1) → III(2,3,4,5)", 3),
     # shield 1, front link 2, rear link 3, pins O2, B, O1, A: n = 3, p5 = 4, W = 1.  The
     # massless leg is the drive and pushes on the shield at B: the shield alone keeps
     # 3 − 1 = 2 freedoms, with the front link 6 − 4 − 1 = 1, with the rear link too
@@ -44,6 +49,13 @@ HAND = {
     # links with the drive: class III by the seed's rule).
     "roof_support.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
     "roof_support_synthesis.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+    # the same with the leg pinned to the shield at C (its own pin): the same pairs, the
+    # drive between the ground and the shield, so again one group of all three links
+    "roof_support_real.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+    # the same three links with the leg pinned to the shield at its own point K: the leg
+    # is a drive (not a link), pins O1, O2, A, B: n = 3, p5 = 4, W = 1; the shield held
+    # by three binary members (two links and the driven leg) — the input group, class III.
+    "roof_support_groups.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
 }
 
 WITHOUT_BODIES = {

@@ -63,7 +63,7 @@ def parametric_formula(model: Model, info: ContourInfo) -> str:
     inputs = [f"{symbol(p)} ({role_text(model, p)})" for p in info.arguments]
     inputs += [symbol(p) for p in info.links]
     lhs = ", ".join(inputs) if inputs else "constants only"
-    variant = info.variant if MODULE_SOLUTIONS[info.module] > 1 else 1
+    variant = info.variant if MODULE_SOLUTIONS.get(info.module, 2) > 1 else 1
     return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {info.module}, V={variant}"
 
 
@@ -105,8 +105,14 @@ def describe_structure(model: Model) -> str:
         if link_terms:
             structure_formula += "; links: " + ", ".join(link_terms)
         lines.append(f"  structure formula:  {structure_formula}")
+        block = next((b for b in structure.blocks if info.number in b.contours), None)
+        solutions = (f"{MODULE_SOLUTIONS[info.module]} solution(s)"
+                     if info.module in MODULE_SOLUTIONS else
+                     f"coupled block {block.number}: contours "
+                     f"{', '.join(map(str, block.contours))} solved together for "
+                     f"{', '.join(map(symbol, block.unknowns))} by Newton's method")
         lines.append(f"  parametric formula: {parametric_formula(model, info)} "
-                     f"({MODULE_SOLUTIONS[info.module]} solution(s))")
+                     f"({solutions})")
         known = [f"{symbol(f'{letter}{n}')}={role_text(model, f'{letter}{n}')}"
                  for n in info.vectors for letter in "ra"
                  if f"{letter}{n}" not in info.functions

@@ -31,6 +31,7 @@ from typing import Any, TypeVar
 from pydantic import BaseModel, ValidationError
 
 from mechloop.errors import Problem
+from mechloop.model.document import _data_path
 from mechloop.model.schema import Model
 
 #: Sections whose every item the structure depends on.
@@ -99,8 +100,6 @@ def _stand_in(data: dict[str, Any], path: tuple, cls: type[BaseModel]) -> tuple 
     """Replace the value at ``path`` by the first stand-in that leaves no schema problem
     at or under ``path``; the path replaced (``path``, or the list an item is missing
     from), None when no stand-in does."""
-    from mechloop.model.load import _data_path
-
     *parents, last = path
     parent: Any = data
     for key in parents:

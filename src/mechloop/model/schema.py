@@ -19,6 +19,7 @@ one role:
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from typing import Annotated, Any, Literal
 
 from pydantic import BeforeValidator, Discriminator, Field, Tag, WithJsonSchema
@@ -36,6 +37,7 @@ from mechloop.model.dynamic import (
     TailPoint,
 )
 from mechloop.model.intermediate import Envelope
+from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
     Argument,
@@ -56,7 +58,16 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
 from mechloop.model.simulate import Simulate
 from mechloop.model.synthesis import SynthesisTask
 
-FUNCTION = "function"
+#: Reads plain data into a checked model: :func:`mechloop.model.load.model_from_data`,
+#: which puts itself here (:func:`set_model_reader`).  The loader builds on the schema, so
+#: the schema does not import it; the package ``mechloop.model`` imports the loader with
+#: any of its modules, so the reader is there before a model can be read.
+_model_reader: list[Callable[..., Model]] = []
+
+
+def set_model_reader(reader: Callable[..., Model]) -> None:
+    """Make ``reader(data, file=...)`` the reader :meth:`Model.from_dict` calls."""
+    _model_reader[:] = [reader]
 
 
 ParamName = Annotated[
@@ -189,6 +200,10 @@ class Contour(_Frozen):
         "origin", description="where the tail of the first vector lies: 'origin', the tail "
         "or head of a vector of an earlier contour ({tail: K} / {head: K}), or fixed "
         "coordinates [x, y] (length units); places the contour's points in the plane")
+    guess: dict[ParamName, Scalar] | None = Field(
+        None, description="approximate values of the functions of this contour's coupled "
+        "block at position 0 (model units), e.g. {a5: 40, r7: 300}: the assembly Newton's "
+        "method starts from; only for contours solved as a coupled block")
 
 
 class Units(_Frozen):
@@ -247,9 +262,7 @@ class Model(_Frozen):
 
         Raises :class:`mechloop.errors.ModelError` listing every problem found.
         """
-        from mechloop.model.load import model_from_data
-
-        return model_from_data(data, file=file)
+        return _model_reader[0](data, file=file)
 
 
 def model_json_schema() -> dict[str, Any]:

@@ -1,10 +1,12 @@
 """Structure of a vector model: roles resolved, modules named, contours put in order.
 
 :func:`analyze` reads a :class:`~mechloop.model.schema.Model` and returns a
-:class:`Structure` — for every contour its functions, module type (Pl1–Pl4) and the
-contours it needs first — together with every structural problem it found (a contour with
-the wrong number of functions, a link to nothing, a cycle, ...), each with its place in the
-document and the fix.  Nothing here touches numbers beyond reading roles.
+:class:`Structure` — for every contour its functions, module type (Pl1–Pl4, or
+``coupled``) and the contours it needs, and the blocks solved one after another
+(:func:`find_blocks`: a contour alone in closed form, or a coupled block) — together with
+every structural problem it found (a contour or block with the wrong number of functions,
+a link to nothing, a cycle of links, ...), each with its place in the document and the
+fix.  Nothing here touches numbers beyond reading roles.
 """
 
 from __future__ import annotations
@@ -14,7 +16,9 @@ from dataclasses import dataclass, field
 from graphlib import CycleError, TopologicalSorter
 
 from mechloop.errors import Problem
-from mechloop.model.schema import FUNCTION, ArgumentRole, LinkRole, Model
+from mechloop.model.roles import is_function
+from mechloop.model.schema import ArgumentRole, LinkRole, Model
+from mechloop.model.units import UnitProblem, to_si
 
 MODULE_SOLUTIONS = {"Pl1": 1, "Pl2": 1, "Pl3": 2, "Pl4": 2}
 
@@ -23,10 +27,6 @@ def param_role(model: Model, name: str) -> object:
     """The role object of parameter ``name`` ('r3', 'a2') — raises KeyError if absent."""
     vector = model.vectors[int(name[1:])]
     return vector.r if name[0] == "r" else vector.a
-
-
-def is_function(role: object) -> bool:
-    return isinstance(role, str) and role.strip() == FUNCTION
 
 
 @dataclass(frozen=True)
@@ -70,20 +70,60 @@ class ContourInfo:
     needs: tuple[int, ...]
     arguments: tuple[str, ...]
     links: tuple[str, ...]
+    #: number of the block (1, 2, ... in solving order) that solves this contour
+    block: int = 0
+
+
+#: The module name of a contour solved in a coupled block (not by a closed form).
+COUPLED = "coupled"
+
+
+@dataclass(frozen=True)
+class BlockInfo:
+    """Contours solved together, in solving order.
+
+    An *elementary* block is one contour solved by its closed-form module (Pl1–Pl4).  A
+    *coupled* block (``coupled`` true) is a set of ``k`` contours whose ``2k`` closure
+    equations must be solved at once for its ``2k`` ``unknowns`` (Newton's method,
+    :mod:`mechloop.modules.coupled`): contours that need each other's functions (a strongly
+    connected component of the "needs" graph), or a contour linking to one of its own
+    functions (a non-elementary module).  ``unknowns`` are in the order of the contours and
+    of their vectors (the columns of the block Jacobian); ``needs`` the earlier blocks
+    whose functions it reads; ``variant`` the assembly at position 0 when no ``guess``
+    (approximate unknowns at position 0, SI, from the contours' ``guess``) is given.
+    """
+
+    number: int
+    contours: tuple[int, ...]
+    unknowns: tuple[str, ...]
+    needs: tuple[int, ...]
+    coupled: bool
+    variant: int | str = 1
+    guess: dict[str, float] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
 class Structure:
-    """The analysed model: contours in solving order and resolved links."""
+    """The analysed model: contours in solving order and resolved links.
+
+    ``order`` lists the contours in solving order, block after block (``blocks``); the
+    contours of one coupled block are adjacent in it.
+    """
 
     contours: tuple[ContourInfo, ...]
     order: tuple[int, ...]
     links: dict[str, LinkChain] = field(default_factory=dict)
     owner: dict[str, int] = field(default_factory=dict)
+    blocks: tuple[BlockInfo, ...] = ()
 
     def ordered(self) -> list[ContourInfo]:
         by_number = {c.number: c for c in self.contours}
         return [by_number[n] for n in self.order]
+
+    @property
+    def coupled(self) -> bool:
+        """Whether some block is coupled (solved by Newton's method)."""
+        return any(b.coupled for b in self.blocks)
 
 
 def _module_of(functions: list[str]) -> tuple[str, tuple[str, ...]]:
@@ -165,15 +205,6 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
             owner[f] = ci + 1
         path = ("contours", ci)
         if len(functions) != 2:
-            found = ", ".join(functions) if functions else "none"
-            fix = ("mark two of its parameters 'function' (the unknowns of this loop)"
-                   if len(functions) < 2 else
-                   "make all but two of them constants, arguments or links to earlier "
-                   "contours")
-            noun = "parameter" if len(functions) == 1 else "parameters"
-            problems.append(Problem(path, f"contour {ci + 1} has {len(functions)} function "
-                                    f"{noun} ({found}); a planar contour needs exactly 2",
-                                    fix))
             module, ordered = "?", tuple(functions)
         else:
             module, ordered = _module_of(functions)
@@ -213,15 +244,7 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
                         f"link {name} with a ratio to an argument or a constant (drive the "
                         "gear train from the model's input), or use ratio 1"))
                 if root in owner:
-                    if owner[root] == info.number:
-                        problems.append(Problem(
-                            ("vectors", n, letter),
-                            f"{name} links to {root}, a function of its own contour "
-                            f"{info.number}; a link must point at a known parameter",
-                            f"move vector {n} to a later contour, or model the rigid pair "
-                            f"{n} and {root[1:]} as one vector"))
-                    else:
-                        needs.add(owner[root])
+                    needs.add(owner[root])  # its own contour too: a coupled block
                 elif is_function(param_role(model, root)):
                     problems.append(Problem(("vectors", n, letter),
                                             f"{name} links to {root}, a function that no "
@@ -232,18 +255,10 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
                                  variant=info.variant, needs=tuple(sorted(needs)),
                                  arguments=tuple(arguments), links=tuple(link_names)))
 
-    order: tuple[int, ...] = tuple(c.number for c in final)
-    sorter = TopologicalSorter({c.number: c.needs for c in final})
-    try:
-        order = tuple(sorter.static_order())
-    except CycleError as exc:
-        cycle = exc.args[1]
-        loop = " -> ".join(f"contour {n}" for n in cycle)
-        problems.append(Problem(("contours",), f"the contours depend on each other in a "
-                                f"cycle: {loop} (each needs a function of the next)",
-                                "break the cycle: a contour may only link to functions of "
-                                "contours that do not need it"))
-    return Structure(contours=tuple(final), order=order, links=links, owner=owner), problems
+    final, blocks = find_blocks(model, final, problems)
+    order = tuple(n for b in blocks for n in b.contours)
+    return Structure(contours=tuple(final), order=order, links=links, owner=owner,
+                     blocks=blocks), problems
 
 
 def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]
@@ -285,3 +300,171 @@ def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]
             return None
         seen.append(target)
         current = target
+
+
+def find_blocks(model: Model, infos: list[ContourInfo], problems: list[Problem]
+                ) -> tuple[list[ContourInfo], tuple[BlockInfo, ...]]:
+    """Group the contours into blocks solved one after another (see :class:`BlockInfo`).
+
+    Each contour contributes two closure equations; each function is an unknown used by
+    its own contour and by every contour that links to it.  The unknowns are matched to
+    the contours (two per contour: a contour with two functions keeps its own); a contour
+    *needs* the contours matched to the unknowns it uses, and the strongly connected
+    components of that graph, in topological order, are the blocks (the Dulmage–Mendelsohn
+    decomposition of the model's equations, contour by contour).  A component of one
+    contour that solves its own two functions and links to none of them is elementary.
+    Problems (a contour or a block with the wrong number of functions, a bad ``guess``)
+    are appended to ``problems``; the infos come back with ``needs``, ``module`` and
+    ``block`` set.
+    """
+    own = {c.number: list(c.functions) for c in infos}
+    uses: dict[int, set[str]] = {c.number: set(c.functions) for c in infos}
+    owner = {f: n for n, fs in own.items() for f in fs}
+    self_link: set[int] = set()
+    for info in infos:
+        for name in info.links:
+            root = _root(model, name)
+            if root in owner:
+                uses[info.number].add(root)
+                if owner[root] == info.number:
+                    self_link.add(info.number)
+    numbers = [c.number for c in infos]
+    if all(len(fs) == 2 for fs in own.values()):
+        matched = {n: tuple(own[n]) for n in numbers}
+    else:
+        matched = _match(numbers, uses, sorted(owner))
+        if matched is None:
+            for ci, info in enumerate(infos):
+                found = list(info.functions)
+                if len(found) == 2:
+                    continue
+                text = ", ".join(found) if found else "none"
+                fix = ("mark two of its parameters 'function' (the unknowns of this loop)"
+                       if len(found) < 2 else
+                       "make all but two of them constants, arguments or links to earlier "
+                       "contours")
+                noun = "parameter" if len(found) == 1 else "parameters"
+                problems.append(Problem(
+                    ("contours", ci), f"contour {info.number} has {len(found)} function "
+                    f"{noun} ({text}); a planar contour needs exactly 2 (contours solved "
+                    "together as a coupled block: 2 per contour in all, each contour "
+                    "linking to the others' functions)", fix))
+            return infos, ()
+    solver = {u: n for n, us in matched.items() for u in us}
+    needs = {n: {solver[u] for u in uses[n]} - {n} for n in numbers}
+    groups = _components(numbers, needs)
+    block_of = {n: i + 1 for i, group in enumerate(groups) for n in group}
+    by_number = {c.number: c for c in infos}
+    out: list[ContourInfo] = []
+    blocks: list[BlockInfo] = []
+    for i, group in enumerate(groups):
+        first = by_number[group[0]]
+        coupled = (len(group) > 1 or first.number in self_link
+                   or set(matched[first.number]) != set(own[first.number]))
+        unknowns: list[str] = []
+        for n in group:
+            mine = matched[n]
+            if set(mine) == set(own[n]) and len(mine) == 2:
+                mine = _module_of(list(own[n]))[1]
+            unknowns.extend(mine)
+        guess: dict[str, float] = {}
+        for n in group:
+            contour = model.contours[n - 1]
+            for name, value in (contour.guess or {}).items():
+                path = ("contours", n - 1, "guess", name)
+                if not coupled:
+                    problems.append(Problem(path, f"contour {n} is solved in closed form "
+                                            f"(module {first.module}); a guess applies "
+                                            "only to a coupled block",
+                                            "remove 'guess' and choose the assembly with "
+                                            "'variant'"))
+                elif name not in unknowns:
+                    problems.append(Problem(path, f"{name} is not an unknown of the "
+                                            f"coupled block of contours "
+                                            f"{', '.join(map(str, group))}",
+                                            f"guess some of {', '.join(unknowns)}"))
+                else:
+                    kind = "length" if name[0] == "r" else "angle"
+                    try:
+                        guess[name] = to_si(value, kind, getattr(model.units, kind))
+                    except UnitProblem as exc:
+                        problems.append(Problem(path, exc.message, exc.hint))
+        variant = next((by_number[n].variant for n in group
+                        if by_number[n].variant != 1), 1)
+        blocks.append(BlockInfo(number=i + 1, contours=tuple(group),
+                                unknowns=tuple(unknowns),
+                                needs=tuple(sorted({block_of[m] for n in group
+                                                    for m in needs[n]} - {i + 1})),
+                                coupled=coupled, variant=variant, guess=guess))
+        for n in group:
+            info = by_number[n]
+            module = COUPLED if coupled else info.module
+            functions = info.functions if not coupled else tuple(
+                u for u in unknowns if u in own[n]) or info.functions
+            out.append(ContourInfo(number=n, vectors=info.vectors, functions=functions,
+                                   module=module, variant=info.variant,
+                                   needs=tuple(sorted(needs[n])), arguments=info.arguments,
+                                   links=info.links, block=i + 1))
+    out.sort(key=lambda c: c.number)
+    return out, tuple(blocks)
+
+
+def _root(model: Model, name: str) -> str:
+    """The parameter a link chain ends at (``name`` itself if not a link)."""
+    seen = {name}
+    while isinstance(role := param_role(model, name), LinkRole):
+        name = role.link
+        if name in seen or int(name[1:]) not in model.vectors:
+            return name
+        seen.add(name)
+    return name
+
+
+def _match(numbers: list[int], uses: dict[int, set[str]], unknowns: list[str]
+           ) -> dict[int, tuple[str, ...]] | None:
+    """Two unknowns per contour, each used by it (maximum bipartite matching of the
+    contours' equations to the unknowns), or None when no perfect matching exists."""
+    if len(unknowns) != 2 * len(numbers):
+        return None
+    from scipy.sparse import csr_array
+    from scipy.sparse.csgraph import maximum_bipartite_matching
+
+    column = {u: j for j, u in enumerate(unknowns)}
+    rows, cols = [], []
+    for i, n in enumerate(numbers):
+        for u in uses[n]:
+            for slot in (2 * i, 2 * i + 1):
+                rows.append(slot)
+                cols.append(column[u])
+    graph = csr_array(([1] * len(rows), (rows, cols)),
+                      shape=(2 * len(numbers), len(unknowns)))
+    found = maximum_bipartite_matching(graph, perm_type="column")
+    if (found < 0).any():
+        return None
+    return {n: tuple(sorted((unknowns[found[2 * i]], unknowns[found[2 * i + 1]]),
+                            key=lambda u: (int(u[1:]), u[0])))
+            for i, n in enumerate(numbers)}
+
+
+def _components(numbers: list[int], needs: dict[int, set[int]]) -> list[tuple[int, ...]]:
+    """Strongly connected components of the "needs" graph, each sorted, in an order where
+    every component comes after those it needs (the contour order when there is no
+    cycle)."""
+    try:
+        return [(n,) for n in TopologicalSorter(needs).static_order()]
+    except CycleError:
+        pass
+    from scipy.sparse import csr_array
+    from scipy.sparse.csgraph import connected_components
+
+    index = {n: i for i, n in enumerate(numbers)}
+    rows = [index[n] for n in numbers for m in needs[n]]
+    cols = [index[m] for n in numbers for m in needs[n]]
+    graph = csr_array(([1] * len(rows), (rows, cols)), shape=(len(numbers),) * 2)
+    _, label = connected_components(graph, directed=True, connection="strong")
+    members: dict[int, list[int]] = {}
+    for n in numbers:
+        members.setdefault(int(label[index[n]]), []).append(n)
+    condensed = {lab: {int(label[index[m]]) for n in group for m in needs[n]} - {lab}
+                 for lab, group in members.items()}
+    return [tuple(members[lab]) for lab in TopologicalSorter(condensed).static_order()]

@@ -16,6 +16,7 @@ from pydantic import Field, model_validator
 
 from mechloop.errors import Problem
 from mechloop.model.dynamic import HeadPoint, TailPoint
+from mechloop.model.roles import is_function
 from mechloop.model.signals import Number, Scalar, _Frozen
 from mechloop.model.units import UnitProblem, to_si
 
@@ -311,8 +312,6 @@ class SynthesisTask(_Frozen):
 
 def check_synthesis(model: Model) -> list[Problem]:
     """Problems of the model's synthesis task that need the model to be seen."""
-    from mechloop.model.structure import is_function
-
     task = model.synthesis
     if task is None:
         return []

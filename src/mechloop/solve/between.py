@@ -250,6 +250,8 @@ def _solve_at(check: ExistenceCheck, over: Mapping[str, Array], inputs: Array
         block = _solve_block(part, 0, inputs.shape[1], inputs.shape, {}, derivatives=False)
     broken = np.zeros(inputs.shape, dtype=bool)
     for info in part.ordered:
+        if info.number in block.jump:
+            continue  # a coupled block is checked at the positions only (no start here)
         broken |= block.no_solution[info.number] | block.dead[info.number]
     values = {name: np.broadcast_to(p.value, inputs.shape) for name, p in
               block.params.items()}

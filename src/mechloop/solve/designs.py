@@ -165,8 +165,9 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
     synthesis evaluates so when its objective reads the target positions only.  The
     positions need not be neighbours, so the angles found are not unwrapped: each lies
     in (−π, π] (plus its link's delta), the same direction as in a solve of all.  A
-    contour whose variant is tracked (``auto``) follows its neighbours, so such a model
-    cannot be solved at some positions only (:class:`SolveError`).
+    contour whose variant is tracked (``auto``) follows its neighbours, and so does a
+    coupled block (Newton's continuation), so such a model cannot be solved at some
+    positions only (:class:`SolveError`).
 
     With ``analogs_of=k`` the derivatives are the analogs with respect to argument ``k``
     alone, as ``solve(model, analogs_of=k)`` gives them: its rate 1 and acceleration 0,
@@ -193,6 +194,9 @@ def _chosen(model: Model, positions: ArrayLike | None) -> NDArray[np.int64] | No
     if any(c.variant == "auto" for c in model.contours):
         raise SolveError("a contour with variant auto follows its neighbours: it is "
                          "solved at every position", "give its variant as 1 or 2")
+    if require_valid(model).coupled:
+        raise SolveError("a coupled block is continued from position to position: it is "
+                         "solved at every position", "solve every position (positions=None)")
     return chosen
 
 
@@ -429,7 +433,21 @@ def _with_extra_columns(part, args: Mapping[int, Signal], extra_at: Mapping[int,
                         np.concatenate([signal.accel, pad]))
         shift = np.concatenate([np.zeros((at.shape[0], n_pos)), at], axis=-1)
         driven[name] = (longer, offset + shift)
-    return replace(part, driven=driven)
+    return replace(part, driven=driven, n_regular=args[1].value.shape[-1],
+                   extra_start=_nearest(args[1].value, extra_at[1][lo:hi]))
+
+
+def _nearest(x: Array, inputs: Array) -> NDArray[np.int64]:
+    """The position nearest to each input by argument 1's value ``x`` ``(P,)``: where a
+    coupled block starts Newton's method for an extra column, ``(D, K)``."""
+    if x.size == 0:
+        return np.zeros(inputs.shape, dtype=np.int64)
+    order = np.argsort(x, kind="stable")
+    at = np.clip(np.searchsorted(x[order], inputs), 1, max(x.size - 1, 1))
+    below = order[at - 1]
+    above = order[np.minimum(at, x.size - 1)]
+    closer = np.abs(x[below] - inputs) <= np.abs(x[above] - inputs)
+    return np.where(closer, below, above).astype(np.int64)
 
 
 def _rows(table: Array, rows: NDArray[np.int64]) -> Array:

@@ -22,7 +22,10 @@ loop is decided over the range of the argument's values at the positions).  A co
 with ``variant: auto`` is checked itself (its margin does not depend on the variant); a
 contour that needs one (directly or through others) is checked at the positions only,
 since which variant holds between two positions is not known: give such contours a fixed
-variant for the check between positions.
+variant for the check between positions.  A coupled block (contours solved together by
+Newton's continuation, :mod:`mechloop.modules.coupled`), and every contour that needs
+one, is likewise checked at the positions only: its assembly between two positions is
+the one continued from them, which the zoom's free-standing inputs do not know.
 """
 
 from __future__ import annotations
@@ -35,7 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from mechloop.model.check import require_valid
 from mechloop.model.schema import Model
-from mechloop.model.structure import ContourInfo, Structure, param_role
+from mechloop.model.structure import COUPLED, ContourInfo, Structure, param_role
 from mechloop.solve.between import (
     THRESHOLD,
     BreakInterval,
@@ -117,8 +120,9 @@ class ExistenceCheck:
         # contours that need a contour with a tracked variant, directly or not
         self.after_auto: set[int] = set()
         for info in self.base.ordered:  # in solving order: needs come first
-            if any(self.structure.contours[n - 1].variant == "auto" or n in self.after_auto
-                   for n in info.needs):
+            if info.module == COUPLED or any(
+                    self.structure.contours[n - 1].variant == "auto" or n in self.after_auto
+                    for n in info.needs):
                 self.after_auto.add(info.number)
         self.argument_of = {root: next(k for k, sig in self.args.items() if sig is signal)
                             for root, (signal, _) in self.base.driven.items()}

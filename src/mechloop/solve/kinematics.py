@@ -10,6 +10,12 @@ the whole array of positions, then two 2×2 linear solves with the module's Jaco
 with ``e = (cos α, sin α)``, ``n = (−sin α, cos α)``: the unknown rates multiply the
 Jacobian columns (``e_j`` for an unknown length, ``r_j n_j`` for an unknown angle) and all
 other terms are known.  No Python loop runs over positions.
+
+The contours come in *blocks* (:attr:`~mechloop.model.structure.Structure.blocks`): an
+elementary block is one contour solved as above; a coupled block (contours that need each
+other's functions, or link to their own) is solved by Newton's continuation along the
+positions (:mod:`mechloop.solve.blocks`, :mod:`mechloop.modules.coupled`), its rates by
+the same two linear systems with the block's ``2k × 2k`` Jacobian.
 """
 
 from __future__ import annotations
@@ -25,7 +31,7 @@ from numpy.typing import NDArray
 from mechloop.errors import SolveError
 from mechloop.model.check import KIND_OF, argument_kind, require_valid
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
-from mechloop.model.structure import ContourInfo, Structure, is_function
+from mechloop.model.structure import BlockInfo, ContourInfo, Structure, is_function
 from mechloop.model.units import to_si
 from mechloop.modules.planar import (
     EXISTENCE_RTOL,
@@ -174,6 +180,11 @@ class _Setup:
         """The value of linked parameter ``name`` given its root's value (SI)."""
         scale = self.scales.get(name, 1.0)
         return (root if _is_one(scale) else scale * root) + self.deltas[name]
+    #: columns from this one on are arbitrary inputs (solve_designs_at), not positions in
+    #: sequence; a coupled block solves each from the regular column ``extra_start``
+    #: ``(D, K)`` (the nearest position by argument 1)
+    n_regular: int | None = None
+    extra_start: NDArray[np.int64] | None = None
 
 
 def _setup(model: Model, structure: Structure, args: dict[int, Signal],
@@ -236,11 +247,21 @@ class _Block:
     broken: dict[int, NDArray[np.bool_]]
     last_variant: dict[int, int]
     branch: dict[int, NDArray[np.int8]]
+    #: per contour of a coupled block: where its block jumped to another assembly branch
+    jump: dict[int, NDArray[np.bool_]] = _field(default_factory=dict)
+    #: per coupled block (number): the continuation state at the last position
+    carry: dict[int, object] = _field(default_factory=dict)
 
 
 def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
-                 starts: Mapping[int, int], *, derivatives: bool = True) -> _Block:
+                 starts: Mapping[int, int], *, derivatives: bool = True,
+                 carry: Mapping[int, object] | None = None) -> _Block:
     """Solve positions ``lo:hi`` of every contour; arrays come out shaped ``shape``.
+
+    The structure's blocks are solved in order: an elementary one by its closed-form
+    module, a coupled one by Newton's continuation (:mod:`mechloop.solve.blocks`), which
+    ``carry`` (per block, from the previous call: ``_Block.carry``) continues when
+    position ``lo`` is the last position of that call.
 
     With ``derivatives=False`` only the values are solved (every rate and acceleration is
     None); the masks, variants and branches are the same either way.
@@ -277,18 +298,42 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
         return param
 
     block = _Block(params, {}, {}, {}, {}, {})
-    for info in setup.ordered:
+    from mechloop.solve import blocks as coupled
+
+    by_number = {c.number: c for c in setup.ordered}
+    parts = structure.blocks or tuple(  # a Structure built without blocks: one each
+        BlockInfo(i + 1, (c.number,), c.functions, (), False)
+        for i, c in enumerate(setup.ordered))
+    for part in parts:
+        if not (part.coupled or coupled.FORCE_COUPLED):
+            info = by_number[part.contours[0]]
+            inherited = np.zeros(shape, dtype=bool)
+            for need in info.needs:
+                inherited |= block.broken[need]
+            none, dead, variant, branch = _solve_contour(info, params, resolve, shape,
+                                                         start=starts.get(info.number, 1),
+                                                         derivatives=derivatives)
+            block.last_variant[info.number] = variant
+            block.no_solution[info.number] = none & ~inherited
+            block.dead[info.number] = dead & ~inherited
+            block.broken[info.number] = none | dead | inherited
+            block.branch[info.number] = branch
+            continue
         inherited = np.zeros(shape, dtype=bool)
-        for need in info.needs:
-            inherited |= block.broken[need]
-        none, dead, variant, branch = _solve_contour(info, params, resolve, shape,
-                                                     start=starts.get(info.number, 1),
-                                                     derivatives=derivatives)
-        block.last_variant[info.number] = variant
-        block.no_solution[info.number] = none & ~inherited
-        block.dead[info.number] = dead & ~inherited
-        block.broken[info.number] = none | dead | inherited
-        block.branch[info.number] = branch
+        for n in part.contours:
+            for need in by_number[n].needs:
+                if need not in part.contours:
+                    inherited |= block.broken[need]
+        got = coupled.solve_coupled(part, setup, params, resolve, shape,
+                                    (carry or {}).get(part.number), derivatives=derivatives)
+        block.carry[part.number] = got.carry
+        for n in part.contours:
+            block.last_variant[n] = 1
+            block.no_solution[n] = got.no_solution & ~inherited
+            block.dead[n] = got.dead & ~inherited
+            block.jump[n] = got.jump & ~inherited
+            block.broken[n] = got.no_solution | got.dead | got.jump | inherited
+            block.branch[n] = got.branch
     for name in structure.links:
         resolve(name)
     return block
@@ -331,18 +376,22 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
            for name in setup.varying}
     no_solution = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}
     singular = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}
+    jumps = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}
     last_variant: dict[int, int] = {}
+    carry: dict[int, object] = {}  # coupled blocks continue across blocks of positions
 
     for first in range(0, n_pos, max(int(block), 2)):
         lo = max(first - 1, 0)  # one position of overlap carries variant tracking across
         hi = min(first + max(int(block), 2), n_pos)
         size, skip = hi - lo, first - lo
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-            solved = _solve_block(setup, lo, hi, (size,), last_variant)
-        last_variant = solved.last_variant
+            solved = _solve_block(setup, lo, hi, (size,), last_variant, carry=carry)
+        last_variant, carry = solved.last_variant, solved.carry
         for info in setup.ordered:
             no_solution[info.number][first:hi] = solved.no_solution[info.number][skip:]
             singular[info.number][first:hi] = solved.dead[info.number][skip:]
+            if info.number in solved.jump:
+                jumps[info.number][first:hi] = solved.jump[info.number][skip:]
         for name, arrays in out.items():
             p = solved.params[name]
             for target, field in zip(arrays, (p.value, p.rate, p.accel), strict=True):
@@ -350,7 +399,7 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
 
     broken = np.zeros(n_pos, dtype=bool)
     for info in setup.ordered:
-        broken |= no_solution[info.number] | singular[info.number]
+        broken |= no_solution[info.number] | singular[info.number] | jumps[info.number]
     clock = [] if time is None else [time.value]
     overflow = _overflow(setup, out, broken,
                          [*clock, *(field for s in args.values() for field in (
@@ -363,8 +412,10 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
         for arr in arrays:
             arr[broken] = np.nan
 
-    breaks = []
+    breaks = _coupled_breaks(setup, no_solution, singular, jumps, overflow)
     for info in setup.ordered:
+        if info.number in solved.jump:
+            continue  # its block's breaks are reported once, for the block
         for reason, mask in ((BREAK_REASONS[info.module], no_solution[info.number]),
                              (DEAD_POINT, singular[info.number]),
                              (OVERFLOW, overflow.get(info.number, np.zeros(n_pos, dtype=bool)))):
@@ -397,6 +448,32 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
         analogs_of=analogs_of,
         breaks_between=between,
     )
+
+
+def _coupled_breaks(setup: _Setup, no_solution: dict[int, NDArray[np.bool_]],
+                    singular: dict[int, NDArray[np.bool_]],
+                    jumps: dict[int, NDArray[np.bool_]],
+                    overflow: dict[int, NDArray[np.bool_]]) -> list[ChainBreak]:
+    """The breaks of every coupled block (or every block while forced through Newton),
+    one record per block and kind of break, naming the block's contours."""
+    from mechloop.modules.coupled import DEAD, JUMP, NO_CONVERGENCE, REASONS
+    from mechloop.solve import blocks as coupled
+
+    out = []
+    for part in setup.structure.blocks:
+        if not (part.coupled or coupled.FORCE_COUPLED):
+            continue
+        first = part.contours[0]
+        over = np.zeros_like(no_solution[first])
+        for n in part.contours:
+            over |= overflow.get(n, over)
+        for reason, mask in ((REASONS[NO_CONVERGENCE], no_solution[first]),
+                             (REASONS[DEAD], singular[first]), (REASONS[JUMP], jumps[first]),
+                             (OVERFLOW, over)):
+            if mask.any():
+                out.append(ChainBreak(first, "coupled", np.flatnonzero(mask), reason,
+                                      contours=part.contours))
+    return out
 
 
 def _breaks_between(model: Model, setup: _Setup, values: dict[str, Array],

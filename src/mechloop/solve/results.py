@@ -30,9 +30,14 @@ class ChainBreak:
     module: str
     positions: NDArray[np.int64]
     reason: str
+    #: every contour of the coupled block that breaks (``contour`` is its first); empty
+    #: for an elementary contour
+    contours: tuple[int, ...] = ()
 
     def describe(self) -> str:
-        return (f"contour {self.contour} ({self.module}) breaks at positions "
+        where = (f"the coupled block of contours {', '.join(map(str, self.contours))}"
+                 if len(self.contours) > 1 else f"contour {self.contour} ({self.module})")
+        return (f"{where} breaks at positions "
                 f"{compress_positions(self.positions)}: {self.reason}")
 
 

@@ -88,7 +88,22 @@ def position_tangents(model: Model, values: Mapping[str, Array],
         params[name] = _Param(np.asarray(values[name])[None], tangent, 0.0)
         return params[name]
 
+    def chain_seed(name: str) -> Array:
+        """The tangent of a link's own deltas along its chain."""
+        total: Array = zero
+        current = name
+        while isinstance(role := param_role(model, current), LinkRole):
+            total = total + seed(current)
+            current = role.link
+        return total
+
+    coupled = {n for b in structure.blocks if b.coupled for n in b.contours}
+    for block in structure.blocks:
+        if block.coupled:
+            _block_tangents(block, structure, params, resolve, values, chain_seed, full)
     for info in structure.ordered():
+        if info.number in coupled:
+            continue
         u1, u2 = info.functions
         resolve_known(info, resolve)
         for name in (u1, u2):
@@ -104,6 +119,56 @@ def position_tangents(model: Model, values: Mapping[str, Array],
     for name in structure.links:
         resolve(name)
     return {name: np.broadcast_to(p.rate, full) for name, p in params.items()}
+
+
+def _block_tangents(block, structure, params: dict, resolve, values: Mapping[str, Array],
+                    chain_seed, full: tuple[int, ...]) -> None:
+    """The tangents of a coupled block's unknowns (:mod:`mechloop.modules.coupled`): the
+    block Jacobian's linear system with the known tangents on the right — those of the
+    known parameters, and of the deltas of the links to the block's unknowns."""
+    from mechloop.modules.coupled import Plan, block_hadamard, block_rates
+
+    by_number = {c.number: c for c in structure.contours}
+    index = {u: i for i, u in enumerate(block.unknowns)}
+    for name in block.unknowns:
+        params[name] = _Param(np.asarray(values[name])[None], None, None)
+    eq, sources, r, a, r_rate, a_rate, r_scale, a_scale = ([] for _ in range(8))
+    for j, n in enumerate(block.contours):
+        for number in by_number[n].vectors:
+            eq.append(j)
+            for name, vals, rates, scales in ((f"r{number}", r, r_rate, r_scale),
+                                              (f"a{number}", a, a_rate, a_scale)):
+                chain = structure.links.get(name)
+                vals.append(np.asarray(values[name]))
+                scales.append(1.0)  # link ratios: the scale of the link (1 for now)
+                if name in index:
+                    sources.append(index[name])
+                    rates.append(0.0)
+                elif chain is not None and chain.root in index:
+                    sources.append(index[chain.root])
+                    rates.append(chain_seed(name))
+                else:
+                    sources.append(-1)
+                    param = resolve(name)
+                    if param is None:
+                        raise AssertionError(f"{name} not known before block {block.number}")
+                    rates.append(param.rate)
+    plan = Plan(unknowns=block.unknowns, eq=np.array(eq, dtype=np.int64),
+                r_unknown=np.array(sources[0::2], dtype=np.int64),
+                r_scale=np.zeros(len(eq), dtype=np.int64),
+                r_col=np.zeros(len(eq), dtype=np.int64),
+                a_unknown=np.array(sources[1::2], dtype=np.int64),
+                a_scale=np.zeros(len(eq), dtype=np.int64),
+                a_col=np.zeros(len(eq), dtype=np.int64),
+                angle=np.array([u[0] == "a" for u in block.unknowns]))
+    with np.errstate(invalid="ignore", over="ignore"):
+        ratio = block_hadamard(plan, r, a, r_scale, a_scale, full[1:])
+        good = np.broadcast_to(ratio > SINGULAR_SIN, full)  # False where NaN (broken)
+        tangent, _ = block_rates(plan, r, a, r_rate, a_rate, None, None, r_scale, a_scale,
+                                 good)
+    for i, name in enumerate(block.unknowns):
+        params[name].rate = tangent[..., i]
+        params[name].accel = 0.0
 
 
 def override_seeds(model: Model, variables, designs: Array, *,

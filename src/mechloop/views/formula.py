@@ -65,8 +65,10 @@ def chain_order(structure: Structure) -> list[ContourInfo]:
     remaining = structure.ordered()
     placed: list[ContourInfo] = []
     done: set[int] = set()
-    while remaining:
-        ready = [c for c in remaining if set(c.needs) <= done]
+    block_of = {c.number: c.block for c in remaining}
+    while remaining:  # a contour waits for the contours it needs outside its own block
+        ready = [c for c in remaining
+                 if {n for n in c.needs if block_of[n] != c.block} <= done]
         pick = ready[0]
         for previous in reversed(placed):
             dependents = [c for c in ready if previous.number in c.needs]
