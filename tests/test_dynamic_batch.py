@@ -323,17 +323,18 @@ def _example_with(name: str, synthesis: dict, **changes) -> mechloop.Model:
 
 
 def _spy_forces(monkeypatch) -> list:
-    """Record every force analysis dynamic_columns does."""
-    from mechloop.synthesis import dynamic_batch
+    """Record every force analysis dynamic_columns does (in the dynamics' own
+    :func:`~mechloop.dynamics.analysis.analyze`, the one path of solve_dynamics too)."""
+    from mechloop.dynamics import analysis
 
     seen = []
 
     def spy(*args, **kwargs):
-        seen.append(dynamic_batch_kinetostatics(*args, **kwargs))
+        seen.append(kinetostatics(*args, **kwargs))
         return seen[-1]
 
-    dynamic_batch_kinetostatics = dynamic_batch.kinetostatics
-    monkeypatch.setattr(dynamic_batch, "kinetostatics", spy)
+    kinetostatics = analysis.kinetostatics
+    monkeypatch.setattr(analysis, "kinetostatics", spy)
     return seen
 
 

@@ -255,6 +255,19 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"(?P<fig>3\.32) MN at the top", ("computed", "real top MN")),
     (R, r"needs (?P<fig>4\.54) MN", ("computed", "simple at real low MN")),
     (R, r"4\.54 MN and (?P<fig>3\.66) MN", ("computed", "simple at real top MN")),
+    # motion in time: the compressor's start-up
+    (R, r"after (?P<fig>2\.72) s", ("test", "tests/test_simulate.py::"
+                                    "test_compressor_start_up_figures")),
+    (R, r"2\.72 s \((?P<fig>14) turns", ("test", "tests/test_simulate.py::"
+                                          "test_compressor_start_up_figures")),
+    (R, r"mean (?P<fig>488\.1) rpm", ("test", "tests/test_simulate.py::"
+                                      "test_compressor_start_up_figures")),
+    (R, r"δ = (?P<fig>0\.0192)", ("test", "tests/test_simulate.py::"
+                                  "test_compressor_start_up_figures")),
+    (R, r"then\s(?P<fig>2799) J", ("test", "tests/test_simulate.py::"
+                                   "test_compressor_start_up_figures")),
+    (R, r"closes to (?P<fig>0\.02) J", ("test", "tests/test_simulate.py::"
+                                        "test_compressor_start_up_figures")),
     # roof support table and text
     (R, r"41, exact \| (?P<fig>9\.4) mm \| 4658 kN", ("computed", "band mm")),
     (R, r"9\.4 mm \| (?P<fig>4658) kN", ("computed", "F low kN")),
@@ -403,6 +416,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
     (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
     (R, r"\d+ positions per design", "the benchmark's setting"),
+    (R, r"position, over 16\)", "the error ratio of a fourth-order spline at half the step"),
+    (R, r"`rtol` \(default 1e-8\), `atol` \(1e-9,", "simulate:'s default tolerances"),
     (R, r"2,000 random designs|relative 1e-9[);]", "the synthesis benchmark's settings"),
     (R, r"evaluates 2,000 designs|`--designs 20000`", "the synthesis benchmark's settings"),
     (R, r"from 65,536 designs × positions", "a rule of the code (its constant, "

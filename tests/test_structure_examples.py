@@ -29,6 +29,7 @@ HAND = {
     "crank_slider_friction.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "compressor_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     # crank 1, coupler 2, rocker 3, four pins: W = 9 − 8 = 1; coupler + rocker is an
     # RRR dyad (L1).
     "four_bar_groups.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
@@ -49,8 +50,10 @@ HAND = {
 }
 
 WITHOUT_BODIES = {
+    "cam_flat_follower.yaml", "cam_roller_follower.yaml",
     "crank_slider.yaml", "eighteen_points_timing_synthesis.yaml",
     "five_points_timing_synthesis.yaml", "four_bar.yaml",
+    "gear_pair.yaml", "gear_train.yaml", "planetary_reducer.yaml",
     "four_bar_path_synthesis.yaml", "four_bar_shape_synthesis.yaml",
     "hydraulic_rocker.yaml", "log10_function_generator.yaml", "six_bar.yaml",
     "six_points_free_timing_synthesis.yaml", "six_points_line_synthesis.yaml",

@@ -27,6 +27,7 @@ _EXPORTS: dict[str, str] = {
     "Contour": "mechloop.model.schema",
     "DynamicResults": "mechloop.dynamics.analysis",
     "GroupMechanism": "mechloop.model.groups",
+    "IntermediateArgument": "mechloop.model.schema",
     "LawArgument": "mechloop.model.schema",
     "LinkRole": "mechloop.model.schema",
     "MechloopError": "mechloop.errors",
@@ -44,8 +45,10 @@ _EXPORTS: dict[str, str] = {
     "build_model": "mechloop.model.groups",
     "load_model": "mechloop.model.load",
     "save_model": "mechloop.model.load",
+    "simulate": "mechloop.dynamics.simulate",
     "solve": "mechloop.solve.kinematics",
     "solve_dynamics": "mechloop.dynamics.analysis",
+    "solve_intermediate": "mechloop.solve.intermediate",
 }
 
 __all__ = [
@@ -54,6 +57,7 @@ __all__ = [
     "Contour",
     "DynamicResults",
     "GroupMechanism",
+    "IntermediateArgument",
     "LawArgument",
     "LinkRole",
     "MechloopError",
@@ -71,8 +75,10 @@ __all__ = [
     "build_model",
     "load_model",
     "save_model",
+    "simulate",
     "solve",
     "solve_dynamics",
+    "solve_intermediate",
 ]  # the keys of _EXPORTS
 
 

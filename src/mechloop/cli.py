@@ -190,6 +190,8 @@ def solve(
     m = load_model(model)
     if output is not None:
         check_table_size(m.positions + 1, 0, output)
+    extra = _intermediate_outputs(m, output)
+    _outputs(model, force, *((path, SUFFIXES) for path in extra))
     if m.bodies:
         dynamic = _dynamics(m, model)
         results, frame = dynamic.kinematics, dynamic.to_frame()
@@ -218,6 +220,38 @@ def solve(
     broken = int(results.broken.sum())
     out.print(f"wrote {output} ({rows} positions, {len(frame.columns)} columns"
               + (f", {broken} with a chain break" if broken else "") + ")")
+    if extra:
+        _write_intermediate(m, results, *extra)
+
+
+def _intermediate_outputs(m, output: Path | None) -> tuple[Path, ...]:
+    """The tables a model with an intermediate argument adds beside ``output``: the long
+    table and the envelopes (``name.intermediate.csv``, ``name.envelopes.csv``)."""
+    from mechloop.model.intermediate import intermediate_numbers
+
+    if output is None or not intermediate_numbers(m):
+        return ()
+    return (output.with_suffix(f".intermediate{output.suffix}"),
+            output.with_suffix(f".envelopes{output.suffix}"))
+
+
+def _write_intermediate(m, results, long: Path, envelopes: Path) -> None:
+    """Solve over the intermediate argument and write its two tables."""
+    from mechloop.output.tables import check_table_size
+    from mechloop.solve.intermediate import solve_intermediate
+
+    solved = solve_intermediate(m, results=results)
+    frame = solved.to_frame()
+    check_table_size(len(frame), len(frame.columns), long)
+    _write_frame(frame, long)
+    bad = int(solved.broken.sum())
+    out.print(f"wrote {long} ({solved.broken.shape[0]} positions × {solved.theta.size} "
+              f"values of argument {solved.argument}"
+              + (f", {bad} with a chain break" if bad else "") + ")")
+    table = solved.envelope_frame()
+    _write_frame(table, envelopes)
+    out.print(f"wrote {envelopes} ({len(table)} envelope points of "
+              f"{len(solved.envelopes)} envelope(s))")
 
 
 def _write_frame(frame, output: Path) -> None:
@@ -253,6 +287,7 @@ def energy(model: ModelPath) -> None:
     dynamic = _dynamics(m, model)
     summary = dynamic.summary
     clock = "s" if not dynamic.static else "argument 1"
+    broken = _warn_cycle_breaks(dynamic, "below")
     table = Table(title=f"Summary characteristics — {m.name or model}")
     for head in ("load", "A+ [J]", "A- [J]", "max N [W]", "min N [W]", "mean N [W]",
                  "N per kg [W/kg]"):
@@ -266,6 +301,14 @@ def energy(model: ModelPath) -> None:
               f"({clock}): driving {summary.driving_work:.6g} J, friction "
               f"{summary.friction_work:.6g} J, change of kinetic energy "
               f"{summary.kinetic_energy_change:.6g} J")
+    residual = sum(r.positive_work + r.negative_work for r in summary.rows) \
+        - summary.kinetic_energy_change
+    largest = max((r.positive_work - r.negative_work for r in summary.rows), default=0.0)
+    out.print(f"energy balance: the works of all loads, the drive and friction less the "
+              f"change of kinetic energy leave {residual:.3g} J"
+              + (f" ({abs(residual) / largest:.2g} of the largest work; the trapezoidal "
+                 "rule over the positions)" if largest > 0 else "")
+              + (" — positions with a break are left out" if broken.any() else ""))
     if np.isnan(summary.efficiency):
         out.print("no load does net positive work over the cycle: loss coefficient and "
                   "efficiency are undefined")
@@ -289,9 +332,121 @@ def energy(model: ModelPath) -> None:
                       f"{cycle.with_flywheel.omega_max:.6g} {speed}")
 
 
+@app.command(cls=_Command)
+@user_errors
+def simulate(
+    model: ModelPath,
+    output: Annotated[Path | None, typer.Option(
+        "-o", "--output", help="write the time series here: .csv, .json, .parquet or "
+        ".xlsx (default: print a summary only)")] = None,
+    plot_file: Annotated[Path | None, typer.Option(
+        "--plot", help="draw angle, speed and acceleration over time and the phase "
+        "portrait: .png, .svg or .pdf (default: none)")] = None,
+    duration: Annotated[float | None, typer.Option(
+        help="simulated time, s (default: the model's simulate.duration)")] = None,
+    cycles: Annotated[int | None, typer.Option(
+        help="stop after this many cycles (default: the model's simulate.cycles)")] = None,
+    force: Force = False,
+) -> None:
+    """Simulate the machine's motion in time (start-up, run-down, the approach to the
+    steady cycle) from the model's simulate: section: a motor on the input, the start
+    state, the loads over the positions.
+
+    Prints how the run ended, the cycles, the time to steady state and the energy balance.
+    Example:
+
+    ```
+    mechloop simulate examples/compressor_startup.yaml --plot startup.png
+    ```
+    """
+    from mechloop.dynamics.simulate import simulate as run
+    from mechloop.model.load import load_model
+    from mechloop.views.figure import FIGURE_SUFFIXES
+
+    _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
+    m = load_model(model)
+    if m.simulate is None:
+        raise ModelError([Problem(("simulate",), "the model has no simulate: section",
+                                  "add simulate: {motor: {kloss: ...}, duration: 5}")],
+                         str(model))
+    settings = m.simulate
+    if duration is not None or cycles is not None:
+        settings = settings.model_copy(update={
+            "duration": duration if duration is not None else settings.duration,
+            "cycles": cycles if cycles is not None else settings.cycles})
+    dynamic = _dynamics(m, model)
+    with _progress("simulating") as bar:
+        task = bar.add_task("simulating", total=None)
+        sim = run(m, settings, dynamics=dynamic,
+                  progress=lambda done, total: bar.update(task, completed=done,
+                                                          total=total or None))
+    _print_simulation(sim)
+    if output is not None:
+        _write_frame(sim.to_frame(), output)
+        out.print(f"wrote {output} ({sim.time.size} rows)")
+    if plot_file is not None:
+        from mechloop.views.figure import save_figure
+        from mechloop.views.motion import plot_simulation
+
+        save_figure(plot_simulation(sim, title=m.name), plot_file)
+        out.print(f"wrote {plot_file}")
+
+
+def _print_simulation(sim) -> None:
+    """The summary of a run: machine, events, cycles, steady state, energy balance."""
+    import numpy as np
+
+    from mechloop.dynamics.motors import RPM
+
+    machine = sim.machine
+    accuracy = machine.interpolation
+    out.print(f"motor: {sim.motor.name if sim.motor else 'none'}; reduced inertia "
+              f"{machine.inertia.min():.6g} … {machine.inertia.max():.6g} kg*m^2 "
+              f"({'periodic' if machine.periodic else 'not periodic'}; between positions "
+              f"within about {accuracy.inertia_error:.2g} kg*m^2, slope within "
+              f"{accuracy.slope_error:.2g} kg*m^2/rad of dJ/dq)")
+    for event in sim.events[1:]:
+        out.print(f"{event.kind}: t = {event.t:.6g} s, angle {np.degrees(event.q):.6g} deg, "
+                  f"speed {event.omega / RPM:.6g} rpm")
+    count = sim.cycle_time.size
+    if count:
+        _, _, omega = sim.cycle_profile()
+        mean = sim.cycle_speed[-1]
+        out.print(f"{count} cycle(s); the last: mean speed {mean / RPM:.6g} rpm, "
+                  f"{omega.min() / RPM:.6g} … {omega.max() / RPM:.6g} rpm at the "
+                  f"positions, δ = {(omega.max() - omega.min()) / mean:.4g}")
+    if sim.steady_time is not None:
+        out.print(f"time to steady state {sim.steady_time:.6g} s (the first cycle whose "
+                  f"mean speed changed by less than {sim.settings.steady:g})")
+    elif count:
+        out.print("not steady yet (the mean speed still changes by more than "
+                  f"{sim.settings.steady:g} from cycle to cycle)")
+    out.print(f"energy: motor {sim.motor_work[-1]:.6g} J, loads {sim.load_work[-1]:.6g} J, "
+              f"kinetic energy {sim.kinetic_energy[0]:.6g} → {sim.kinetic_energy[-1]:.6g} J; "
+              f"balance residual at most {np.abs(sim.balance).max():.2g} J")
+
+
+def _warn_cycle_breaks(dynamic: DynamicResults, where: str):
+    """Warn that the cycle's works (and ψ, η) leave out the positions where the chain
+    breaks or the force analysis is singular; the mask of those positions."""
+    import numpy as np
+
+    broken = dynamic.kinematics.broken | dynamic.forces.singular
+    if broken.any():
+        from mechloop.solve.results import compress_positions
+
+        err.print(f"[bold yellow]warning:[/] the chain breaks (or the force analysis is "
+                  f"singular) at {int(broken.sum())} of {broken.size} positions "
+                  f"({compress_positions(np.flatnonzero(broken))}): the works {where} leave "
+                  "out the steps next to them, so they, the loss coefficient and the "
+                  "efficiency are not the cycle's — remove the break (dimensions, variant, "
+                  "argument range) before reading them")
+    return broken
+
+
 PLOTS = ("plan", "overlay", "trajectories", "parameters", "combination", "angle",
          "increment", "reduced", "balancing", "reactions", "hodograph", "summary", "motion",
-         "structure")
+         "structure", "envelope")
 
 
 def _split(text: str | None) -> list[str]:
@@ -350,6 +505,7 @@ def plot(
         --against arg1 -o s.png
     mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
         --joint A -o hod.svg
+    mechloop plot examples/cam_roller_follower.yaml envelope -o cam.png
     ```
     """
     from mechloop.model.load import load_model
@@ -366,6 +522,15 @@ def plot(
     display = Display(**dict(item.split("=", 1) for item in _split(units)))
     if kind == "structure":
         save_figure(formula.plot_structure(m), output)
+        out.print(f"wrote {output}")
+        return
+    if kind == "envelope":  # the family over the intermediate argument and its envelope
+        from mechloop.solve.intermediate import solve_intermediate
+        from mechloop.views.envelope import plot_envelope
+
+        listed = _split(names)
+        save_figure(plot_envelope(solve_intermediate(m), listed[0] if listed else None,
+                                  display=display), output)
         out.print(f"wrote {output}")
         return
     results = _dynamics(m, model) if m.bodies else solve_model(m)
@@ -417,6 +582,7 @@ def plot(
                             f"give --joint, one of {', '.join(results.forces.reactions)}")
         figure = dynamics.plot_hodograph(results, joint, polar=polar, display=display)
     elif kind == "summary":
+        _warn_cycle_breaks(results, "drawn")
         figure = dynamics.plot_summary(results, display=display)
     else:
         figure = dynamics.plot_machine_motion(results, display=display)

@@ -7,16 +7,23 @@ writes the table (``to_frame``) that ``mechloop solve`` prints for a model with 
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from mechloop.dynamics.cycle import Cycle, steady_cycle
+from mechloop.dynamics.cycle import Cycle, steady_cycles
 from mechloop.dynamics.energy import Summary, summarize
-from mechloop.dynamics.kinetostatics import ForceAnalysis, body_motions, kinetostatics
+from mechloop.dynamics.kinetostatics import (
+    ForceAnalysis,
+    FrictionError,
+    body_motions,
+    kinetostatics,
+)
 from mechloop.dynamics.loads import Loads, build_loads
+from mechloop.dynamics.machine import MachineError
 from mechloop.dynamics.mechanism import Mechanism, build_mechanism
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.dynamics.reduced import Reduced, balancing_by_virtual_power, reduced
@@ -43,6 +50,12 @@ class DynamicResults:
     ``summary``: power and work over the cycle; ``cycle``: the machine
     motion and flywheel when the model asks for them (``machine:``).  Without model time
     the analysis is static (no inertia loads).
+
+    For a population of ``D`` designs (``analyze(..., designs=D)``,
+    :mod:`mechloop.dynamics.population`) the arrays run over designs × positions
+    ``(D·P,)``, design after design; ``summary`` and ``cycle`` hold one cycle per design
+    (numbers ``(D,)``, arrays ``(D, P)``), and ``summary`` (with ``powers``) is left out
+    (None, and no powers) when not asked for (``analyze(..., summary=False)``).
     """
 
     kinematics: Results
@@ -56,7 +69,7 @@ class DynamicResults:
     center: Motion
     kinetic_energy: Array
     powers: dict[str, Array]
-    summary: Summary
+    summary: Summary | None
     static: bool
     inertia: dict[int, tuple[Array, Array]]
     cycle: Cycle | None = None
@@ -113,11 +126,11 @@ class DynamicResults:
             linear = self.reduced is not None and self.kinematics.argument_kinds[
                 self.mechanism.drives[0].argument] == "length"
             speed, accel = ("m/s", "m/s^2") if linear else ("rad/s", "rad/s^2")
-            cols[f"omega [{speed}]"] = self.cycle.motion.omega
-            cols[f"epsilon [{accel}]"] = self.cycle.motion.epsilon
+            cols[f"omega [{speed}]"] = np.ravel(self.cycle.motion.omega)
+            cols[f"epsilon [{accel}]"] = np.ravel(self.cycle.motion.epsilon)
             if self.cycle.with_flywheel is not None:
-                cols[f"omega_fw [{speed}]"] = self.cycle.with_flywheel.omega
-                cols[f"epsilon_fw [{accel}]"] = self.cycle.with_flywheel.epsilon
+                cols[f"omega_fw [{speed}]"] = np.ravel(self.cycle.with_flywheel.omega)
+                cols[f"epsilon_fw [{accel}]"] = np.ravel(self.cycle.with_flywheel.epsilon)
         extra = pd.DataFrame(cols)
         # a singular force system leaves the reactions empty: such a row is broken too
         broken = frame[["chain_break"]] | self.forces.singular[:, None]
@@ -157,18 +170,58 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     problem) and :class:`~mechloop.errors.SolveError` when the force analysis cannot be
     done (friction that does not settle).
     """
-    require_memory(model, dynamics=True)
-    kin = solve(model)
+    require_memory(model, dynamics=True)  # the kinematics' needs included
+    kin, placement, mechanism = compile_mechanism(model, memory_checked=True)
+    return analyze(model, kin, mechanism,
+                   lambda k: solve(model, analogs_of=k, memory_checked=True),
+                   placement=placement, friction=friction)
+
+
+def compile_mechanism(model: Model, *, memory_checked: bool = False
+                      ) -> tuple[Results, Placement, Mechanism]:
+    """The kinematics of ``model``, where its vectors lie, and its mechanism (bodies,
+    masses, pairs, drives: :func:`~mechloop.dynamics.mechanism.build_mechanism`);
+    ``memory_checked`` as for :func:`~mechloop.solve.kinematics.solve`."""
+    kin = solve(model, memory_checked=memory_checked)
+    placement = Placement(kin)
+    return kin, placement, build_mechanism(model, placement)
+
+
+def analyze(model: Model, kin: Results, mechanism: Mechanism,
+            analogs: Callable[[int], Results], *, placement: Placement | None = None,
+            starts: Mapping[int, NDArray[np.complex128]] | None = None,
+            designs: int | None = None, friction: bool = True, flywheel: bool = True,
+            summary: bool = True) -> DynamicResults:
+    """The force analysis of solved kinematics: what :func:`solve_dynamics` returns.
+
+    ``kin`` are the kinematics, ``analogs(k)`` the analogs with respect to argument ``k``
+    (``solve(model, analogs_of=k)``), and ``placement`` (optional) ``Placement(kin)``.
+    With ``designs=D`` the positions of ``kin`` and of the analogs are the designs ×
+    positions ``(D·P,)`` of a population of ``model`` that share ``mechanism``
+    (:mod:`mechloop.dynamics.population`): each contour in ``starts`` begins at each
+    design's own point, friction iterates per design, and the summary and the machine's
+    cycle are per design (arrays ``(D, ...)``); a design whose friction does not settle
+    is marked in ``forces.unsettled`` and one whose cycle cannot be computed in
+    ``cycle.computed`` instead of raising.  ``flywheel=False`` leaves out the flywheel of
+    a machine (``delta``), which changes no other number; ``summary=False`` the powers
+    and the summary (work over the cycle), which no column of the table needs.
+    """
     time = model_time(model)
     static = time is None
-    placement = Placement(kin)
-    mechanism = build_mechanism(model, placement)
-    loads = build_loads(model, mechanism, placement, time)
+    if placement is None:
+        placement = Placement(kin, starts)
+    n = kin.broken.size
+    lead = () if designs is None else (designs,)
+
+    def per_design(values: Array) -> Array:
+        return np.reshape(values, (*lead, n // (designs or 1)))
+
+    loads = build_loads(model, mechanism, placement, time, designs=designs or 1)
+    segments = None if designs is None else np.repeat(np.arange(designs), n // designs)
     try:
-        forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static)
-    except SolveError as exc:
-        if not exc.message.startswith("friction"):
-            raise
+        forces = kinetostatics(mechanism, placement, loads, friction=friction, static=static,
+                               segments=segments)
+    except FrictionError as exc:
         raise exc.at(_friction_path(model), "lower the coefficient of friction there "
                      "(friction.coefficient, or a joint's friction) or check the pin radii "
                      "and slider lengths") from None
@@ -177,15 +230,15 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
     red: Reduced | None = None
     analog_cache: dict[int, tuple[Placement, Loads]] = {}
     for drive in mechanism.drives:
-        analogs = Placement(solve(model, analogs_of=drive.argument))
-        loads_at = build_loads(model, mechanism, analogs, time)
-        analog_cache[drive.argument] = (analogs, loads_at)
+        at = Placement(analogs(drive.argument), starts)
+        loads_at = build_loads(model, mechanism, at, time, designs=designs or 1)
+        analog_cache[drive.argument] = (at, loads_at)
         balancing_vp[drive.argument] = balancing_by_virtual_power(
-            mechanism, placement, analogs, loads_at, static=static)
+            mechanism, placement, at, loads_at, static=static)
     if len(mechanism.drives) == 1:
         k = mechanism.drives[0].argument
-        analogs, loads_at = analog_cache[k]
-        red = reduced(mechanism, analogs, loads_at)
+        at, loads_at = analog_cache[k]
+        red = reduced(mechanism, at, loads_at)
         if friction:
             rate = _argument_rate(kin, k)
             with np.errstate(divide="ignore", invalid="ignore"):
@@ -193,20 +246,29 @@ def solve_dynamics(model: Model, *, friction: bool = True) -> DynamicResults:
                     rate != 0, forces.friction_loss / rate, 0.0)
 
     centers, center, inertia, kinetic = mass_terms(mechanism, placement, static)
-    powers = load_powers(kin, placement, mechanism, loads, forces)
-    summary = summarize(powers, forces.friction_loss, cycle_clock(kin), mechanism.total_mass,
-                        kinetic)
+    powers, work = {}, None
+    if summary:
+        powers = load_powers(kin, placement, mechanism, loads, forces)
+        work = summarize({name: per_design(p) for name, p in powers.items()},
+                         per_design(forces.friction_loss), per_design(cycle_clock(kin)),
+                         mechanism.total_mass, per_design(kinetic))
     cycle = None
     if model.machine is not None:
         check_machine(mechanism, red, time)
         k = mechanism.drives[0].argument
+        spec = model.machine if flywheel else model.machine.model_copy(update={"delta": None})
         try:
-            cycle = steady_cycle(kin.arguments[k], time.value, red, forces.friction_loss,
-                                 _argument_rate(kin, k), model.machine)
+            cycle = steady_cycles(per_design(kin.arguments[k]), per_design(kin.time),
+                                  Reduced(*(per_design(x) for x in (red.inertia,
+                                                                    red.d_inertia,
+                                                                    red.load))),
+                                  per_design(forces.friction_loss),
+                                  per_design(_argument_rate(kin, k)), spec,
+                                  failures="raise" if designs is None else "nan")
         except SolveError as exc:
             raise _machine_error(exc, k) from None
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
-                          centers, center, kinetic, powers, summary, static, inertia, cycle)
+                          centers, center, kinetic, powers, work, static, inertia, cycle)
 
 
 def _friction_path(model: Model) -> tuple[str | int, ...]:
@@ -219,21 +281,21 @@ def _friction_path(model: Model) -> tuple[str | int, ...]:
 
 
 #: What to change in the model file when the machine motion cannot be found, by the
-#: start of the message of :mod:`mechloop.dynamics.machine` / :mod:`.cycle`.
+#: cause of :class:`~mechloop.dynamics.machine.MachineError`: (key, fix).
 _MACHINE_FIXES = {
-    "machine motion needs the whole cycle": (
+    "cycle": (
         "machine", "remove the chain break first (mechloop solve lists the positions): "
         "check the dimensions, the variant and the argument range"),
-    "machine motion needs the input to advance": (
+    "advance": (
         "arguments", "make the argument's table or law increase from position 0 to N"),
-    "the machine stops": (
+    "stops": (
         "time", "raise the speed (time: {rpm: ...}), lower the loads, or give the moving "
         "bodies more inertia (a flywheel mass on the input link)"),
-    "j_red must be positive": (
+    "inertia": (
         "bodies", "the machine has no moving mass at some positions (its reduced moment of "
         "inertia is zero there): give the moving bodies masses and moments of inertia "
         "(bodies: mass:, inertia:)"),
-    "the motion is not steady": (
+    "unsteady": (
         "machine", "check the loads over the cycle: positions 0..N must be one whole cycle "
         "of the input"),
 }
@@ -241,11 +303,11 @@ _MACHINE_FIXES = {
 
 def _machine_error(exc: SolveError, argument: int) -> ModelSolveError:
     """``exc`` from the machine motion told at the key of the model to change."""
-    for start, (key, hint) in _MACHINE_FIXES.items():
-        if exc.message.startswith(start):
-            path: tuple[str | int, ...] = ("arguments", argument) if key == "arguments" \
-                else (key,)
-            return exc.at(path, hint)
+    if isinstance(exc, MachineError) and exc.cause in _MACHINE_FIXES:
+        key, hint = _MACHINE_FIXES[exc.cause]
+        path: tuple[str | int, ...] = ("arguments", argument) if key == "arguments" \
+            else (key,)
+        return exc.at(path, hint)
     return exc.at(("machine",), "check the loads, masses and speed of the machine "
                   "(forces, moments, bodies, time)")
 
@@ -289,7 +351,7 @@ def mass_terms(mechanism: Mechanism, placement: Placement, static: bool
     """Centres of mass of the bodies, the common centre, the inertia loads (force, moment
     per body; none when ``static``) and the kinetic energy (J), arrays over positions.
     Masses and inertias may be arrays over positions too (designs flattened into one
-    axis, :mod:`mechloop.synthesis.dynamic_batch`)."""
+    axis, :mod:`mechloop.dynamics.population`)."""
     centers = {}
     total = mechanism.total_mass
     for body in sorted(mechanism.bodies):

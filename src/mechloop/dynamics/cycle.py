@@ -16,7 +16,6 @@ from numpy.typing import NDArray
 
 from mechloop.dynamics import machine
 from mechloop.dynamics.reduced import Reduced
-from mechloop.errors import SolveError
 from mechloop.model.dynamic import Machine
 
 Array = NDArray[np.float64]
@@ -81,15 +80,17 @@ def steady_cycles(q: Array, time: Array, red: Reduced, friction_loss: Array, rat
     time = np.asarray(time, dtype=float)
     whole = np.all(np.isfinite(q), axis=-1) & np.all(np.isfinite(inertia), axis=-1)
     if raising and not np.all(whole):
-        raise SolveError("machine motion needs the whole cycle, but the chain breaks or the "
-                         "force analysis is singular at some positions",
-                         "remove the chain break (see the solve report) before sizing "
-                         "the flywheel")
+        raise machine.MachineError("machine motion needs the whole cycle, but the chain breaks "
+                                   "or the force analysis is singular at some positions",
+                                   "remove the chain break (see the solve report) before "
+                                   "sizing the flywheel", cause="cycle")
     with np.errstate(invalid="ignore"):
         advances = np.all(np.diff(q, axis=-1) > 0, axis=-1)
     if raising and not np.all(advances):
-        raise SolveError("machine motion needs the input to advance at every position of "
-                         "the cycle", "make argument 1 increase from position 0 to N")
+        raise machine.MachineError("machine motion needs the input to advance at every "
+                                   "position of the cycle",
+                                   "make argument 1 increase from position 0 to N",
+                                   cause="advance")
     omega_mean = (q[..., -1] - q[..., 0]) / (time[..., -1] - time[..., 0])
     load = np.array(red.load, dtype=float)
     if spec.friction:

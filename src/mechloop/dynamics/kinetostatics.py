@@ -39,6 +39,11 @@ FRICTION_MAX_ITER = 200
 SINGULAR_COND = 1e12
 
 
+class FrictionError(SolveError):
+    """Friction in the pairs that does not settle: the reactions keep changing from one
+    iteration to the next (a self-locking mechanism, or friction too large)."""
+
+
 def cross(z: Complex, w: Complex) -> Array:
     """z × w for plane vectors written as complex numbers (``x_z·y_w − y_z·x_w``)."""
     return (np.conj(z) * w).imag
@@ -299,7 +304,7 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                     break
         seg_iterations[settling] = FRICTION_MAX_ITER
         if segments is None and settling.any():
-            raise SolveError(
+            raise FrictionError(
                 f"friction: the reactions did not settle in {FRICTION_MAX_ITER} iterations "
                 "(the mechanism may be self-locking at some positions)",
                 "lower the coefficients of friction or check the pin radii and slider "

@@ -62,10 +62,16 @@ def _values(model: Model, value, kind: Kind, unit: str, time: Signal | None, n: 
 
 
 def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
-                time: Signal | None) -> Loads:
-    """Compile the model's forces, moments and gravity over all positions (SI)."""
+                time: Signal | None, *, designs: int = 1) -> Loads:
+    """Compile the model's forces, moments and gravity over all positions (SI).
+
+    With ``designs`` > 1 the placement's positions are the designs × positions of a
+    population (``(D·P,)``, :mod:`mechloop.dynamics.population`): a load's values over
+    the model's positions are the same for every design (repeated), its direction and
+    point are each design's own."""
     problems: list[Problem] = []
     n = placement.results.broken.size
+    n_pos = n // designs
     units = model.units
     forces: list[PointForce] = []
     moments: list[Couple] = []
@@ -75,8 +81,8 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
                                     f"use one of {sorted(mechanism.bodies)}"))
             continue
-        value = _values(model, load.value, "force", units.force, time, n, (*path, "value"),
-                        problems)
+        value = np.tile(_values(model, load.value, "force", units.force, time, n_pos,
+                                (*path, "value"), problems), designs)
         try:
             angle = to_si(load.angle, "angle", units.angle)
         except UnitProblem as exc:
@@ -102,8 +108,8 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
                                     f"use one of {sorted(mechanism.bodies)}"))
             continue
-        value = _values(model, load.value, "moment", units.moment, time, n,
-                        (*path, "value"), problems)
+        value = np.tile(_values(model, load.value, "moment", units.moment, time, n_pos,
+                                (*path, "value"), problems), designs)
         moments.append(Couple(load.name or f"M{i + 1}", load.body, value))
     if model.gravity is not None:
         try:

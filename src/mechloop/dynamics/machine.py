@@ -49,6 +49,22 @@ PERIODIC_RTOL = 1e-9
 STEADY_RTOL = 1e-6
 
 
+class MachineError(SolveError):
+    """A machine motion that cannot be computed, and why (``cause``): ``"cycle"`` (the
+    chain breaks or the force analysis is singular somewhere in the cycle),
+    ``"advance"`` (the input does not advance), ``"stops"`` (the machine stops),
+    ``"inertia"`` (no reduced inertia somewhere), ``"unsteady"`` (the loads leave net
+    work over the cycle).  What to change in a model for each cause:
+    :mod:`mechloop.dynamics.analysis`."""
+
+    def __init__(self, message: str, hint: str = "", cause: str = ""):
+        super().__init__(message, hint)
+        self.cause = cause
+
+    def __reduce__(self):
+        return (type(self), (self.message, self.hint, self.cause))
+
+
 @dataclass(frozen=True, eq=False)
 class MachineMotion:
     """Steady motion of the machine over one cycle.
@@ -293,11 +309,12 @@ def _check_steady(q: Array, a: Array) -> None:
     bad = _unsteady(a)
     if bad.any():
         case = _first(bad)
-        raise SolveError(
+        raise MachineError(
             f"the motion is not steady: the loads leave a net work of {float(net[case]):.6g} J"
             f" over one cycle{_where(case, bad)}, so the speed does not repeat",
             "add the constant driving moment steady_driving_moment(q, m_red) = "
             f"{float(-net[case] / (q[-1] - q[0])):.6g} N·m to m_red; it balances the net work",
+            cause="unsteady",
         )
 
 
@@ -306,11 +323,12 @@ def _check_running(q: Array, a: Array, j: Array, w_mean: Array, runs: Array) -> 
     if stops.any():
         case = _first(stops)
         need = float(_mean_speed(-a.min(axis=-1), a, j)[case])
-        raise SolveError(
+        raise MachineError(
             f"the machine stops: at omega_mean = {float(w_mean[case]):.6g} rad/s the kinetic"
             f" energy falls to zero near q = {float(q[np.argmin(a[case])]):.6g}"
             f"{_where(case, stops)}; steady running needs omega_mean > {need:.6g} rad/s",
             "raise omega_mean or add a flywheel (flywheel_inertia gives its size for a delta)",
+            cause="stops",
         )
 
 
@@ -332,7 +350,8 @@ def _reduced(
     q = _positions(q)
     j = _samples("j_red", j_red, q)
     if not np.all(j > 0.0):
-        raise SolveError("j_red must be positive at every position", "check the masses")
+        raise MachineError("j_red must be positive at every position", "check the masses",
+                           cause="inertia")
     m = _samples("m_red", m_red, q)
     w_mean = np.asarray(omega_mean, dtype=float)
     if not np.all(np.isfinite(w_mean) & (w_mean > 0.0)):

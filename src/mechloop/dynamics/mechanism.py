@@ -23,7 +23,7 @@ asks for ``joints``.  Inferred joints are named ``J<first>_<second>`` (``J0_1``)
 from __future__ import annotations
 
 from collections import defaultdict
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -41,11 +41,12 @@ SAME_POINT_RTOL = 1e-9
 
 @dataclass(frozen=True)
 class Mass:
-    """A lumped mass of a body: ``mass`` (kg), ``inertia`` (kg·m²) about ``center``."""
+    """A lumped mass of a body: ``mass`` (kg), ``inertia`` (kg·m²) about ``center`` (an
+    array ``(D·P,)`` for a rod in a population of designs, :func:`design_masses`)."""
 
     body: int
     mass: float
-    inertia: float
+    inertia: float | np.ndarray
     center: PointOn
 
 
@@ -266,6 +267,8 @@ def _rigid(point: Motion, ref: Motion, angle, ok, scale) -> bool:
 
 def _guide_body(model: Model, v: int, member) -> int | None:
     role = model.vectors[v].a
+    if isinstance(role, LinkRole) and role.ratio != 1:
+        return None  # a transmission (gears): the direction turns with neither body
     if isinstance(role, LinkRole):
         root = int(role.link[1:])
         owners = member.get(root, [])
@@ -510,7 +513,28 @@ def _node_holders(model: Model, holds, v: int, end: str) -> set[int]:
     return set()
 
 
-def _masses(model: Model, results, problems) -> list[Mass]:
+def design_masses(model: Model, mechanism: Mechanism, results, designs: int) -> Mechanism:
+    """``mechanism`` with the masses of each design of a population whose designs ×
+    positions are the positions of ``results`` (``(D·P,)``): an ``inertia: rod`` is
+    ``m·r²/12`` of each design's own length (an array ``(D·P,)``); every other mass
+    property is the same for all designs."""
+    problems: list[Problem] = []
+    masses = _masses(model, results, problems, designs)
+    if problems:  # the mechanism was compiled from the same model: cannot happen
+        raise ModelError(problems)
+    return replace(mechanism, masses=tuple(masses))
+
+
+def _first(values, designs: int):
+    """The value at the first position (a float), or at each design's first position
+    repeated over its positions (``(D·P,)``) for a population of ``designs`` > 1."""
+    if designs == 1:
+        return float(values[0])
+    rows = np.asarray(values).reshape(designs, -1)
+    return np.repeat(rows[:, 0], rows.shape[1])
+
+
+def _masses(model: Model, results, problems, designs: int = 1) -> list[Mass]:
     out: list[Mass] = []
     units = model.units
     for number, body in model.bodies.items():
@@ -562,10 +586,10 @@ def _masses(model: Model, results, problems) -> list[Mass]:
                                             f"constant length, and vector {v} changes length",
                                             "give the moment of inertia as a number"))
                     continue
-                j = m * float(results.value(f"r{v}")[0]) ** 2 / 12.0
+                j = m * _first(results.value(f"r{v}"), designs) ** 2 / 12.0
             else:
                 j = _si(inertia, "inertia", units.inertia, (*where, "inertia"), problems)
-            if j < 0:
+            if np.any(j < 0):
                 problems.append(Problem((*where, "inertia"), "a moment of inertia cannot "
                                         "be negative", "give a value ≥ 0"))
             out.append(Mass(number, m, j, center))

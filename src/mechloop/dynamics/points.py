@@ -13,6 +13,7 @@ derivatives, or analogs when the results are.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -67,10 +68,16 @@ def offset_motion(results: Results, number: int, share: float, along: float,
 
 
 class Placement:
-    """Where every vector of a solved model lies: tails and heads over positions."""
+    """Where every vector of a solved model lies: tails and heads over positions.
 
-    def __init__(self, results: Results):
+    ``starts`` (optional) maps a contour's index to where it starts at every position,
+    complex ``(P,)`` (m): the fixed start of each design when the positions are the
+    designs × positions of a population (:mod:`mechloop.dynamics.population`); a contour
+    not in it starts as its model says."""
+
+    def __init__(self, results: Results, starts: Mapping[int, Complex] | None = None):
         self.results = results
+        self._starts = dict(starts or {})
         self._vectors = {n: vector_motion(results, n) for n in results.model.vectors}
         self._tails: dict[int, Motion] = {}
         self._contour_of = {v: i for i, c in enumerate(results.model.contours)
@@ -96,6 +103,8 @@ class Placement:
     def _start(self, index: int, start, visiting: tuple[int, ...]) -> Motion:
         n = self.results.broken.size
         zero = np.zeros(n, dtype=complex)
+        if index in self._starts:
+            return Motion(self._starts[index], zero, zero)
         if isinstance(start, str):
             return Motion(zero, zero, zero)
         if isinstance(start, tuple | list):

@@ -12,6 +12,7 @@ import numpy as np
 
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import VectorPoint
+from mechloop.model.intermediate import check_intermediate
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument, Units
 from mechloop.model.signals import MIN_TIME_STEP
 from mechloop.model.structure import Structure, analyze
@@ -45,6 +46,7 @@ def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     structure, problems = analyze(model)
     problems = _check_units(model) + problems
     problems += _check_arguments(model)
+    problems += check_intermediate(model, structure)
     problems += _check_time(model)
     problems += _check_loads(model)
     problems += check_synthesis(model)

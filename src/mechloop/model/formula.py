@@ -9,7 +9,13 @@ module type and the solution variant, e.g. ``α1 (arg 1) → α2, r3 · Pl3, V=1
 from __future__ import annotations
 
 from mechloop.model.check import argument_kind, require_valid
-from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model
+from mechloop.model.schema import (
+    ArgumentRole,
+    IntermediateArgument,
+    LawArgument,
+    LinkRole,
+    Model,
+)
 from mechloop.model.structure import MODULE_SOLUTIONS, ContourInfo, is_function, param_role
 
 
@@ -47,7 +53,8 @@ def role_text(model: Model, name: str) -> str:
     if isinstance(role, ArgumentRole):
         return f"arg {role.argument}{_plus(role.offset, unit)}"
     if isinstance(role, LinkRole):
-        return f"{symbol(role.link)}{_plus(role.delta, unit)}"
+        factor = "" if role.ratio == 1 else f"{role.ratio:g}·"
+        return f"{factor}{symbol(role.link)}{_plus(role.delta, unit)}"
     return _fmt(role, unit)
 
 
@@ -81,7 +88,11 @@ def describe_structure(model: Model) -> str:
                   if isinstance(v.r if letter == "r" else v.a, ArgumentRole)
                   and (v.r if letter == "r" else v.a).argument == number]
         form = (f"law {arg.law} from position {arg.start[0]} to {arg.end[0]}"
-                if isinstance(arg, LawArgument) else f"table of {len(arg.table)} value(s)")
+                if isinstance(arg, LawArgument) else
+                f"intermediate, {arg.intermediate.count} values from "
+                f"{arg.intermediate.start} to {arg.intermediate.to} in every position"
+                if isinstance(arg, IntermediateArgument)
+                else f"table of {len(arg.table)} value(s)")
         lines.append(f"argument {number} ({kind}): {form}; drives {', '.join(driven)}")
     lines.append("solving order: " + " → ".join(f"contour {n}" for n in structure.order))
     for info in structure.ordered():

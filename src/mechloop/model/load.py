@@ -170,6 +170,7 @@ _HINTS = {
     "less_than_equal": "use a smaller value",
     "less_than": "use a smaller value",
     "number_range": "write a finite number of a physical size (model units)",
+    "ratio_fraction": "write the ratio as teeth over teeth, e.g. -20/50",
     "quantity_length": "write a number and a unit, e.g. '50 mm'",
     "string_too_long": "shorten it: a unit is a short name like 'mm' or 'kN*m'",
     "string_pattern_mismatch": "write the parameter as 'a' or 'r' and a vector number, "
@@ -195,6 +196,8 @@ def _describe(error: dict[str, Any]) -> tuple[str, str]:
         # pydantic compares a NaN with a bound first and calls it too large or too small
         message = f"{value} is not a finite number"
         hint = "write a finite number"
+    if kind == "float_parsing" and loc and loc[-1] == "ratio":
+        hint = "write a number or a fraction of tooth counts, e.g. ratio: -20/50"
     if kind == "parameter_role":
         hint = "write e.g. r: 0.05, a: function, a: {argument: 1}, a: {link: a2, delta: 30}"
     elif kind == "argument_form":

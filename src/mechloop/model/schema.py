@@ -11,14 +11,18 @@ one role:
 * a number (or quantity string) — a *constant*;
 * ``"function"`` — an unknown solved by the contour that holds the vector;
 * ``{argument: k, offset: c}`` — driven by model argument ``k`` (plus a constant offset);
-* ``{link: "a2", delta: c}`` — equal to another vector's parameter plus a constant.
+* ``{link: "a2", delta: c}`` — equal to another vector's parameter plus a constant;
+  ``{link: "a2", ratio: k, delta: c}`` — ``k`` times it plus a constant (``α_i = k·α_j + c``:
+  a gear pair, ``k = −z1/z2`` external, ``+z1/z2`` internal; ``k`` is 1 by default).
 """
 
 from __future__ import annotations
 
+import re
 from typing import Annotated, Any, Literal
 
-from pydantic import Discriminator, Field, Tag, WithJsonSchema
+from pydantic import BeforeValidator, Discriminator, Field, Tag, WithJsonSchema
+from pydantic_core import PydanticCustomError
 
 from mechloop.model.dynamic import (
     Body,
@@ -31,9 +35,11 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
+from mechloop.model.intermediate import Envelope
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
     Argument,
+    IntermediateArgument,
     LawArgument,
     LawName,
     Number,
@@ -47,6 +53,7 @@ from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the mo
     UnitName,
     _Frozen,
 )
+from mechloop.model.simulate import Simulate
 from mechloop.model.synthesis import SynthesisTask
 
 FUNCTION = "function"
@@ -69,10 +76,54 @@ class ArgumentRole(_Frozen):
     offset: Scalar = Field(0.0, description="constant added to the argument (model units)")
 
 
+_FRACTION = re.compile(r"^\s*([+-]?\d+(?:\.\d*)?)\s*/\s*(\d+(?:\.\d*)?)\s*$")
+
+
+def _fraction(value: Any) -> Any:
+    """A ratio written as a fraction of tooth counts (``"-20/50"``) as its float."""
+    if isinstance(value, str) and (found := _FRACTION.match(value)):
+        top, bottom = float(found[1]), float(found[2])
+        if bottom == 0:
+            raise PydanticCustomError("ratio_fraction", "the ratio '{value}' divides by 0",
+                                      {"value": value})
+        return top / bottom
+    return value
+
+
+#: A link's ratio: a number, or a fraction ``"p/q"`` such as ``"-20/50"`` (teeth over teeth).
+Ratio = Annotated[Number, BeforeValidator(_fraction), WithJsonSchema({
+    "anyOf": [{"type": "number"}, {"type": "string", "pattern": _FRACTION.pattern}],
+    "description": "factor on the linked parameter (dimensionless, finite, not 0): 1 for a "
+    "rigid link, e.g. -20/50 (-z1/z2) for an external gear pair, +z1/z2 for an internal "
+    "one; a number or a fraction 'p/q'"})]
+
+
 class LinkRole(_Frozen):
-    """The parameter equals another vector's parameter plus ``delta``."""
+    """The parameter equals ``ratio`` times another vector's parameter plus ``delta``:
+    ``α_i = k·α_j + Δ`` (or ``r_i = k·r_j + Δ``).
+
+    ``ratio`` 1 (the default) is a rigid link; any other ratio is a transmission — a gear
+    pair (``−z1/z2`` for external gears, ``+z1/z2`` for an internal one), a gear train
+    (the product of its pairs' ratios), a planetary train (ratios from Willis' formula).
+    The rates follow exactly: ``α̇_i = k·α̇_j``, ``α̈_i = k·α̈_j``; chains compose
+    (``α_i = k_i(k_j α_m + Δ_j) + Δ_i``).
+
+    A link has one source.  That is enough for every train with one degree of freedom:
+    with one member of a planetary train fixed, Willis' formula
+    ``(ω1 − ωH)/(ω3 − ωH) = −z3/z1`` makes every member's angle a linear function of the
+    input, so each member is a link with its ratio (``examples/planetary_reducer.yaml``).
+    A second source (``α_p = k·α_H + m·α_1 + Δ``) is needed only by a differential, with
+    two inputs; it would turn every link chain from one root into a sum over roots for
+    every reader of links (solve, designs, existence, sensitivities, dynamics), and is not
+    part of the format.  An angle linked with a ratio ≠ 1 must come (through its chain)
+    from an argument or a constant: a solved angle is known only up to whole turns.
+    """
 
     link: ParamName
+    ratio: Ratio = Field(1.0, description="factor on the linked parameter (dimensionless, "
+                         "finite, not 0): 1 for a rigid link, e.g. -20/50 (-z1/z2) for an "
+                         "external gear pair, +z1/z2 for an internal one; a number or a "
+                         "fraction 'p/q'")
     delta: Scalar = Field(0.0, description="constant added to the linked parameter")
 
 
@@ -185,6 +236,11 @@ class Model(_Frozen):
     friction: Friction = Field(Friction(), description="friction defaults for every joint")
     machine: Machine | None = Field(None, description="machine motion and flywheel sizing "
                                     "(one-input machines)")
+    envelopes: list[Envelope] = Field(
+        default_factory=list, description="envelopes of the curves a point draws over the "
+        "intermediate argument, one per position (e.g. a cam profile)")
+    simulate: Simulate | None = Field(None, description="motion in time of a one-input "
+                                      "machine under a motor (mechloop simulate)")
     synthesis: SynthesisTask | None = Field(
         None, description="a synthesis task: dimensions to vary, the target, conditions, "
         "search (mechloop synthesize)")

@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, model_serializer
 
 from mechloop.model.numbers import (  # noqa: F401  (QuantityText, Scalar: re-exported)
     MAX_MAGNITUDE,
@@ -96,7 +96,44 @@ class CsvTable(_Frozen):
     derivatives: TableDerivatives = Field("linear", description="as for a table")
 
 
+#: Most values of an intermediate argument swept in one position.
+MAX_INTERMEDIATE = 100_000
+
+
+class Sweep(_Frozen):
+    """``count`` equally spaced values from ``from`` to ``to`` (both included)."""
+
+    model_config = ConfigDict(frozen=True, extra="forbid", populate_by_name=True)
+
+    start: Scalar = Field(alias="from", description="first value (model units)")
+    to: Scalar = Field(description="last value (model units)")
+    count: int = Field(ge=2, le=MAX_INTERMEDIATE, description="number of values, ends "
+                       "included (2 to 10⁵)")
+
+    @model_serializer(mode="wrap")
+    def _as_written(self, handler: Any) -> Any:
+        """Dumped with the key a file uses (``from``), with or without ``by_alias``."""
+        data = handler(self)
+        if isinstance(data, dict) and "start" in data:
+            data = {"from": data.pop("start"), **data}
+        return data
+
+
+class IntermediateArgument(_Frozen):
+    """An argument swept inside every calculation position (KDAM's "intermediate
+    argument"): e.g. the angle around a roller or the points of a follower's face.  The
+    parameters it drives, and every contour depending on them, get one more axis of
+    results (:func:`mechloop.solve.intermediate.solve_intermediate`); it does not move in
+    time (its rate is zero).  The ordinary solve holds it at its first value."""
+
+    intermediate: Sweep
+    unit: UnitName | None = Field(None, description="unit of the values (default: model unit)")
+
+
 def _argument_tag(value: Any) -> str | None:
+    if isinstance(value, IntermediateArgument) or (
+            isinstance(value, dict) and "intermediate" in value):
+        return "intermediate"
     if isinstance(value, CsvTable) or (isinstance(value, dict) and "csv" in value):
         return "csv"
     if isinstance(value, TableArgument) or (isinstance(value, dict) and "table" in value):
@@ -108,12 +145,13 @@ def _argument_tag(value: Any) -> str | None:
 
 Argument = Annotated[
     Annotated[TableArgument, Tag("table")] | Annotated[LawArgument, Tag("law")]
-    | Annotated[CsvTable, Tag("csv")],
+    | Annotated[CsvTable, Tag("csv")]
+    | Annotated[IntermediateArgument, Tag("intermediate")],
     Discriminator(
         _argument_tag,
         custom_error_type="argument_form",
         custom_error_message="an argument needs a 'table', a 'law' with 'start' and 'end', "
-        "or a 'csv' file",
+        "a 'csv' file, or an 'intermediate' sweep",
     ),
 ]
 

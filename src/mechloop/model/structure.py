@@ -11,6 +11,7 @@ fix.  Nothing here touches numbers beyond reading roles.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from graphlib import CycleError, TopologicalSorter
 
@@ -33,10 +34,26 @@ def is_function(role: object) -> bool:
 
 @dataclass(frozen=True)
 class LinkChain:
-    """Where a linked parameter finally comes from: ``root`` plus the sum of ``deltas``."""
+    """Where a linked parameter finally comes from, one step per link from the parameter
+    towards ``root``: step ``i`` is ``p_i = ratios[i]·p_(i+1) + deltas[i]`` (model units).
+
+    The parameter is ``scale·root + Σ_i (Π_(j<i) ratios[j])·deltas[i]``; ``ratios`` is
+    empty for a chain built without them (every ratio 1).
+    """
 
     root: str
     deltas: tuple[float | str, ...]
+    ratios: tuple[float, ...] = ()
+
+    @property
+    def scale(self) -> float:
+        """The composed ratio: the product of the steps' ratios (1 for rigid links)."""
+        return math.prod(self.ratios)
+
+    @property
+    def rigid(self) -> bool:
+        """Every step has ratio 1: the parameter is the root plus a constant."""
+        return all(k == 1 for k in self.ratios)
 
 
 @dataclass(frozen=True)
@@ -221,6 +238,14 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
                     continue
                 link_names.append(name)
                 root = links[name].root
+                if letter == "a" and links[name].scale != 1 and root in owner:
+                    problems.append(Problem(
+                        ("vectors", n, letter, "ratio"),
+                        f"{name} links to {root}, an angle that contour {owner[root]} "
+                        f"solves, with ratio {links[name].scale:g}: a solved angle is "
+                        "known only up to whole turns, which a ratio would scale",
+                        f"link {name} with a ratio to an argument or a constant (drive the "
+                        "gear train from the model's input), or use ratio 1"))
                 if root in owner:
                     needs.add(owner[root])  # its own contour too: a coupled block
                 elif is_function(param_role(model, root)):
@@ -243,12 +268,19 @@ def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]
                  ) -> LinkChain | None:
     """Follow ``name``'s link chain to a parameter that is not itself a link."""
     deltas: list[float | str] = []
+    ratios: list[float] = []
     seen = [name]
     current = name
     while True:
         role = param_role(model, current)
         if not isinstance(role, LinkRole):
-            return LinkChain(root=current, deltas=tuple(deltas))
+            return LinkChain(root=current, deltas=tuple(deltas), ratios=tuple(ratios))
+        if current == name and (role.ratio == 0 or not math.isfinite(role.ratio)):
+            problems.append(Problem((*path, "ratio"), f"{name} links to {role.link} with "
+                                    f"ratio {role.ratio}; a ratio is a finite number, not 0",
+                                    "give the transmission ratio (e.g. -z1/z2 for an "
+                                    "external gear pair), or remove 'ratio' for a rigid link"))
+            return None
         target = role.link
         if target[0] != current[0]:
             kind = {"r": "length", "a": "angle"}
@@ -263,6 +295,7 @@ def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]
                                     "link to a vector that exists, or add the vector"))
             return None
         deltas.append(role.delta)
+        ratios.append(role.ratio)
         if target in seen:
             problems.append(Problem(path, "links form a cycle: " + " -> ".join(
                 [*seen, target]), "one parameter in the chain must be a constant, an "

@@ -377,6 +377,11 @@ def check_synthesis(model: Model) -> list[Problem]:
                                     "give it bounds [low, high]"))
         if name in task.dimensions:
             pass
+        elif name.endswith(".ratio") and VARIABLE.match(name[:-6]):
+            problems.append(Problem(path, f"{name}: a link's ratio is not a design variable "
+                                    "(a transmission ratio is fixed by the tooth counts)",
+                                    f"vary {name[:-6]} (the link's delta), or try each ratio "
+                                    "in a model of its own"))
         elif not VARIABLE.match(name):
             problems.append(Problem(path, f"{name!r} is neither a constant of the model nor "
                                     "a named dimension", "vary 'r3' / 'a5' (a constant, a "

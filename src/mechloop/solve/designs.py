@@ -144,7 +144,8 @@ class DesignResults:
 
 def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
                   derivatives: bool = True, positions: ArrayLike | None = None,
-                  chunk_elements: int = CHUNK_ELEMENTS) -> DesignResults:
+                  chunk_elements: int = CHUNK_ELEMENTS,
+                  analogs_of: int | None = None) -> DesignResults:
     """Solve ``D`` designs of ``model`` at every position in one vectorized pass.
 
     ``overrides`` maps parameter names (``'r3'``, ``'a5'``) to SI values shaped ``(D,)``:
@@ -168,10 +169,15 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
     coupled block (Newton's continuation), so such a model cannot be solved at some
     positions only (:class:`SolveError`).
 
+    With ``analogs_of=k`` the derivatives are the analogs with respect to argument ``k``
+    alone, as ``solve(model, analogs_of=k)`` gives them: its rate 1 and acceleration 0,
+    every other argument held, no time.
+
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
     regular, _ = _solve(model, overrides, None, derivatives=derivatives,
-                        chunk_elements=chunk_elements, positions=_chosen(model, positions))
+                        chunk_elements=chunk_elements, positions=_chosen(model, positions),
+                        analogs_of=analogs_of)
     return regular
 
 
@@ -226,11 +232,16 @@ def solve_designs_at(model: Model, overrides: Mapping[str, ArrayLike], inputs: A
 
 def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | None, *,
            derivatives: bool, chunk_elements: int,
-           positions: NDArray[np.int64] | None = None
+           positions: NDArray[np.int64] | None = None, analogs_of: int | None = None
            ) -> tuple[DesignResults, DesignResults | None]:
     """The regular positions (or ``positions`` only), and with ``inputs`` ``(D, K)`` the
-    extra columns too."""
+    extra columns too; the analogs of argument ``analogs_of`` as derivatives if given."""
     structure, time, args = _prepared(model)
+    if analogs_of is not None:  # as solve(model, analogs_of=k)
+        n_pos = model.positions + 1
+        args = {k: Signal(s.value, np.full(n_pos, float(k == analogs_of)), np.zeros(n_pos))
+                for k, s in model_arguments(model, time, strict=False).items()}
+        time = None
     over = {name: np.atleast_1d(np.asarray(v, dtype=float)) for name, v in overrides.items()}
     sizes = {v.shape for v in over.values()}
     if len(sizes) > 1 or any(len(s) != 1 for s in sizes):
@@ -270,7 +281,7 @@ def _solve(model: Model, overrides: Mapping[str, ArrayLike], inputs: Array | Non
         if name in setup.constant:
             root = structure.links[name].root if name in structure.links else name
             value = (setup.constants[name] if name == root
-                     else setup.constants[root] + setup.deltas[name])
+                     else setup.link_value(name, setup.constants[root]))
             values[name] = np.broadcast_to(value, full)
             extra[name] = np.broadcast_to(value, (n_designs, n_extra))
     still = np.broadcast_to(0.0, full)

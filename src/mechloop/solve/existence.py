@@ -106,14 +106,15 @@ class ExistenceCheck:
         self.args = dict(args) if args is not None else model_arguments(
             model, model_time(model), strict=False)
         self.base = setup if setup is not None else _setup(model, self.structure, self.args)
-        self.chains: dict[str, list[str]] = {}
+        self.chains: dict[str, list[tuple[str, float]]] = {}
         self.own_delta: dict[str, float] = {}
         for name, chain in self.structure.links.items():
-            current, path = name, []
-            while current != chain.root:
+            current, path, factor = name, [], 1.0
+            while current != chain.root:  # each link with the ratio its delta is scaled by
                 role = param_role(model, current)
-                path.append(current)
+                path.append((current, factor))
                 self.own_delta[current] = _constant_si(model, current, role.delta)
+                factor *= role.ratio
                 current = role.link
             self.chains[name] = path
         # contours that need a contour with a tracked variant, directly or not
@@ -183,6 +184,16 @@ class ExistenceCheck:
                          tuple(sorted(breaks, key=lambda b: (b.design, b.start, b.contour))))
 
 
+    def loops(self, overrides: Mapping[str, ArrayLike] | None = None) -> list[CrankLoop]:
+        """The crank loops of the model (:func:`crank_loops`) for the population
+        ``overrides`` (one design without)."""
+        over = {k: np.atleast_1d(np.asarray(v, dtype=float))
+                for k, v in (overrides or {}).items()}
+        n_designs = next(iter(over.values())).shape[0] if over else 1
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return crank_loops(_Resolver(self, over, n_designs))
+
+
 class _Resolver:
     """The values per design ``(D,)`` of the parameters that are constant over positions
     (constants, links of constants) and the offsets of driven angles, for one
@@ -194,8 +205,11 @@ class _Resolver:
         self._known: dict[str, Array | None] = {}
 
     def _delta(self, name: str) -> Array | float:
-        return sum((self.over.get(link, self.check.own_delta[link])
-                    for link in self.check.chains.get(name, ())), 0.0)
+        return sum((factor * self.over.get(link, self.check.own_delta[link])
+                    for link, factor in self.check.chains.get(name, ())), 0.0)
+
+    def _scale(self, name: str) -> float:
+        return float(self.check.base.scales.get(name, 1.0))
 
     def _root(self, name: str) -> str:
         links = self.check.structure.links
@@ -210,16 +224,18 @@ class _Resolver:
             found = None
             if name in self.check.base.constant:
                 root = self._root(name)
-                found = self._rows(self.over.get(root, self.check.base.constants[root])
+                found = self._rows(self._scale(name)
+                                   * self.over.get(root, self.check.base.constants[root])
                                    + self._delta(name))
             self._known[name] = found
         return self._known[name]
 
     def driven(self, name: str) -> tuple[int, Array] | None:
         """(argument, offset per design) when angle ``name`` is an argument plus a
-        constant; None otherwise."""
+        constant; None otherwise (an angle linked with a ratio ≠ 1 turns at another speed:
+        it is no rigid part of a crank)."""
         root = self._root(name)
-        if root not in self.check.base.driven:
+        if root not in self.check.base.driven or self._scale(name) != 1:
             return None
         offset = self.over.get(root, self.check.base.driven[root][1])
         return self.check.argument_of[root], self._rows(offset + self._delta(name))

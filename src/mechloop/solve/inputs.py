@@ -24,7 +24,7 @@ from mechloop.errors import SolveError
 from mechloop.model.check import argument_kind
 from mechloop.model.laws import evaluate_law
 from mechloop.model.schema import LawArgument, Model, RpmTime, TableArgument
-from mechloop.model.signals import CsvTable, read_csv_table
+from mechloop.model.signals import CsvTable, IntermediateArgument, read_csv_table
 from mechloop.model.tables import fill_table
 from mechloop.model.units import Kind, to_si
 
@@ -81,14 +81,17 @@ def model_time(model: Model) -> Signal | None:
 
 
 @np.errstate(over="ignore", invalid="ignore", divide="ignore")  # overflow: a chain break
-def evaluate_signal(spec: TableArgument | LawArgument | CsvTable, model: Model, kind: Kind,
-                    unit: str, time: Signal | None) -> Signal:
+def evaluate_signal(spec: TableArgument | LawArgument | CsvTable | IntermediateArgument,
+                    model: Model, kind: Kind, unit: str, time: Signal | None) -> Signal:
     """A table or law of the model (an argument, a load) in SI over all positions, with its
     derivatives with respect to the model clock: time when the model has one, else the
     position number."""
     n = model.positions
     if isinstance(spec, CsvTable):  # built in code: load_model reads these when loading
         spec = TableArgument(**read_csv_table(spec.model_dump(), Path.cwd()))
+    if isinstance(spec, IntermediateArgument):  # held at its first value, never moving
+        q0 = to_si(spec.intermediate.start, kind, unit)
+        return Signal(np.full(n + 1, q0), np.zeros(n + 1), np.zeros(n + 1))
     if isinstance(spec, LawArgument):
         (k0, v0), (k1, v1) = spec.start, spec.end
         q0, q1 = to_si(v0, kind, unit), to_si(v1, kind, unit)

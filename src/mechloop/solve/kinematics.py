@@ -92,6 +92,11 @@ def _is_zero(term: Array | float) -> bool:
     return np.isscalar(term) and term == 0
 
 
+def _is_one(term: Array | float) -> bool:
+    """A scale that is exactly the scalar 1 (a rigid link)."""
+    return np.isscalar(term) and term == 1
+
+
 def unwrap_angles(angle: Array, ok: NDArray[np.bool_]) -> Array:
     """Make an angle continuous along positions (last axis), starting in [0, 2π).
 
@@ -156,7 +161,10 @@ class _Setup:
     """What every block of a solve shares: the compiled roles of all parameters.
 
     Constant values and link deltas are floats, or arrays shaped ``(D, 1)`` when they
-    differ between candidate designs.
+    differ between candidate designs.  A linked parameter is
+    ``scales[name] · root + deltas[name]`` (SI): ``scales`` holds the composed ratio of
+    every link name (a float, 1.0 for a rigid link; a ``(D, 1)`` array if it ever differs
+    between designs), ``deltas`` the composed constant.
     """
 
     structure: Structure
@@ -166,11 +174,17 @@ class _Setup:
     deltas: dict[str, Value]
     constant: set[str]
     varying: list[str]
+    scales: dict[str, Value] = _field(default_factory=dict)
     #: columns from this one on are arbitrary inputs (solve_designs_at), not positions in
     #: sequence; a coupled block solves each from the regular column ``extra_start``
     #: ``(D, K)`` (the nearest position by argument 1)
     n_regular: int | None = None
     extra_start: NDArray[np.int64] | None = None
+
+    def link_value(self, name: str, root: Value) -> Value:
+        """The value of linked parameter ``name`` given its root's value (SI)."""
+        scale = self.scales.get(name, 1.0)
+        return (root if _is_one(scale) else scale * root) + self.deltas[name]
 
 
 def _setup(model: Model, structure: Structure, args: dict[int, Signal],
@@ -200,19 +214,25 @@ def _setup(model: Model, structure: Structure, args: dict[int, Signal],
                          "and argument offsets can differ between designs",
                          "vary a parameter whose role is a number, a link or an argument")
     deltas: dict[str, Value] = {}
+    scales: dict[str, Value] = {}
     for name in structure.links:
+        # p_name = scale·p_current + total; each step p_current = k·p_next + d
         total: Value = 0.0
+        scale: Value = 1.0
         current = name
         while isinstance(roles[current], LinkRole):
-            total = total + own(current, roles[current].delta)
+            step = own(current, roles[current].delta)
+            total = total + (step if _is_one(scale) else scale * step)
+            scale = scale * float(roles[current].ratio)
             current = roles[current].link
         deltas[name] = total
+        scales[name] = scale
     constant = set(constants) | {n for n, c in structure.links.items()
                                  if c.root in constants}
     varying = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"
                if f"{letter}{n}" not in constant]
     return _Setup(structure, structure.ordered(), constants, driven, deltas, constant,
-                  varying)
+                  varying, scales)
 
 
 @dataclass
@@ -254,19 +274,26 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
                         if derivatives else _Param(sig.value[lo:hi] + offset, None, None))
 
     def resolve(name: str) -> _Param | None:
-        """The parameter, following links once their root is known."""
+        """The parameter, following links once their root is known: ``k·root + Δ``
+        (``setup.scales``, ``setup.deltas``), its rate and acceleration ``k`` times the
+        root's; with ``k = 1`` the cosine and sine come from the root's by rotation."""
         if name in params:
             return params[name]
         chain = structure.links.get(name)
         if chain is None or chain.root not in params:
             return None
         root = params[chain.root]
-        delta = deltas[name]
-        param = _Param(root.value + delta, root.rate, root.accel)
-        if name[0] == "a":
-            rc, rs = root.trig()
-            cd, sd = np.cos(delta), np.sin(delta)
-            param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+        delta, scale = deltas[name], setup.scales.get(name, 1.0)
+        if _is_one(scale):
+            param = _Param(root.value + delta, root.rate, root.accel)
+            if name[0] == "a":
+                rc, rs = root.trig()
+                cd, sd = np.cos(delta), np.sin(delta)
+                param.cos, param.sin = rc * cd - rs * sd, rs * cd + rc * sd
+        else:  # a transmission: value, rate and acceleration scale by the ratio
+            param = _Param(scale * root.value + delta,
+                           None if root.rate is None else scale * root.rate,
+                           None if root.accel is None else scale * root.accel)
         params[name] = param
         return param
 
@@ -312,7 +339,8 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
     return block
 
 
-def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) -> Results:
+def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
+          memory_checked: bool = False) -> Results:
     """Solve a model for positions, velocities and accelerations at every position.
 
     With ``analogs_of=k`` the derivatives are the analogs with respect to argument ``k``
@@ -321,13 +349,16 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
 
     The positions are processed in blocks of ``block`` (all contours of a block at once,
     every operation vectorized over the block); results do not depend on ``block``.
+    ``memory_checked=True``: the caller has checked that the solve fits in memory (the
+    dynamics, for all it needs).
 
     Returns :class:`~mechloop.solve.results.Results`; raises
     :class:`~mechloop.errors.ModelError` if the model is invalid and
     :class:`~mechloop.errors.SolveError` if its derivatives are undefined.
     """
     structure = require_valid(model)
-    require_memory(model)
+    if not memory_checked:
+        require_memory(model)
     n_pos = model.positions + 1
     time = model_time(model)
     if analogs_of is not None:
@@ -341,7 +372,6 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
         args = model_arguments(model, time)
 
     setup = _setup(model, structure, args)
-    deltas = setup.deltas
     out = {name: (np.empty(n_pos), np.empty(n_pos), np.empty(n_pos))
            for name in setup.varying}
     no_solution = {c.number: np.zeros(n_pos, dtype=bool) for c in setup.ordered}
@@ -398,7 +428,8 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None) ->
     zero = np.broadcast_to(0.0, (n_pos,))
     for name in setup.constant:
         root = structure.links[name].root if name in structure.links else name
-        value = setup.constants[root] + deltas.get(name, 0.0)
+        value = (setup.link_value(name, setup.constants[root]) if name in structure.links
+                 else setup.constants[root])
         values[name], rates[name], accels[name] = np.broadcast_to(value, (n_pos,)), zero, zero
     arg_kinds = {k: argument_kind(model, k) for k in model.arguments}
     between = _breaks_between(model, setup, values, broken, args, arg_kinds)
@@ -508,7 +539,7 @@ def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
                 value[...] = unwrap_angles(value, np.isfinite(value))
     for name, chain in setup.structure.links.items():
         if name in values and chain.root in values:
-            values[name][...] = values[chain.root] + setup.deltas[name]
+            values[name][...] = setup.link_value(name, values[chain.root])
 
 
 def _solve_contour(info: ContourInfo, params: dict[str, _Param], resolve,

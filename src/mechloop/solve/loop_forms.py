@@ -96,6 +96,32 @@ def least_margin(loop: CrankLoop, lo: Array, hi: Array) -> Array:
     return np.where(np.isfinite(margin), margin, -1.0)
 
 
+def turn_share(loop: CrankLoop, threshold: float) -> tuple[NDArray[np.bool_], Array]:
+    """Over a whole turn of the crank: whether the margin of ``loop`` stays above
+    ``threshold`` everywhere, and the share of the turn where it does not, ``(D,)`` each
+    (closed form: ``arccos``; a loop that touches the threshold without a measurable share
+    counts 1/360).
+
+    Both loops run through ``base + amp·cos ψ`` over the turn and must stay strictly
+    inside ``(low, high)``: ``q`` between the roots of ``M(q) = threshold`` (four-bar), the
+    offset ``y`` within ``±|l|·√(1 − threshold)`` (slider-crank)."""
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        if loop.kind == "four-bar":
+            r1, r2 = np.abs(loop.r1), np.abs(loop.r2)
+            base, amp = loop.k * loop.k + loop.c * loop.c, 2 * loop.k * loop.c
+            mid, half = r1 * r1 + r2 * r2, 2 * r1 * r2 * np.sqrt(1.0 - threshold)
+            low, high, valid = mid - half, mid + half, (r1 > 0) & (r2 > 0)
+        else:
+            base, amp = loop.k * np.sin(loop.kappa - loop.guide), loop.c
+            high = np.abs(loop.r2) * np.sqrt(1.0 - threshold)
+            low, valid = -high, high > 0
+        turns = (high > base + amp) & (low < base - amp) & valid
+        above = np.arccos(np.clip((high - base) / amp, -1.0, 1.0)) / np.pi
+        below = 1.0 - np.arccos(np.clip((low - base) / amp, -1.0, 1.0)) / np.pi
+    share = np.where(turns, 0.0, np.nan_to_num(np.clip(above + below, 0, 1), nan=1.0))
+    return turns, np.where(~turns & (share == 0), 1.0 / 360, share)
+
+
 def lost_intervals(loop: CrankLoop, design: int, lo: float, hi: float, threshold: float
                    ) -> list[tuple[float, float]]:
     """The intervals of the argument in ``[lo, hi]`` where the margin of ``loop`` is at most

@@ -273,10 +273,12 @@ def _recognize_point(model: Model, problem, task, number: int, crank: int, coupl
         start = contour.start
         starts_at_crank = getattr(start, "tail", None) == crank
         copies = (isinstance(first.r, LinkRole) and first.r.link == f"r{crank}"
-                  and isinstance(first.a, LinkRole) and first.a.link == f"a{crank}")
+                  and isinstance(first.a, LinkRole) and first.a.link == f"a{crank}"
+                  and first.r.ratio == 1 and first.a.ratio == 1)
         rest = vs[1: vs.index(point.head) + 1]
         turns = all(isinstance(model.vectors[v].a, LinkRole)
                     and model.vectors[v].a.link == f"a{coupler}"
+                    and model.vectors[v].a.ratio == 1
                     and not is_function(model.vectors[v].r)
                     and not isinstance(model.vectors[v].r, LinkRole | ArgumentRole)
                     for v in rest)

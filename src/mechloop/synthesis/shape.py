@@ -214,7 +214,8 @@ def place_model(model: Model, a: complex, b: complex) -> Model:
     """``model`` moved by the similarity ``w = a·z + b`` (SI): every length times
     ``|a|`` (constants and the deltas of links), every absolute angle plus ``arg a``
     (constant angles and the offsets of driven angles; a link's delta is relative and
-    stays), the fixed starts of contours mapped, a start at the origin moved to ``b``.
+    stays, unless the link has a ratio k ≠ 1: its delta gains (1 − k)·arg a), the fixed
+    starts of contours mapped, a start at the origin moved to ``b``.
     The synthesis task is kept as written; loads and dynamic data are not moved."""
     scale, turn = abs(a), float(np.angle(a))
     length = unit_factor(model.units.length, "length")
@@ -234,6 +235,8 @@ def place_model(model: Model, a: complex, b: complex) -> Model:
             out["r"] = number(r, "length") * scale
         if isinstance(al, ArgumentRole):
             out["a"]["offset"] = number(al.offset, "angle") + turn / angle
+        elif isinstance(al, LinkRole) and al.ratio != 1:  # k(a + t) + d' = (k a + d) + t
+            out["a"]["delta"] = number(al.delta, "angle") + (1 - al.ratio) * turn / angle
         elif isinstance(al, int | float) or (isinstance(al, str)
                                              and al.strip() != "function"):
             out["a"] = number(al, "angle") + turn / angle

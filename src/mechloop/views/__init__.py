@@ -11,6 +11,8 @@ file); :func:`mechloop.views.figure.save_figure` writes PNG, SVG or PDF atomical
 * ``curves`` — parameters, combinations, angle differences, increments;
 * ``dynamics`` — reduced characteristics, balancing loads, reactions, hodographs,
   the summary table, machine motion;
+* ``motion`` — the motion in time (:class:`~mechloop.dynamics.simulate.Simulation`):
+  angle, speed, acceleration over time and the phase portrait;
 * ``formula`` — the structure and parametric formulas drawn;
 * ``report`` — the course-project report (PDF, English and Russian).
 

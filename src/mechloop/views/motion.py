@@ -1,0 +1,66 @@
+"""Views of a machine's motion in time (:class:`~mechloop.dynamics.simulate.Simulation`):
+the input's angle, speed and acceleration over time, and the phase portrait ω(q)."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from mechloop.dynamics.motors import RPM
+from mechloop.dynamics.simulate import Simulation
+from mechloop.views.figure import ViewError, new_figure
+
+
+def plot_simulation(sim: Simulation, *, title: str = "") -> Figure:
+    """Four panels: the input's angle (turns), speed (rpm) and acceleration (rad/s²) over
+    time, with the steady state and the motor's switch-off marked, and the phase portrait
+    — the speed over the angle within the cycle, one line per cycle, darker as time goes
+    on (lines with gid ``'q'``, ``'omega'``, ``'epsilon'``, ``'phase'``)."""
+    if not isinstance(sim, Simulation):
+        raise ViewError(f"expected a Simulation, got {type(sim).__name__}",
+                        "pass the result of mechloop.simulate(...)")
+    figure = new_figure(10.0, 7.5)
+    axes = figure.subplots(2, 2)
+    t = sim.time
+    panels = ((axes[0, 0], sim.q / (2 * np.pi), "q", "input angle [turns]"),
+              (axes[0, 1], sim.omega / RPM, "omega", "speed n [rpm]"),
+              (axes[1, 0], sim.epsilon, "epsilon", "acceleration ε [rad/s²]"))
+    for ax, values, gid, label in panels:
+        ax.plot(t, values, color="C0", linewidth=1.0, gid=gid)
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+        for event in sim.events[1:]:
+            if event.kind == "motor off":
+                ax.axvline(event.t, color="C3", linestyle="--", linewidth=0.8,
+                           label="motor off")
+        if sim.steady_time is not None:
+            ax.axvline(sim.steady_time, color="C2", linestyle=":", linewidth=1.0,
+                       label=f"steady at {sim.steady_time:.4g} s")
+    if sim.steady_time is not None or any(e.kind == "motor off" for e in sim.events):
+        axes[0, 1].legend(loc="best", fontsize="small")
+    _phase(axes[1, 1], sim)
+    figure.suptitle(title or f"motion in time — ended: {sim.end.kind} at "
+                             f"{sim.end.t:.4g} s")
+    return figure
+
+
+def _phase(ax, sim: Simulation) -> None:
+    """ω over the angle within the cycle (degrees), one line per cycle."""
+    machine = sim.machine
+    t = np.linspace(0.0, sim.end.t, max(2000, 50 * (sim.cycle_start.size + 1)))
+    q, w = sim.state(t)
+    if machine.periodic:
+        turns, inside = machine.wrap(q)
+        cuts = np.flatnonzero(np.diff(turns)) + 1
+    else:
+        inside, cuts = q, np.empty(0, dtype=int)
+    pieces = np.split(np.arange(t.size), cuts)
+    colors = np.linspace(0.25, 1.0, len(pieces))
+    for piece, shade in zip(pieces, colors, strict=True):
+        ax.plot(np.degrees(inside[piece]), w[piece] / RPM, color=(0.0, 0.2, 0.6, shade),
+                linewidth=0.9, gid="phase")
+    ax.set_xlabel("input angle within the cycle [deg]")
+    ax.set_ylabel("speed n [rpm]")
+    ax.set_title("phase portrait (later cycles darker)", fontsize="medium")
+    ax.grid(True, alpha=0.3)
