@@ -30,7 +30,8 @@ from mechloop.solve import blocks
 from mechloop.solve.designs import solve_designs, solve_designs_at
 
 EXAMPLES = ["four_bar", "crank_slider", "six_bar", "v_engine", "hydraulic_rocker",
-            "roof_support", "single_cylinder_engine", "log10_function_generator"]
+            "roof_support", "single_cylinder_engine", "log10_function_generator",
+            "gear_train", "planetary_reducer"]
 
 
 def _ang(p) -> float:
