@@ -10,7 +10,10 @@
   least-squares on the raw loop equations of the whole model from many starts):
   positions, every assembly at position 0, velocities and accelerations by finite
   differences, and the first break where the oracle, following the branch in fine
-  steps, loses it.
+  steps, loses it;
+* designs ``(D, P)`` equal one solve each, extra inputs start from the nearest position,
+  results do not depend on the blocks of positions, and the design tangents through the
+  block Jacobian equal finite differences.
 """
 
 from __future__ import annotations
@@ -30,7 +33,8 @@ from mechloop.solve import blocks
 from mechloop.solve.designs import solve_designs, solve_designs_at
 
 EXAMPLES = ["four_bar", "crank_slider", "six_bar", "v_engine", "hydraulic_rocker",
-            "roof_support", "single_cylinder_engine", "log10_function_generator"]
+            "roof_support", "single_cylinder_engine", "log10_function_generator",
+            "gear_train", "planetary_reducer"]
 
 
 def _ang(p) -> float:

@@ -175,16 +175,16 @@ class _Setup:
     constant: set[str]
     varying: list[str]
     scales: dict[str, Value] = _field(default_factory=dict)
-
-    def link_value(self, name: str, root: Value) -> Value:
-        """The value of linked parameter ``name`` given its root's value (SI)."""
-        scale = self.scales.get(name, 1.0)
-        return (root if _is_one(scale) else scale * root) + self.deltas[name]
     #: columns from this one on are arbitrary inputs (solve_designs_at), not positions in
     #: sequence; a coupled block solves each from the regular column ``extra_start``
     #: ``(D, K)`` (the nearest position by argument 1)
     n_regular: int | None = None
     extra_start: NDArray[np.int64] | None = None
+
+    def link_value(self, name: str, root: Value) -> Value:
+        """The value of linked parameter ``name`` given its root's value (SI)."""
+        scale = self.scales.get(name, 1.0)
+        return (root if _is_one(scale) else scale * root) + self.deltas[name]
 
 
 def _setup(model: Model, structure: Structure, args: dict[int, Signal],

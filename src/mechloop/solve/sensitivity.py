@@ -88,22 +88,24 @@ def position_tangents(model: Model, values: Mapping[str, Array],
         params[name] = _Param(np.asarray(values[name])[None], tangent, 0.0)
         return params[name]
 
-    def chain_seed(name: str) -> Array:
-        """The tangent of a link's own deltas along its chain."""
+    def chain_seed(name: str) -> tuple[Array, float]:
+        """The tangent of a link's own deltas along its chain (each scaled by the ratios
+        before it, as in ``resolve``) and the chain's ratio to its root."""
         total: Array = zero
+        factor = 1.0
         current = name
         while isinstance(role := param_role(model, current), LinkRole):
-            total = total + seed(current)
+            total = total + factor * seed(current)
+            factor *= role.ratio
             current = role.link
-        return total
+        return total, factor
 
-    coupled = {n for b in structure.blocks if b.coupled for n in b.contours}
-    for block in structure.blocks:
+    by_number = {c.number: c for c in structure.contours}
+    for block in structure.blocks:  # in solving order
         if block.coupled:
             _block_tangents(block, structure, params, resolve, values, chain_seed, full)
-    for info in structure.ordered():
-        if info.number in coupled:
             continue
+        info = by_number[block.contours[0]]
         u1, u2 = info.functions
         resolve_known(info, resolve)
         for name in (u1, u2):
@@ -140,14 +142,17 @@ def _block_tangents(block, structure, params: dict, resolve, values: Mapping[str
                                               (f"a{number}", a, a_rate, a_scale)):
                 chain = structure.links.get(name)
                 vals.append(np.asarray(values[name]))
-                scales.append(1.0)  # link ratios: the scale of the link (1 for now)
                 if name in index:
                     sources.append(index[name])
                     rates.append(0.0)
+                    scales.append(1.0)
                 elif chain is not None and chain.root in index:
                     sources.append(index[chain.root])
-                    rates.append(chain_seed(name))
+                    delta_tangent, ratio = chain_seed(name)
+                    rates.append(delta_tangent)
+                    scales.append(ratio)
                 else:
+                    scales.append(1.0)
                     sources.append(-1)
                     param = resolve(name)
                     if param is None:
