@@ -46,7 +46,8 @@ def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     structure, problems = analyze(model)
     problems = _check_units(model) + problems
     problems += _check_arguments(model)
-    problems += check_intermediate(model, structure)
+    problems += check_intermediate(model, structure,
+                                   {k: argument_kind(model, k) for k in model.arguments})
     problems += _check_time(model)
     problems += _check_loads(model)
     problems += check_synthesis(model)

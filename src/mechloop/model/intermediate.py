@@ -12,6 +12,7 @@ of that family (e.g. a cam profile, the envelope of the roller circles) is solve
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from pydantic import Field
@@ -22,6 +23,7 @@ from mechloop.model.signals import IntermediateArgument, _Frozen
 if TYPE_CHECKING:
     from mechloop.model.schema import Model
     from mechloop.model.structure import Structure
+    from mechloop.model.units import Kind
 
 
 class Envelope(_Frozen):
@@ -72,11 +74,12 @@ def dependents(model: Model, structure: Structure, number: int
     return frozenset(reached), frozenset(contours)
 
 
-def check_intermediate(model: Model, structure: Structure) -> list[Problem]:
+def check_intermediate(model: Model, structure: Structure, kinds: Mapping[int, Kind]
+                       ) -> list[Problem]:
     """Problems of the intermediate arguments and the envelopes: at most one intermediate
     argument, not the first argument (the motion the derivatives follow), a sweep of
-    distinct ends, and envelopes of points that depend on it."""
-    from mechloop.model.check import argument_kind
+    distinct ends, and envelopes of points that depend on it.  ``kinds`` gives each
+    argument's kind ('length' or 'angle', from the parameters it drives)."""
     from mechloop.model.units import UnitProblem, to_si
 
     problems: list[Problem] = []
@@ -95,7 +98,7 @@ def check_intermediate(model: Model, structure: Structure) -> list[Problem]:
                                 "argument (e.g. 1) and sweep a higher-numbered one"))
     for k in numbers:
         arg = model.arguments[k]
-        kind = argument_kind(model, k)
+        kind = kinds[k]
         unit = arg.unit or getattr(model.units, kind)
         ends = []
         for key, value in (("from", arg.intermediate.start), ("to", arg.intermediate.to)):
