@@ -15,26 +15,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
-from pydantic import Field
-
 from mechloop.errors import Problem
-from mechloop.model.signals import IntermediateArgument, _Frozen
+from mechloop.model.signals import IntermediateArgument
 
 if TYPE_CHECKING:
     from mechloop.model.schema import Model
     from mechloop.model.structure import Structure
     from mechloop.model.units import Kind
-
-
-class Envelope(_Frozen):
-    """The envelope of the curves that the end of the chain ``vectors`` (laid end to end
-    from the origin) draws over the intermediate argument, one curve per position."""
-
-    name: str = Field(min_length=1, description="name of the envelope (tables, plots)")
-    vectors: list[int] = Field(min_length=1, description="vector numbers: the point is "
-                               "the end of these vectors laid end to end from the origin")
-    argument: int | None = Field(None, ge=1, description="the intermediate argument swept "
-                                 "(default: the model's only one)")
 
 
 def intermediate_numbers(model: Model) -> list[int]:

@@ -36,11 +36,11 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
-from mechloop.model.intermediate import Envelope
 from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
     Argument,
+    Envelope,
     IntermediateArgument,
     LawArgument,
     LawName,

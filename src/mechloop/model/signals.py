@@ -263,3 +263,14 @@ def read_csv_table(spec: dict[str, Any], base: Path) -> dict[str, Any]:
     if spec.get("unit") is not None:
         out["unit"] = spec["unit"]
     return out
+
+
+class Envelope(_Frozen):
+    """The envelope of the curves that the end of the chain ``vectors`` (laid end to end
+    from the origin) draws over the intermediate argument, one curve per position."""
+
+    name: str = Field(min_length=1, description="name of the envelope (tables, plots)")
+    vectors: list[int] = Field(min_length=1, description="vector numbers: the point is "
+                               "the end of these vectors laid end to end from the origin")
+    argument: int | None = Field(None, ge=1, description="the intermediate argument swept "
+                                 "(default: the model's only one)")
