@@ -223,20 +223,21 @@ def test_bad_ratios_are_located_with_a_fix(tmp_path, ratio, words, hint) -> None
 
 def test_a_ratio_between_kinds_and_onto_a_solved_angle_are_refused(tmp_path) -> None:
     """A length linked to an angle (with a ratio or not) is refused where it is written;
-    an angle linked with a ratio to an angle that a contour solves too (a solved angle
-    is known up to whole turns, which a ratio would scale)."""
+    an angle linked with a ratio to an angle its own coupled block solves (Newton's
+    unknown is not kept continuous inside the iteration).  A ratio onto an angle an
+    earlier contour solves is built (tests/test_ratio_solved_angles.py)."""
     problems, _ = _model_problems(tmp_path, PAIR.replace("3: {r: 50,",
                                                          "3: {r: {link: a1, ratio: 2},"))
     assert any(p.path == ("vectors", 3, "r") and "same kind" in p.message
                and "link to r1" in p.hint for p in problems)
     text = PAIR.replace("2: {r: 70, a: 180, name: frame}",
                         "2: {r: 70, a: 180, name: frame}\n"
-                        "  5: {r: 10, a: {link: a4, ratio: 2}}\n"
-                        "  6: {r: function, a: function}") + "  - vectors: [5, 6]\n"
+                        "  5: {r: 10, a: {link: a4, ratio: 2}}").replace(
+        "vectors: [1, 4, 3, 2] ", "vectors: [1, 4, 3, 2, 5]")
     problems, _ = _model_problems(tmp_path, text)
     (problem,) = problems
     assert problem.path == ("vectors", 5, "a", "ratio")
-    assert "contour 1 solves" in problem.message and "argument" in problem.hint
+    assert "same block as contour 1" in problem.message and "earlier contour" in problem.hint
 
 
 def test_a_ratio_is_refused_as_a_design_variable(tmp_path) -> None:

@@ -275,12 +275,12 @@ def _unwrap(setup: _Setup, values: dict[str, Array]) -> None:
     positions, then re-derive the linked ones (as the ordinary solve does)."""
     for info in setup.ordered:
         for name in info.functions:
-            if name[0] == "a" and name in values:
+            if name[0] == "a" and name in values and name not in setup.carried:
                 value = values[name]
                 value[...] = unwrap_angles(value, np.isfinite(value))
     for name, chain in setup.structure.links.items():
         if name in values and chain.root in values:
-            values[name][...] = values[chain.root] + setup.deltas[name]
+            values[name][...] = setup.link_value(name, values[chain.root])
 
 
 @dataclass
