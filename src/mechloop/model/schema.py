@@ -126,8 +126,10 @@ class LinkRole(_Frozen):
     A second source (``α_p = k·α_H + m·α_1 + Δ``) is needed only by a differential, with
     two inputs; it would turn every link chain from one root into a sum over roots for
     every reader of links (solve, designs, existence, sensitivities, dynamics), and is not
-    part of the format.  An angle linked with a ratio ≠ 1 must come (through its chain)
-    from an argument or a constant: a solved angle is known only up to whole turns.
+    part of the format.  An angle linked with a ratio ≠ 1 to an angle a contour solves
+    (a gear on a rocker, a coupler or a driven crank) follows that angle continuously,
+    whole turns included, from position 0 where it lies in [0, 2π); the link may not
+    point into its own coupled block.
     """
 
     link: ParamName
