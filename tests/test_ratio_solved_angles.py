@@ -48,7 +48,7 @@ def geared_four_bar(crank: float, coupler: float, rocker: float, frame: float, *
                     7: {"r": r2, "a": {"link": "a3", "ratio": k, "delta": delta}},
                     8: {"r": r1 + r2, "a": 180}},
         "contours": [{"vectors": [1, 2, 3, 4], "variant": variant},
-                     {"vectors": [5, 6, 7, 8]}]})
+                     {"vectors": [5, 6, 7, 8], "start": {"tail": 4}}]})
 
 
 def closed_form_a3(theta: np.ndarray, crank, coupler, rocker, frame, sign: float,
