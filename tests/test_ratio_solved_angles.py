@@ -182,3 +182,30 @@ def test_random_geared_crank_rockers(crank, coupler, rocker, frame, k, delta, st
     model = geared_four_bar(*dims, k=k, delta=delta, start=start, sweep=720, n=120,
                             variant=variant)
     _check(model, dims, k, delta, atol=1e-10)
+
+
+def test_between_positions_takes_the_turns_from_the_samples() -> None:
+    """The existence check's solve between positions (no regular positions there) takes
+    a ratio-scaled angle's turns from the sampled solve interpolated at the fractional
+    position: at the midpoints it equals a solve at twice the positions."""
+    from mechloop.solve.between import _solve_at, _turns_at
+    from mechloop.solve.existence import ExistenceCheck
+
+    dims = (0.3, 0.35, 0.4, 0.1)
+    model = geared_four_bar(*dims, k=-0.4, n=90)
+    one = solve(model)
+    t = np.arange(90.0)[None, :] + 0.5
+    inputs = np.interp(t, np.arange(91), one.arguments[1])
+    turns = {"a3": one.value("a3")[None, :]}
+    values, broken = _solve_at(ExistenceCheck(model), {}, inputs, _turns_at(turns, t))
+    fine = solve(geared_four_bar(*dims, k=-0.4, n=180))
+    assert not broken.any()
+    for name in ("a3", "a7", "r6"):  # a3 continuous, so a7 = k·a3 + Δ is right
+        np.testing.assert_allclose(values[name][0], fine.value(name)[1::2], rtol=0,
+                                   atol=1e-12)
+    # an angle no ratio scales stays as atan2 gives it here (whole turns do not matter)
+    step = values["a6"][0] - fine.value("a6")[1::2]
+    np.testing.assert_allclose(np.remainder(step + 1, 2 * np.pi) - 1, 0.0, atol=1e-12)
+    # without the samples the turns are unknown: NaN, never a wrong whole turn
+    bare, _ = _solve_at(ExistenceCheck(model), {}, inputs)
+    assert np.isnan(bare["a7"]).all()

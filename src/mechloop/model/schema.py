@@ -36,6 +36,7 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
+from mechloop.model.gearing import GearMesh
 from mechloop.model.intermediate import Envelope
 from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
@@ -243,6 +244,9 @@ class Model(_Frozen):
         "the ground; vectors not listed and fully constant belong to it)")
     joints: dict[str, Joint] | None = Field(
         None, description="kinematic pairs by name; inferred from the contours when absent")
+    gears: dict[str, GearMesh] = Field(
+        default_factory=dict, description="gear meshes (higher pairs) by name, for the "
+        "force analysis: bodies, pitch point, pressure angle")
     forces: list[Force] = Field(default_factory=list, description="external forces")
     moments: list[Moment] = Field(default_factory=list, description="external moments")
     gravity: Gravity | None = Field(None, description="gravity (off when absent)")

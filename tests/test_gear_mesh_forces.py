@@ -1,0 +1,116 @@
+"""Gear meshes in the force analysis (``gears:``, :mod:`mechloop.dynamics.meshes`): the
+gear pair of examples/gear_pair_dynamics.yaml — pinion z1 = 20 (R1 = 20 mm) driven,
+wheel z2 = 50 (R2 = 50 mm) under a load moment — against
+
+* the moment balance of each gear about its centre, with ε from finite differences in
+  time of the solved angles (not the solver's accelerations): ``M1 = J1·ε1 + F_t·R1`` and
+  ``F_t·R2 = M_load − J2·ε2``; at rest (the cycloidal law starts and ends at rest) and
+  with the inertia taken out the torque ratio is the gear ratio, ``M1/M_load = z1/z2``;
+* the line of action: radial ``|F_t|·tan 20°``, pushing the gears apart whichever the
+  sign of the load; the bearing reactions balance the mesh force (the centres are fixed);
+* the virtual-power balance ``M1·ω1 + M_load·ω2 = d/dt(½J1ω1² + ½J2ω2²)`` (the ideal mesh
+  does no work).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from oracles.dynamics import angle_second_derivative, first_derivative, time_step
+
+import mechloop
+from mechloop import ModelError, load_model
+from mechloop.dynamics.analysis import solve_dynamics
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "gear_pair_dynamics.yaml"
+R1, R2, J1, J2 = 0.020, 0.050, 1e-4, 4e-3
+TAN = math.tan(math.radians(20))
+
+
+def _solved(tmp_path, load: float = 20.0):
+    text = EXAMPLE.read_text().replace("value: 20,", f"value: {load},")
+    file = tmp_path / "pair.yaml"
+    file.write_text(text)
+    return solve_dynamics(load_model(file))
+
+
+@pytest.mark.parametrize("load", [20.0, -20.0])
+def test_gear_pair_moment_balance_and_line_of_action(tmp_path, load) -> None:
+    d = _solved(tmp_path, load)
+    kin, forces = d.kinematics, d.forces
+    h = time_step(d)
+    eps1 = angle_second_derivative(kin.value("a1"), h, periodic=False)
+    eps2 = angle_second_derivative(kin.value("a3"), h, periodic=False)
+    inner = slice(3, -3)  # the seven-point stencil's rows
+    mesh = forces.meshes["mesh"]
+    m1 = forces.balancing[1]
+    scale = abs(load)
+    # each gear about its centre (finite-difference ε)
+    np.testing.assert_allclose((m1 - J1 * eps1)[inner], (mesh.tangential * R1)[inner],
+                               rtol=0, atol=1e-7 * scale)
+    np.testing.assert_allclose((mesh.tangential * R2)[inner], (load - J2 * eps2)[inner],
+                               rtol=0, atol=1e-7 * scale)
+    # at rest the torque ratio is the gear ratio z1/z2
+    assert m1[0] == pytest.approx(load * 20 / 50, rel=1e-12)
+    assert m1[-1] == pytest.approx(load * 20 / 50, rel=1e-12)
+    np.testing.assert_allclose((m1 - J1 * kin.accel("a1")) / (load - J2 * kin.accel("a3")),
+                               20 / 50, rtol=1e-12)
+    # the line of action: radial part |Ft|·tan α, separating (wheel pushed along +X)
+    np.testing.assert_allclose(mesh.radial, np.abs(mesh.tangential) * TAN, rtol=1e-13)
+    np.testing.assert_allclose(mesh.force.real, np.abs(mesh.tangential) * TAN, rtol=1e-13)
+    np.testing.assert_allclose(mesh.force.imag, mesh.tangential, rtol=1e-13)
+    np.testing.assert_allclose(mesh.normal, np.abs(mesh.force), rtol=1e-13)
+    np.testing.assert_allclose(mesh.point, 0.02 + 0j, atol=1e-15)
+    # bearings: the centres stay, so each bearing carries the mesh force
+    wheel, pinion = forces.reactions["J0_2"], forces.reactions["J0_1"]
+    np.testing.assert_allclose(wheel.force, -mesh.force, rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(pinion.force, mesh.force, rtol=0, atol=1e-9 * scale)
+
+
+def test_gear_pair_virtual_power(tmp_path) -> None:
+    d = _solved(tmp_path)
+    kin = d.kinematics
+    h = time_step(d)
+    w1, w2 = kin.rate("a1"), kin.rate("a3")
+    energy = 0.5 * J1 * w1**2 + 0.5 * J2 * w2**2
+    power = d.forces.balancing[1] * w1 + 20.0 * w2
+    inner = slice(3, -3)
+    exact = J1 * w1 * kin.accel("a1") + J2 * w2 * kin.accel("a3")
+    np.testing.assert_allclose(power, exact, rtol=0, atol=1e-12 * np.abs(power).max())
+    # and against finite differences in time of the kinetic energy (36 positions: O(h⁶))
+    np.testing.assert_allclose(power[inner], first_derivative(energy, h, periodic=False)[inner],
+                               rtol=0, atol=1e-4 * np.abs(power).max())
+    # the mesh force does no work: its contact points move alike along the normal
+    mesh = d.forces.meshes["mesh"]
+    v1 = 1j * w1 * mesh.point  # pinion point at P about O1 = 0
+    v2 = 1j * w2 * (mesh.point - 0.07)  # wheel point at P about O2 = 70 mm
+    np.testing.assert_allclose(((np.conj(mesh.force) * (v2 - v1)).real), 0.0,
+                               atol=1e-12 * np.abs(power).max())
+
+
+def test_mesh_errors_are_located(tmp_path) -> None:
+    text = EXAMPLE.read_text()
+    file = tmp_path / "bad.yaml"
+    file.write_text(text.replace("bodies: [1, 2], at", "bodies: [1, 5], at"))
+    with pytest.raises(ModelError) as info:
+        solve_dynamics(load_model(file))
+    assert any(p.path[:3] == ("gears", "mesh", "bodies") for p in info.value.problems)
+    file.write_text(text.replace("pressure_angle: 20", "pressure_angle: 95"))
+    with pytest.raises(ModelError) as info:
+        solve_dynamics(load_model(file))
+    assert any(p.path[-1] == "pressure_angle" for p in info.value.problems)
+    # without the mesh the force analysis is not determinate
+    file.write_text(text.replace("gears:\n  mesh: {bodies: [1, 2], at: {vector: 2, along: "
+                                 "50}, pressure_angle: 20}\n", ""))
+    with pytest.raises(ModelError, match="not determinate") as info:
+        solve_dynamics(load_model(file))
+    assert "gears:" in info.value.problems[0].hint
+
+
+def test_old_models_have_no_meshes() -> None:
+    d = solve_dynamics(load_model(EXAMPLE.parent / "crank_slider_dynamics.yaml"))
+    assert d.forces.meshes == {} and d.mechanism.meshes == ()
+    assert isinstance(mechloop.Model, type)
