@@ -114,3 +114,73 @@ def test_old_models_have_no_meshes() -> None:
     d = solve_dynamics(load_model(EXAMPLE.parent / "crank_slider_dynamics.yaml"))
     assert d.forces.meshes == {} and d.mechanism.meshes == ()
     assert isinstance(mechloop.Model, type)
+
+
+def _geared_rocker_data(load: float) -> dict:
+    """The crank-rocker of tests/test_ratio_solved_angles.py (crank 0.1, coupler 0.3,
+    rocker 0.25, frame 0.3 m) driven at constant speed, its rocker carrying a pinion
+    (R1 = 50 mm) that meshes with a wheel (R2 = 125 mm, k = −0.4) on the frame, masses on
+    every link and a moment ``load`` on the wheel; SI units and degrees."""
+    from test_ratio_solved_angles import geared_four_bar
+
+    data = geared_four_bar(0.1, 0.3, 0.25, 0.3, k=-0.4, n=360, sweep=360.0).model_dump(
+        mode="python", exclude_none=True)
+    data["time"] = {"table": {0: 0.0, 360: 0.5}}
+    data["bodies"] = {
+        1: {"vectors": [1], "mass": 0.8, "inertia": 0.002, "center": {"vector": 1,
+                                                                      "share": 0.5}},
+        2: {"vectors": [2], "mass": 1.2, "inertia": 0.01, "center": {"vector": 2,
+                                                                     "share": 0.5}},
+        3: {"vectors": [3, 5], "mass": 1.5, "inertia": 0.02, "center": {"vector": 3,
+                                                                        "share": 0.7}},
+        4: {"vectors": [7], "mass": 4.0, "inertia": 0.03, "center": {"head": 7}}}
+    data["gears"] = {"mesh": {"bodies": [3, 4], "at": {"vector": 8, "along": 0.125}}}
+    data["moments"] = [{"body": 4, "value": load}]
+    return data
+
+
+@pytest.mark.parametrize("load", [15.0, -15.0])
+def test_geared_rocker_newton_euler_and_virtual_power(load) -> None:
+    """A gear on a linkage: the mesh force enters the rocker's equations, coupled to the
+    four-bar's.  Newton–Euler residuals of every body (the oracle's, with the mesh force
+    added: accelerations from finite differences in time of the positions) and the
+    virtual-power balance of the drive (Σ power of the loads = d/dt kinetic energy)."""
+    from oracles.dynamics import cross, lumped_masses, newton_euler, point_z, rows
+
+    data = _geared_rocker_data(load)
+    d = solve_dynamics(mechloop.Model.from_dict(data))
+    assert set(d.forces.meshes) == {"mesh"} and not d.forces.singular.any()
+    mesh = d.forces.meshes["mesh"]
+    take = rows(d, periodic=False)
+    origins = {}
+    for m in lumped_masses(data, d):
+        origins.setdefault(m.body, point_z(d, m.center)[take])
+    worst_f = worst_m = 0.0
+    for r in newton_euler(d, data):
+        f, mo = r.force.copy(), r.moment.copy()
+        for body, sign in ((mesh.mesh.bodies[1], 1.0), (mesh.mesh.bodies[0], -1.0)):
+            if body == r.body:
+                f += sign * mesh.force[take]
+                mo += cross(mesh.point[take] - origins[body], sign * mesh.force[take])
+        inner = slice(3, -3)
+        worst_f = max(worst_f, np.abs(f[inner]).max() / r.force_scale)
+        worst_m = max(worst_m, np.abs(mo[inner]).max() / r.moment_scale)
+    assert worst_f < 1e-7 and worst_m < 1e-7
+    # without the mesh force the wheel would not balance: the check can fail
+    wheel = next(r for r in newton_euler(d, data) if r.body == 4)
+    assert np.abs(wheel.moment[3:-3]).max() / wheel.moment_scale > 1e-3
+    # the radial part separates the gears whatever the sign of Ft
+    np.testing.assert_allclose(mesh.radial, np.abs(mesh.tangential) * TAN, rtol=1e-12)
+    # virtual power: the drive and the load against the kinetic energy's rate (solver
+    # velocities; the mesh and the pins do no work)
+    kin = d.kinematics
+    energy_rate = np.zeros(kin.broken.size)
+    for m in lumped_masses(data, d):
+        body = data["bodies"][m.body]
+        angle = f"a{body['vectors'][0]}"
+        s = d.placement.point(d.mechanism.masses[[x.body for x in d.mechanism.masses].index(
+            m.body)].center)
+        energy_rate += m.mass * (np.conj(s.v) * s.a).real + m.inertia * kin.rate(
+            angle) * kin.accel(angle)
+    power = d.forces.balancing[1] * kin.rate("a1") + load * kin.rate("a7")
+    np.testing.assert_allclose(power, energy_rate, rtol=0, atol=1e-9 * np.abs(power).max())
