@@ -71,7 +71,13 @@ def test_gear_pair_moment_balance_and_line_of_action(tmp_path, load) -> None:
 
 
 def test_gear_pair_virtual_power(tmp_path) -> None:
+    """The input moment by virtual power (a second method, which knows no mesh force)
+    equals the kinetostatic one; the power balance; the table's mesh columns."""
     d = _solved(tmp_path)
+    np.testing.assert_allclose(d.balancing_vp[1], d.forces.balancing[1], rtol=1e-12)
+    table = d.to_frame()
+    np.testing.assert_array_equal(table["Gmesh_t [N]"], d.forces.meshes["mesh"].tangential)
+    np.testing.assert_array_equal(table["Gmesh_n [N]"], d.forces.meshes["mesh"].normal)
     kin = d.kinematics
     h = time_step(d)
     w1, w2 = kin.rate("a1"), kin.rate("a3")
