@@ -209,3 +209,19 @@ def test_between_positions_takes_the_turns_from_the_samples() -> None:
     # without the samples the turns are unknown: NaN, never a wrong whole turn
     bare, _ = _solve_at(ExistenceCheck(model), {}, inputs)
     assert np.isnan(bare["a7"]).all()
+
+
+def test_an_envelope_through_a_ratio_scaled_solved_angle_is_refused() -> None:
+    """The envelope's points are solved each at its own position, without the turns a
+    ratio onto a solved angle needs: refused (not built), never a wrong whole turn."""
+    from pathlib import Path
+
+    from mechloop.solve.intermediate import solve_intermediate
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "cam_roller_follower.yaml"
+    data = mechloop.load_model(path).model_dump(mode="python", exclude_none=True)
+    data["vectors"][6] = {"r": 5.0, "a": {"link": "a4", "ratio": 2.0}}
+    data["vectors"][7] = {"r": "function", "a": "function"}
+    data["contours"].append({"vectors": [6, 7]})
+    with pytest.raises(SolveError, match="whole turns"):
+        solve_intermediate(mechloop.Model.from_dict(data))
