@@ -190,3 +190,39 @@ def test_geared_rocker_newton_euler_and_virtual_power(load) -> None:
             angle) * kin.accel(angle)
     power = d.forces.balancing[1] * kin.rate("a1") + load * kin.rate("a7")
     np.testing.assert_allclose(power, energy_rate, rtol=0, atol=1e-9 * np.abs(power).max())
+
+
+def test_internal_mesh_pushes_the_ring_outward() -> None:
+    """A pinion (R1 = 20 mm) inside a ring (R2 = 50 mm, internal teeth: ratio +z1/z2),
+    centres 30 mm apart, the pitch point on the pinion's far side from the ring's centre.
+    At rest (the law starts and ends at rest) M1 = −(z1/z2)·M_load; at every position each
+    gear's moment balance holds with the solver's ε; the radial force pushes the ring
+    outward at the pitch point and the pinion towards the ring's centre."""
+    r1, r2, e, load = 0.02, 0.05, 0.03, 12.0
+    model = mechloop.Model.from_dict({
+        "units": {"length": "m", "angle": "deg"}, "positions": 36,
+        "time": {"table": {0: 0.0, 36: 0.5}},
+        "arguments": {1: {"law": "cycloidal", "start": [0, 0], "end": [36, 360]}},
+        "vectors": {1: {"r": r1, "a": {"argument": 1}},
+                    4: {"r": "function", "a": "function"},
+                    3: {"r": r2, "a": {"link": "a1", "ratio": "20/50", "delta": 90}},
+                    2: {"r": e, "a": 180}},
+        "contours": [{"vectors": [1, 4, 3, 2]}],
+        "bodies": {1: {"vectors": [1], "mass": 0.5, "inertia": 1e-4, "center": {"tail": 1}},
+                   2: {"vectors": [3], "mass": 3.0, "inertia": 4e-3, "center": {"head": 3}}},
+        "gears": {"inner": {"bodies": [1, 2], "at": {"vector": 2, "along": e + r1},
+                            "ring": 2}},
+        "moments": [{"body": 2, "value": load}]})
+    d = solve_dynamics(model)
+    kin, forces = d.kinematics, d.forces
+    mesh = forces.meshes["inner"]
+    np.testing.assert_allclose(mesh.point, -r1 + 0j, atol=1e-15)
+    m1 = forces.balancing[1]
+    assert m1[0] == pytest.approx(-load * 20 / 50, rel=1e-12)
+    np.testing.assert_allclose(J2 * kin.accel("a3"), load + r2 * mesh.tangential, rtol=0,
+                               atol=1e-9 * load)
+    np.testing.assert_allclose(J1 * kin.accel("a1"), m1 - r1 * mesh.tangential, rtol=0,
+                               atol=1e-9 * load)
+    np.testing.assert_allclose(mesh.force.real, -np.abs(mesh.tangential) * TAN, rtol=1e-13)
+    assert (mesh.radial >= 0).all()
+    np.testing.assert_allclose(d.balancing_vp[1], m1, rtol=1e-12)
