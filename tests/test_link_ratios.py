@@ -223,20 +223,21 @@ def test_bad_ratios_are_located_with_a_fix(tmp_path, ratio, words, hint) -> None
 
 def test_a_ratio_between_kinds_and_onto_a_solved_angle_are_refused(tmp_path) -> None:
     """A length linked to an angle (with a ratio or not) is refused where it is written;
-    an angle linked with a ratio to an angle that a contour solves too (a solved angle
-    is known up to whole turns, which a ratio would scale)."""
+    an angle linked with a ratio to an angle its own coupled block solves (Newton's
+    unknown is not kept continuous inside the iteration).  A ratio onto an angle an
+    earlier contour solves is built (tests/test_ratio_solved_angles.py)."""
     problems, _ = _model_problems(tmp_path, PAIR.replace("3: {r: 50,",
                                                          "3: {r: {link: a1, ratio: 2},"))
     assert any(p.path == ("vectors", 3, "r") and "same kind" in p.message
                and "link to r1" in p.hint for p in problems)
     text = PAIR.replace("2: {r: 70, a: 180, name: frame}",
                         "2: {r: 70, a: 180, name: frame}\n"
-                        "  5: {r: 10, a: {link: a4, ratio: 2}}\n"
-                        "  6: {r: function, a: function}") + "  - vectors: [5, 6]\n"
+                        "  5: {r: 10, a: {link: a4, ratio: 2}}").replace(
+        "vectors: [1, 4, 3, 2] ", "vectors: [1, 4, 3, 2, 5]")
     problems, _ = _model_problems(tmp_path, text)
     (problem,) = problems
     assert problem.path == ("vectors", 5, "a", "ratio")
-    assert "contour 1 solves" in problem.message and "argument" in problem.hint
+    assert "same block as contour 1" in problem.message and "earlier contour" in problem.hint
 
 
 def test_a_ratio_is_refused_as_a_design_variable(tmp_path) -> None:
@@ -250,10 +251,11 @@ def test_a_ratio_is_refused_as_a_design_variable(tmp_path) -> None:
     assert "not a design variable" in problem.message and "vary a1" in problem.hint
 
 
-def test_structure_refuses_a_gear_mesh_between_bodies(tmp_path) -> None:
-    """Pinion and wheel as bodies: their mesh is a higher pair, which the structural
-    analysis does not count — refused at the ratio (the kinematics still solve), never
-    answered with the wheel as a link of its own mobility."""
+def test_structure_counts_a_gear_mesh_between_bodies(tmp_path) -> None:
+    """Pinion and wheel as bodies: their mesh is a higher pair, counted as p4 (W = 3·2 −
+    2·2 − 1 = 1, the one input), and replaced by its equivalent link with two revolute
+    pairs for the decomposition: L0(1) → L1(2,3), the equivalent four-bar O1 N1 N2 O2.
+    Never answered with the wheel as a link of its own mobility."""
     from mechloop.structure.analysis import analyze
 
     text = PAIR + ("bodies:\n"
@@ -262,11 +264,11 @@ def test_structure_refuses_a_gear_mesh_between_bodies(tmp_path) -> None:
     file = tmp_path / "m.yaml"
     file.write_text(text)
     model = load_model(file)
-    assert not solve(model).broken.any()
-    with pytest.raises(ModelError) as info:
-        analyze(model)
-    (problem,) = info.value.problems
-    assert problem.path == ("vectors", 3, "a", "ratio") and "higher pair" in problem.message
+    mob, dec = analyze(model)
+    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (2, 2, 1, 1, 1) and mob.ok
+    assert "gear mesh (ratio link) between bodies 1 and 2, ratio -0.4" in str(mob)
+    assert dec.formula == "L0(1) → L1(2,3)" and dec.mechanism_class == 2
+    assert any("replaced by its equivalent, link 3" in note for note in dec.notes)
 
 
 def _geared_rocker(ratio: float) -> mechloop.Model:

@@ -56,6 +56,9 @@ HAND = {
     # is a drive (not a link), pins O1, O2, A, B: n = 3, p5 = 4, W = 1; the shield held
     # by three binary members (two links and the driven leg) — the input group, class III.
     "roof_support_groups.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+    # pinion 1 and wheel 2 pinned to the frame, their mesh a higher pair: n = 2, p5 = 2,
+    # p4 = 1, W = 6 − 4 − 1 = 1; the mesh replaced by a link 3 with two pins, an RRR dyad
+    "gear_pair_dynamics.yaml": (2, 2, 1, 1, "L0(1) → L1(2,3)", 2),
 }
 
 WITHOUT_BODIES = {

@@ -120,6 +120,12 @@ class DynamicResults:
             for v in _vectors_at(self, reaction.pair):
                 angle = np.angle(reaction.force) - self.kinematics.value(f"a{v}")
                 cols[f"R{name}_to_a{v} [deg]"] = np.degrees(np.angle(np.exp(1j * angle)))
+        for name, mesh in self.forces.meshes.items():  # gear meshes (dynamics/meshes.py)
+            cols[f"G{name}_x [N]"] = mesh.force.real
+            cols[f"G{name}_y [N]"] = mesh.force.imag
+            cols[f"G{name}_t [N]"] = mesh.tangential
+            cols[f"G{name}_r [N]"] = mesh.radial
+            cols[f"G{name}_n [N]"] = mesh.normal
         cols["friction_loss [W]"] = self.forces.friction_loss
         cols["T [J]"] = self.kinetic_energy
         if self.cycle is not None:

@@ -19,6 +19,7 @@ and the solve repeated until the reactions stop changing (a fixed point; f·ρ/l
 from __future__ import annotations
 
 from dataclasses import dataclass
+from dataclasses import field as _field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -115,6 +116,8 @@ class ForceAnalysis:
     iterations: int
     unsettled: NDArray[np.bool_]
     segment_iterations: NDArray[np.int64] | None = None
+    #: the force of every gear mesh (:mod:`mechloop.dynamics.meshes`), by name
+    meshes: dict = _field(default_factory=dict)
 
     @property
     def friction_loss(self) -> Array:
@@ -221,6 +224,13 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
             put(col + 1, first, 0.0, None, 1.0, sign=-1.0)
             col += 2
         columns.append((pair.name, pair))
+    from mechloop.dynamics import meshes as gearing
+
+    mesh_cols = []  # one unknown per gear mesh: its tangential force
+    for mesh in mechanism.meshes:
+        p, u, t = gearing.directions(mesh, placement)
+        mesh_cols.append((mesh, col, p, u, t))
+        col += 1
     drive_cols = {}
     for drive in mechanism.drives:
         tail_body, head_body = drive.bodies
@@ -236,14 +246,26 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
         raise SolveError(f"force analysis has {col} unknowns for {size} equations")
 
     safe = ok.copy()
-    matrix[~safe] = np.eye(size)
     rhs[~safe] = 0.0
-    inverse, singular = _invert(matrix, safe)
+    minus = {mesh.name: np.zeros(n, dtype=bool) for mesh, *_ in mesh_cols}
+    for _ in range(3):  # the line of action of each mesh follows the sign of its force
+        for mesh, c, p, u, t in mesh_cols:
+            side = np.where(minus[mesh.name], -1.0, 1.0)
+            d = t + side * np.tan(mesh.pressure) * u
+            matrix[:, :, c] = 0.0
+            put(c, mesh.bodies[1], d, p)
+            put(c, mesh.bodies[0], d, p, sign=-1.0)
+        matrix[~safe] = np.eye(size)
+        inverse, singular = _invert(matrix, safe)
+        x = np.einsum("pij,pj->pi", inverse, rhs)
+        flips = {mesh.name: gearing.choose_sides(x[:, c]) & safe & ~singular
+                 for mesh, c, *_ in mesh_cols}
+        if all(np.array_equal(flips[k], minus[k]) for k in minus):
+            break
+        minus = flips
 
     def solve(b: Array) -> Array:
         return np.einsum("pij,pj->pi", inverse, b)
-
-    x = solve(rhs)
     with_friction = friction and any(p.friction > 0 for p in mechanism.pairs)
     iterations = 0
     losses = {p.name: np.zeros(n) for p in mechanism.pairs}
@@ -331,8 +353,16 @@ def kinetostatics(mechanism: Mechanism, placement: Placement, loads: Loads, *,
                                                 _nan(losses[pair.name], bad))
         c += 2
     balancing = {k: x[:, c] for k, c in drive_cols.items()}
+    mesh_forces = {}
+    for mesh, c, p, u, t in mesh_cols:
+        side = np.where(minus[mesh.name], -1.0, 1.0)
+        tangential = x[:, c]
+        radial = side * np.tan(mesh.pressure) * tangential
+        mesh_forces[mesh.name] = gearing.MeshForce(
+            mesh, p, tangential * t + radial * u, tangential, radial,
+            np.abs(tangential) / np.cos(mesh.pressure))
     return ForceAnalysis(reactions, balancing, singular, iterations, unsettled,
-                         None if segments is None else seg_iterations)
+                         None if segments is None else seg_iterations, mesh_forces)
 
 
 def _invert(matrix: Array, safe: NDArray[np.bool_]) -> tuple[Array, NDArray[np.bool_]]:

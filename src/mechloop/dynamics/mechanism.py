@@ -100,6 +100,8 @@ class Mechanism:
     pairs: tuple[Pair, ...]
     drives: tuple[Drive, ...]
     total_mass: float
+    #: gear meshes (higher pairs) of the model's ``gears:`` (:mod:`.meshes`)
+    meshes: tuple = ()
 
 
 def _si(value, kind, unit, path, problems) -> float:
@@ -185,8 +187,11 @@ def build_mechanism(model: Model, placement: Placement, *, determinate: bool = T
     drives = _drives(model, holds, member, problems)
     masses = _masses(model, placement.results, problems)
     moving = [b for b in model.bodies if b != 0]
+    from mechloop.dynamics.meshes import mesh_pairs
+
+    meshes = mesh_pairs(model, pairs, problems)
     if determinate and not problems:
-        unknowns = 2 * len(pairs) + len(drives)
+        unknowns = 2 * len(pairs) + len(drives) + len(meshes)
         if unknowns != 3 * len(moving):
             listed = "; ".join(f"{p.name} ({p.kind}, bodies {p.bodies[0]}-{p.bodies[1]})"
                                for p in pairs) or "none"
@@ -194,16 +199,26 @@ def build_mechanism(model: Model, placement: Placement, *, determinate: bool = T
             problems.append(Problem(
                 ("joints",) if model.joints is not None else ("bodies",),
                 f"the force analysis is not determinate: {len(moving)} moving bodies give "
-                f"{3 * len(moving)} equations, but {len(pairs)} lower pairs and "
+                f"{3 * len(moving)} equations, but {len(pairs)} lower pairs"
+                + (f", {len(meshes)} gear meshes" if meshes else "") + " and "
                 f"{len(drives)} drives give {unknowns} unknowns (joints {origin}: {listed})",
                 "name the kinematic pairs in joints: (revolute at a point, prismatic along "
                 "a vector), or check that every moving link is a body and every driven "
-                "vector belongs to one"))
+                "vector belongs to one"
+                + ("; name each gear mesh between bodies linked by a ratio in gears: "
+                   "(bodies, pitch point at, pressure_angle)" if _geared(model) else "")))
     if problems:
         raise ModelError(problems)
     total = sum(m.mass for m in masses)
     return Mechanism(bodies=frames, masses=tuple(masses), pairs=tuple(pairs),
-                     drives=tuple(drives), total_mass=total)
+                     drives=tuple(drives), total_mass=total, meshes=meshes)
+
+
+def _geared(model: Model) -> bool:
+    """Some body's angle is linked with a ratio ≠ 1 (a gear mesh the model may not name)."""
+    in_body = {v for body in model.bodies.values() for v in body.vectors}
+    return any(isinstance(model.vectors[v].a, LinkRole) and model.vectors[v].a.ratio != 1
+               for v in in_body if v in model.vectors)
 
 
 def _size(model: Model, placement: Placement) -> float:

@@ -36,6 +36,7 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
+from mechloop.model.gearing import GearMesh
 from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
@@ -126,8 +127,10 @@ class LinkRole(_Frozen):
     A second source (``α_p = k·α_H + m·α_1 + Δ``) is needed only by a differential, with
     two inputs; it would turn every link chain from one root into a sum over roots for
     every reader of links (solve, designs, existence, sensitivities, dynamics), and is not
-    part of the format.  An angle linked with a ratio ≠ 1 must come (through its chain)
-    from an argument or a constant: a solved angle is known only up to whole turns.
+    part of the format.  An angle linked with a ratio ≠ 1 to an angle a contour solves
+    (a gear on a rocker, a coupler or a driven crank) follows that angle continuously,
+    whole turns included, from position 0 where it lies in [0, 2π); the link may not
+    point into its own coupled block.
     """
 
     link: ParamName
@@ -241,6 +244,9 @@ class Model(_Frozen):
         "the ground; vectors not listed and fully constant belong to it)")
     joints: dict[str, Joint] | None = Field(
         None, description="kinematic pairs by name; inferred from the contours when absent")
+    gears: dict[str, GearMesh] = Field(
+        default_factory=dict, description="gear meshes (higher pairs) by name, for the "
+        "force analysis: bodies, pitch point, pressure angle")
     forces: list[Force] = Field(default_factory=list, description="external forces")
     moments: list[Moment] = Field(default_factory=list, description="external moments")
     gravity: Gravity | None = Field(None, description="gravity (off when absent)")

@@ -235,14 +235,6 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
                     continue
                 link_names.append(name)
                 root = links[name].root
-                if letter == "a" and links[name].scale != 1 and root in owner:
-                    problems.append(Problem(
-                        ("vectors", n, letter, "ratio"),
-                        f"{name} links to {root}, an angle that contour {owner[root]} "
-                        f"solves, with ratio {links[name].scale:g}: a solved angle is "
-                        "known only up to whole turns, which a ratio would scale",
-                        f"link {name} with a ratio to an argument or a constant (drive the "
-                        "gear train from the model's input), or use ratio 1"))
                 if root in owner:
                     needs.add(owner[root])  # its own contour too: a coupled block
                 elif is_function(param_role(model, root)):
@@ -256,9 +248,33 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
                                  arguments=tuple(arguments), links=tuple(link_names)))
 
     final, blocks = find_blocks(model, final, problems)
+    _ratio_inside_block(final, links, owner, problems)
     order = tuple(n for b in blocks for n in b.contours)
     return Structure(contours=tuple(final), order=order, links=links, owner=owner,
                      blocks=blocks), problems
+
+
+def _ratio_inside_block(infos: list[ContourInfo], links: dict[str, LinkChain],
+                        owner: dict[str, int], problems: list[Problem]) -> None:
+    """Refuse an angle linked with a ratio ≠ 1 to an angle solved in the same coupled
+    block (Newton's unknown would have to be continuous inside the iteration, which is
+    not built); a ratio onto an angle an earlier block solves is made continuous before
+    it is scaled (:mod:`mechloop.solve.turns`)."""
+    block_of = {info.number: info.block for info in infos}
+    for info in infos:
+        for name in info.links:
+            chain = links[name]
+            root = chain.root
+            if name[0] != "a" or chain.scale == 1 or root not in owner:
+                continue
+            if owner[root] == info.number or block_of.get(owner[root]) == info.block:
+                problems.append(Problem(
+                    ("vectors", int(name[1:]), "a", "ratio"),
+                    f"{name} links to {root} with ratio {chain.scale:g}, and {root} is "
+                    f"solved in the same block as contour {info.number}: a ratio onto an "
+                    "angle of its own coupled block is not supported",
+                    f"link {name} to an angle that an earlier contour solves, to an "
+                    "argument or a constant, or use ratio 1"))
 
 
 def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]

@@ -15,7 +15,7 @@ are found by bisection when asked for.  Used by :mod:`.existence`.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
@@ -147,14 +147,16 @@ def between_positions(values: _Resolver, over: Mapping[str, Array],
         return least, found
     which = np.concatenate(cand_contour)
     lo, hi = np.concatenate(cand_lo), np.concatenate(cand_hi)
+    # a solved angle that a link ratio scales: its whole turns from the sampled positions
+    turns = {k: v[cand] for k, v in values.items() if k in check.base.carried}
     best, hit = _zoom(check, over, rows[cand], which, contours,
-                      lo, hi, size[cand], {n: s[cand] for n, s in signs.items()})
+                      lo, hi, size[cand], {n: s[cand] for n, s in signs.items()}, turns)
     np.minimum.at(least, rows[cand], best)
     lost = np.flatnonzero(best <= THRESHOLD)
     ends = np.stack([hit[lost], hit[lost]], axis=1)
     if extent and lost.size:
         ends = _edges(check, {k: v[rows[cand[lost]]] for k, v in over.items()}, hit[lost],
-                      best[lost] < 0)
+                      best[lost] < 0, {k: v[lost] for k, v in turns.items()})
     for j, (t0, t1) in zip(lost, ends, strict=True):
         start, stop = np.interp([t0, t1], np.arange(n_pos), x)
         found.append(BreakInterval(int(rows[cand[j]]), contours[which[j]].number,
@@ -164,7 +166,7 @@ def between_positions(values: _Resolver, over: Mapping[str, Array],
 
 
 def _edges(check: ExistenceCheck, over: Mapping[str, Array], hit: Array,
-           unsolved: NDArray[np.bool_]) -> Array:
+           unsolved: NDArray[np.bool_], turns: Mapping[str, Array] | None = None) -> Array:
     """The ends (position numbers) of the breaks around the points ``hit`` ``(B,)``
     where the solve found no solution (``unsolved``), by bisection against the
     positions on either side (which assemble): ``(B, 2)``.  A break known only by its
@@ -174,7 +176,8 @@ def _edges(check: ExistenceCheck, over: Mapping[str, Array], hit: Array,
     for _ in range(48):  # a position / 2**48
         mid = np.stack([(left + inner_left) / 2, (inner_right + right) / 2], axis=1)
         _, broken = _solve_at(check, over, np.interp(mid, np.arange(check.args[1].value.size),
-                                                     check.args[1].value))
+                                                     check.args[1].value),
+                              _turns_at(turns, mid))
         inner_left = np.where(broken[:, 0], mid[:, 0], inner_left)
         left = np.where(broken[:, 0], left, mid[:, 0])
         inner_right = np.where(broken[:, 1], mid[:, 1], inner_right)
@@ -185,7 +188,8 @@ def _edges(check: ExistenceCheck, over: Mapping[str, Array], hit: Array,
 
 def _zoom(check: ExistenceCheck, over: Mapping[str, Array], designs: NDArray[np.int64],
           which: NDArray[np.int64], contours: list[ContourInfo], lo: Array, hi: Array, size: Array,
-          signs: Mapping[int, Array]) -> tuple[Array, Array]:
+          signs: Mapping[int, Array], turns: Mapping[str, Array] | None = None
+          ) -> tuple[Array, Array]:
     """Locate the least margin of each candidate (design, contour, bracket of position
     numbers ``[lo, hi]``) by zooming: ``ZOOM_POINTS`` inputs per bracket solved per step
     for all candidates at once, the bracket narrowed around the least.  Returns the least
@@ -205,7 +209,8 @@ def _zoom(check: ExistenceCheck, over: Mapping[str, Array], designs: NDArray[np.
         t = lo[live, None] + (hi[live] - lo[live])[:, None] * frac[None, :]
         inputs = np.interp(t, positions, x)
         values, broken = _solve_at(check, {k: v[designs[live]] for k, v in over.items()},
-                                   inputs)
+                                   inputs, _turns_at({k: v[live] for k, v in
+                                                      (turns or {}).items()}, t))
         margin = np.empty(t.shape)
         for ci, info in enumerate(contours):
             mine = which[live] == ci
@@ -236,7 +241,23 @@ def _zoom(check: ExistenceCheck, over: Mapping[str, Array], designs: NDArray[np.
     return best, where
 
 
-def _solve_at(check: ExistenceCheck, over: Mapping[str, Array], inputs: Array
+def _turns_at(turns: Mapping[str, Array] | None, t: Array) -> dict[str, Array] | None:
+    """The sampled continuous values ``(R, P)`` of the solved angles a ratio scales,
+    interpolated at the fractional positions ``t`` ``(R, K)``: where their whole turns are
+    taken from (:mod:`mechloop.solve.turns`)."""
+    if not turns:
+        return None
+    out = {}
+    for name, v in turns.items():
+        i = np.clip(np.floor(t).astype(np.int64), 0, v.shape[-1] - 2)
+        w = t - i
+        out[name] = (np.take_along_axis(v, i, axis=-1) * (1 - w)
+                     + np.take_along_axis(v, i + 1, axis=-1) * w)
+    return out
+
+
+def _solve_at(check: ExistenceCheck, over: Mapping[str, Array], inputs: Array,
+              turn_ref: Mapping[str, Array] | None = None
               ) -> tuple[dict[str, Array], NDArray[np.bool_]]:
     """Every parameter of designs ``over`` (rows ``(R,)``) at their own inputs of argument
     1, ``(R, K)``, positions only — the extra columns of
@@ -246,6 +267,8 @@ def _solve_at(check: ExistenceCheck, over: Mapping[str, Array], inputs: Array
     bare = {k: Signal(empty, empty, empty) for k in check.args}
     part = _setup(check.model, check.structure, bare, over)
     part = _with_extra_columns(part, bare, extra_at, 0, inputs.shape[0])
+    if turn_ref:
+        part = replace(part, turn_ref=turn_ref)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         block = _solve_block(part, 0, inputs.shape[1], inputs.shape, {}, derivatives=False)
     broken = np.zeros(inputs.shape, dtype=bool)

@@ -197,6 +197,14 @@ def _chosen(model: Model, positions: ArrayLike | None) -> NDArray[np.int64] | No
     if require_valid(model).coupled:
         raise SolveError("a coupled block is continued from position to position: it is "
                          "solved at every position", "solve every position (positions=None)")
+    from mechloop.solve.turns import carried_angles
+
+    structure = require_valid(model)
+    carried = carried_angles(structure, {n: c.scale for n, c in structure.links.items()})
+    if carried:
+        raise SolveError(f"{', '.join(sorted(carried))} is scaled by a link ratio, so its "
+                         "whole turns are followed from position to position: it is "
+                         "solved at every position", "solve every position (positions=None)")
     return chosen
 
 

@@ -275,12 +275,12 @@ def _unwrap(setup: _Setup, values: dict[str, Array]) -> None:
     positions, then re-derive the linked ones (as the ordinary solve does)."""
     for info in setup.ordered:
         for name in info.functions:
-            if name[0] == "a" and name in values:
+            if name[0] == "a" and name in values and name not in setup.carried:
                 value = values[name]
                 value[...] = unwrap_angles(value, np.isfinite(value))
     for name, chain in setup.structure.links.items():
         if name in values and chain.root in values:
-            values[name][...] = values[chain.root] + setup.deltas[name]
+            values[name][...] = setup.link_value(name, values[chain.root])
 
 
 @dataclass
@@ -310,6 +310,12 @@ def _solve_at(model: Model, structure: Structure, args: dict[int, Signal], k: in
                 for j, s in args.items()}
     args = {**args, k: Signal(zero, zero + float(by_theta), zero)}
     setup: _Setup = _setup(model, structure, args)
+    if positions is not None and setup.carried:
+        raise SolveError(f"{', '.join(sorted(setup.carried))} is scaled by a link ratio: its "
+                         "whole turns are followed along the positions, which the envelope's "
+                         "points (each at its own position) do not have (not built)",
+                         "link the ratio to an argument or a constant, or leave out the "
+                         "envelope of this chain")
     driven = dict(setup.driven)
     for name, (sig, offset) in setup.driven.items():
         role = param_role(model, name)

@@ -180,6 +180,13 @@ class _Setup:
     #: ``(D, K)`` (the nearest position by argument 1)
     n_regular: int | None = None
     extra_start: NDArray[np.int64] | None = None
+    #: solved angles that a link scales by a ratio ≠ 1: made continuous as soon as they
+    #: are solved (:func:`mechloop.solve.turns.continue_turns`), since ``k·α`` depends on
+    #: α's whole turns
+    carried: frozenset[str] = frozenset()
+    #: per carried angle, its continuous value near each extra column ``(D, K)`` (SI),
+    #: where the solve has no regular positions to take the turns from; see ``turns``
+    turn_ref: Mapping[str, Array] | None = None
 
     def link_value(self, name: str, root: Value) -> Value:
         """The value of linked parameter ``name`` given its root's value (SI)."""
@@ -231,8 +238,10 @@ def _setup(model: Model, structure: Structure, args: dict[int, Signal],
                                  if c.root in constants}
     varying = [f"{letter}{n}" for n in sorted(model.vectors) for letter in "ra"
                if f"{letter}{n}" not in constant]
+    from mechloop.solve.turns import carried_angles
+
     return _Setup(structure, structure.ordered(), constants, driven, deltas, constant,
-                  varying, scales)
+                  varying, scales, carried=carried_angles(structure, scales))
 
 
 @dataclass
@@ -299,6 +308,7 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
 
     block = _Block(params, {}, {}, {}, {}, {})
     from mechloop.solve import blocks as coupled
+    from mechloop.solve.turns import continue_turns
 
     by_number = {c.number: c for c in setup.ordered}
     parts = structure.blocks or tuple(  # a Structure built without blocks: one each
@@ -318,6 +328,7 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
             block.dead[info.number] = dead & ~inherited
             block.broken[info.number] = none | dead | inherited
             block.branch[info.number] = branch
+            continue_turns(setup, info.functions, params, shape, carry, block.carry)
             continue
         inherited = np.zeros(shape, dtype=bool)
         for n in part.contours:
@@ -334,6 +345,8 @@ def _solve_block(setup: _Setup, lo: int, hi: int, shape: tuple[int, ...],
             block.jump[n] = got.jump & ~inherited
             block.broken[n] = got.no_solution | got.dead | got.jump | inherited
             block.branch[n] = got.branch
+        continue_turns(setup, coupled.unknowns_of(part, [by_number[n] for n in part.contours]),
+                       params, shape, carry, block.carry)
     for name in structure.links:
         resolve(name)
     return block
@@ -531,10 +544,11 @@ def _overflow(setup: _Setup, out: dict[str, tuple[Array, Array, Array]],
 
 
 def _finish_angles(setup: _Setup, values: dict[str, Array]) -> None:
-    """Unwrap the solved angles along positions, then re-derive the linked ones."""
+    """Unwrap the solved angles along positions, then re-derive the linked ones (an angle
+    that a ratio scales is continuous already: ``setup.carried``)."""
     for info in setup.ordered:
         for name in info.functions:
-            if name[0] == "a":
+            if name[0] == "a" and name not in setup.carried:
                 value = values[name]
                 value[...] = unwrap_angles(value, np.isfinite(value))
     for name, chain in setup.structure.links.items():

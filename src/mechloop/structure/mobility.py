@@ -1,10 +1,10 @@
 """Mobility of a planar mechanism by Chebyshev's formula (seed 002, step 5).
 
 ``W = 3n − 2p5 − p4``: ``n`` moving links, ``p5`` lower pairs (revolute and prismatic, the
-pairs of the fifth class), ``p4`` higher pairs.  mechloop models have no higher pairs yet,
-so ``p4 = 0``.  A hydraulic cylinder (a ``length`` drive) is a driving pair between the two
-bodies at its ends, not two more links: its cylinder and rod with their three pairs would
-add ``3·2 − 2·3 = 0``, so W is the same either way.
+pairs of the fifth class), ``p4`` higher pairs: the gear meshes, ratio links between two
+bodies (:mod:`.meshes`).  A hydraulic cylinder (a ``length`` drive) is a driving pair
+between the two bodies at its ends, not two more links: its cylinder and rod with their
+three pairs would add ``3·2 − 2·3 = 0``, so W is the same either way.
 
 W is compared with the number of inputs (the model arguments that move bodies).  When they
 differ the seed asks to look for a mistake or for redundant constraints and passive links;
@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.structure.assur import decompose, moving_links
+from mechloop.structure.meshes import Mesh, replaced
 
 
 @dataclass(frozen=True)
@@ -30,6 +31,8 @@ class Mobility:
     W: int  # the textbook's symbol (Chebyshev)
     inputs: int
     explanation: str
+    #: the higher pairs counted in ``p4``
+    meshes: tuple[Mesh, ...] = ()
 
     @property
     def ok(self) -> bool:
@@ -37,13 +40,16 @@ class Mobility:
         return self.W == self.inputs and self.W > 0
 
     def __str__(self) -> str:
-        return (f"n = {self.n}, p5 = {self.p5}, p4 = {self.p4} (no higher pairs in the model"
+        higher = ("no higher pairs in the model" if not self.meshes
+                  else "; ".join(map(str, self.meshes)))
+        return (f"n = {self.n}, p5 = {self.p5}, p4 = {self.p4} ({higher}"
                 f"): W = 3·{self.n} − 2·{self.p5} − {self.p4} = {self.W}; inputs: "
                 f"{self.inputs}. {self.explanation}")
 
 
-def mobility(mechanism: Mechanism) -> Mobility:
-    """Chebyshev's mobility of ``mechanism`` compared with its number of drives.
+def mobility(mechanism: Mechanism, meshes: tuple[Mesh, ...] = ()) -> Mobility:
+    """Chebyshev's mobility of ``mechanism`` compared with its number of drives; ``meshes``
+    are its higher pairs (``p4``), replaced by their equivalents for the notes.
 
     >>> from mechloop.dynamics.mechanism import Drive, Mechanism, Pair
     >>> from mechloop.model.dynamic import TailPoint
@@ -56,7 +62,7 @@ def mobility(mechanism: Mechanism) -> Mobility:
     (2, 1, 'W = 2 > 1 input(s)')
     """
     n = len(moving_links(mechanism))
-    p5, p4 = len(mechanism.pairs), 0
+    p5, p4 = len(mechanism.pairs), len(meshes)
     w = 3 * n - 2 * p5 - p4
     inputs = len(mechanism.drives)
     if w == inputs and w > 0:
@@ -72,7 +78,7 @@ def mobility(mechanism: Mechanism) -> Mobility:
                 "chain, a passive link) or more drives than the chain can take"
                 + ("; W ≤ 0: the chain cannot move at all unless its geometry is special"
                    if w <= 0 else ""))
-    notes = decompose(mechanism).notes
+    notes = decompose(replaced(mechanism, meshes)[0]).notes
     if notes:
         head += (" — but: " if w == inputs else " — found: ") + "; ".join(notes)
-    return Mobility(n, p5, p4, w, inputs, head + ".")
+    return Mobility(n, p5, p4, w, inputs, head + ".", tuple(meshes))
