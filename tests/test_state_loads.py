@@ -334,3 +334,32 @@ def test_spring_release_comes_to_rest_where_gravity_and_the_spring_balance():
     scale = abs(potential(sim.q).max() - potential(sim.q).min())
     np.testing.assert_allclose(lost, -sim.state_work, rtol=0, atol=1e-5 * scale)
     assert -sim.state_work[-1] > 0.5 * scale  # the damper took most of the drop
+
+
+def test_every_body_balances_with_springs_and_dampers():
+    # Newton–Euler of every body (tests/oracles/dynamics.py) with the returned reactions
+    # and balancing moment, the spring's and dampers' loads recomputed by the oracle from
+    # the points' positions alone (speeds by finite differences in time)
+    from oracles.dynamics import newton_euler
+
+    data = {"positions": 360, "time": {"rpm": 600},
+            "arguments": {1: {"table": {0: 0, 360: 360}}},
+            "vectors": {1: {"r": R1, "a": {"argument": 1}}, 2: {"r": R2, "a": "function"},
+                        3: {"r": "function", "a": 180}, 4: {"r": E, "a": 90}},
+            "contours": [{"vectors": [1, 2, 3, 4]}],
+            "bodies": {1: {"vectors": [1], "mass": 2, "inertia": 0.01,
+                           "center": {"vector": 1, "share": 0.5}},
+                       2: {"vectors": [2], "mass": 1.5, "inertia": 0.006,
+                           "center": {"vector": 2, "share": 0.3}},
+                       3: {"vectors": [3], "mass": 1.2, "center": {"tail": 3}}},
+            "springs": [{"bodies": [2, 3], "ends": [{"vector": 2, "share": 0.5},
+                                                    {"tail": 3}],
+                         "stiffness": 3000, "free_length": 0.05, "preload": 20}],
+            "dampers": [{"bodies": [0, 2], "ends": [{"tail": 1}, {"vector": 2, "share": 0.5}],
+                         "coefficient": 40},
+                        {"bodies": [1, 2], "coefficient": 0.3}],
+            "gravity": {"g": 9.81}}
+    d = solve_dynamics(mechloop.Model.from_dict(data))
+    for r in newton_euler(d, data, periodic=True):
+        assert np.abs(r.force).max() <= 1e-8 * r.force_scale, r.body
+        assert np.abs(r.moment).max() <= 1e-8 * r.moment_scale, r.body
