@@ -363,3 +363,46 @@ def test_every_body_balances_with_springs_and_dampers():
     for r in newton_euler(d, data, periodic=True):
         assert np.abs(r.force).max() <= 1e-8 * r.force_scale, r.body
         assert np.abs(r.moment).max() <= 1e-8 * r.moment_scale, r.body
+
+
+# -------------------------------------------------------------------------- expressions
+
+
+def test_an_expression_of_the_rates_is_a_viscous_force():
+    # −30·ẋ on the slider along +X (r3 is the slider's x): power −30·ẋ² at every position,
+    # ẋ = dx/dq·ω from the closed form; and a moment 2·sin(t) on the crank (model time)
+    force = {"name": "V", "body": 3, "at": {"tail": 3}, "angle": 0,
+             "value": {"expression": "-30*dr3"}}
+    moment = {"name": "T", "body": 1, "value": {"expression": "2*sin(t)", "unit": "N*m"}}
+    dyn = solve_dynamics(_model(forces=[force], moments=[moment]))
+    q, w = dyn.kinematics.arguments[1], 600 * math.pi / 30
+    np.testing.assert_allclose(dyn.powers["V"], -30 * (_dx(q) * w) ** 2, rtol=1e-9)
+    np.testing.assert_allclose(dyn.powers["T"], 2 * np.sin(q / w) * w, rtol=1e-12,
+                               atol=1e-12)
+    np.testing.assert_allclose(dyn.balancing_vp[1], dyn.forces.balancing[1], rtol=1e-9,
+                               atol=1e-9)
+
+
+def test_expressions_of_speed_and_time_in_the_motion_in_time():
+    # a constant inertia J = 0.05 kg*m^2 under M = −c·ω + b·t (an expression of da1 and t):
+    # J ω' = −c ω + b t, whose solution is
+    # ω(t) = ω0 e^{−kt} + (b/c)(t − (1 − e^{−kt})/k), k = c/J
+    c, b, j, w0 = 0.02, 0.3, 0.05, 600 * math.pi / 30
+    moment = {"body": 1, "value": {"expression": f"-{c}*da1 + {b}*t"}}
+    sim = simulate(_model(constant_inertia=True, moments=[moment]),
+                   {"start": {"rpm": 600}, "duration": 3.0, **TIGHT})
+    t = np.array([0.5, 1.5, 3.0])
+    k = c / j
+    exact = w0 * np.exp(-k * t) + b / c * (t - (1 - np.exp(-k * t)) / k)
+    np.testing.assert_allclose(sim.state(t)[1], exact, rtol=1e-8)
+    assert np.abs(sim.balance).max() < 1e-7 * sim.kinetic_energy.max()
+
+
+def test_an_expression_cannot_run_code():
+    for text in ("__import__('os').system('true')", "r1.real", "r1[0]", "open('x')",
+                 "(lambda: 1)()", "sin(x=1)", "q9"):
+        with pytest.raises(ModelError):
+            _model(moments=[{"body": 1, "value": {"expression": text}}])
+    with pytest.raises(ModelError) as err:
+        solve_dynamics(_model(moments=[{"body": 1, "value": {"expression": "r9 + da1"}}]))
+    assert err.value.problems[0].path == ("moments", 0, "value", "expression")

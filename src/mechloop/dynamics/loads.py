@@ -24,7 +24,8 @@ from mechloop.dynamics.elements import RateLaw, element_loads
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.errors import ModelError, Problem
-from mechloop.model.dynamic import ParameterValue
+from mechloop.model.dynamic import ExpressionValue, ParameterValue
+from mechloop.model.expression import Expression
 from mechloop.model.schema import Model
 from mechloop.model.units import Kind, UnitProblem, to_si
 from mechloop.solve.inputs import Signal, evaluate_signal
@@ -49,6 +50,8 @@ class Dependence:
     sign: float | None = None
     rate: Array | None = None
     ungated: Complex | Array | None = None
+    expression: Expression | None = None
+    scale: float = 1.0
 
 
 @dataclass(frozen=True)
@@ -124,6 +127,74 @@ def _parameter_values(model: Model, value, state: Placement, kind: Kind, unit: s
     return np.interp(state.results.value(name), xs, ys)
 
 
+def expression_names(expression: Expression, state: Placement, time: Signal | None,
+                     designs: int) -> dict[str, Array]:
+    """The state an expression reads, SI over the state's positions: ``t`` (s), ``rK``,
+    ``aK`` (m, rad), ``drK``, ``daK`` (their rates).  Raises KeyError naming what the
+    model does not have."""
+    res = state.results
+    out: dict[str, Array] = {}
+    for name in expression.names:
+        if name == "t":
+            if time is None:
+                raise KeyError("t (the model has no time)")
+            out[name] = np.tile(time.value, designs)
+        elif name.startswith("d"):
+            if name[1:] not in res.values:
+                raise KeyError(name)
+            out[name] = res.rate(name[1:])
+        else:
+            if name not in res.values:
+                raise KeyError(name)
+            out[name] = res.value(name)
+    return out
+
+
+def _expression_values(value: ExpressionValue, state: Placement, kind: Kind, unit: str,
+                       time: Signal | None, designs: int, path: tuple,
+                       problems: list[Problem]) -> Array | None:
+    """A load given as an expression of the state, SI at the state's positions."""
+    expression = Expression(value.expression)
+    try:
+        scale = to_si(1.0, kind, value.unit or unit)
+        names = expression_names(expression, state, time, designs)
+        out = scale * expression(names)
+    except UnitProblem as exc:
+        problems.append(Problem((*path, "unit"), exc.message, exc.hint))
+        return None
+    except KeyError as exc:
+        problems.append(Problem((*path, "expression"), f"the model has no {exc.args[0]}",
+                                "use t (with model time), rK, aK, drK, daK of existing "
+                                "vectors K"))
+        return None
+    except (TypeError, ValueError, ZeroDivisionError) as exc:
+        problems.append(Problem((*path, "expression"), f"cannot evaluate "
+                                f"{value.expression!r}: {exc}", "call functions as "
+                                "sin(x); use numbers and the state's names"))
+        return None
+    out = np.broadcast_to(out, state.results.broken.shape).astype(float)
+    bad = ~np.isfinite(out) & ~state.results.broken
+    if bad.any():
+        problems.append(Problem((*path, "expression"), f"{value.expression!r} is not "
+                                f"finite at position {int(np.flatnonzero(bad)[0])}",
+                                "keep divisions and logarithms away from zero"))
+        return None
+    return out
+
+
+def _moving(value) -> bool:
+    """Whether a load's value follows the rates or the time (an expression that reads
+    ``t`` or a rate)."""
+    return isinstance(value, ExpressionValue) and any(
+        n == "t" or n.startswith("d") for n in Expression(value.expression).names)
+
+
+def _expression_dependence(model: Model, value: ExpressionValue, kind: Kind, unit: str,
+                           direction) -> Dependence:
+    return Dependence(expression=Expression(value.expression), unit=direction,
+                      scale=to_si(1.0, kind, value.unit or unit))
+
+
 def _gate(load, placement: Placement, state: Placement, path: tuple,
           problems: list[Problem]) -> tuple[Array, Dependence] | None:
     """Where a load with ``when`` acts (True/False over positions) and its dependence
@@ -187,6 +258,14 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             continue
         force = value * np.exp(1j * angle)
         depends = None
+        if _moving(load.value):
+            if gate is not None:
+                problems.append(Problem((*path, "when"), "an expression of the rates or "
+                                        "time cannot also have when:", "write the "
+                                        "condition into the expression: (drK > 0)*..."))
+                continue
+            depends = _expression_dependence(model, load.value, "force", units.force,
+                                             np.exp(1j * angle))
         if gate is not None:
             acts, depends = gate
             depends = Dependence(sign=depends.sign, rate=depends.rate, ungated=force)
@@ -206,6 +285,14 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
         if value is None or (load.when is not None and gate is None):
             continue
         depends = None
+        if _moving(load.value):
+            if gate is not None:
+                problems.append(Problem((*path, "when"), "an expression of the rates or "
+                                        "time cannot also have when:", "write the "
+                                        "condition into the expression: (drK > 0)*..."))
+                continue
+            depends = _expression_dependence(model, load.value, "moment", units.moment,
+                                             np.ones(value.size))
         if gate is not None:
             acts, depends = gate
             depends = Dependence(sign=depends.sign, rate=depends.rate, ungated=value)
@@ -244,4 +331,6 @@ def _load_values(model: Model, value, kind: Kind, unit: str, time: Signal | None
     every design), or over a parameter's value (each design's own)."""
     if isinstance(value, ParameterValue):
         return _parameter_values(model, value, state, kind, unit, path, problems)
+    if isinstance(value, ExpressionValue):
+        return _expression_values(value, state, kind, unit, time, designs, path, problems)
     return np.tile(_values(model, value, kind, unit, time, n_pos, path, problems), designs)

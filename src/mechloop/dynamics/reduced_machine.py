@@ -141,14 +141,14 @@ class ReducedMachine:
         h = xm - self._knots[k]
         return j, dj, ((c3 * h + c2) * h + c1) * h + c0
 
-    def state_moment(self, q: ArrayLike, omega: ArrayLike) -> Array:
-        """``M_s(q, ω)``, N·m: the reduced moment of the loads that depend on the speed
-        at angles ``q`` (rad, any number of cycles) and speeds ``omega`` (rad/s); zero
-        without such loads."""
+    def state_moment(self, q: ArrayLike, omega: ArrayLike, t: ArrayLike = 0.0) -> Array:
+        """``M_s(q, ω, t)``, N·m: the reduced moment of the loads that depend on the speed
+        or time at angles ``q`` (rad, any number of cycles), speeds ``omega`` (rad/s) and
+        times ``t`` (s); zero without such loads."""
         q = np.asarray(q, dtype=float)
         if self.state is None:
             return np.zeros(np.broadcast(q, np.asarray(omega)).shape)
-        return self.state.moment(self.wrap(q)[1], omega)
+        return self.state.moment(self.wrap(q)[1], omega, t)
 
     def _piece(self, x: float) -> int:
         """The spline piece that holds ``x`` (the end pieces beyond the knots)."""

@@ -267,11 +267,12 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
     while True:
         driven = motor is not None and t < off
 
-        def rhs(_t: float, s: Array, driven=driven, lap_q=lap_q) -> Array:
+        def rhs(time: float, s: Array, driven=driven, lap_q=lap_q) -> Array:
             q, w = float(s[0]) + lap_q, float(s[1])
             drive = float(motor.torque(np.asarray(w))) if driven else 0.0
             j, dj, m = machine.terms(q, lap_q)
-            ms = float(machine.state_moment(q, w)) if machine.state is not None else 0.0
+            ms = float(machine.state_moment(q, w, time)) if machine.state is not None \
+                else 0.0
             return np.array([w, (m + ms + drive - 0.5 * dj * w * w) / j, drive * w, ms * w])
 
         checks = {} if settings.reverse else {"stopped": _event(1, 0.0, -1.0)}
@@ -377,7 +378,7 @@ def _assemble(machine: ReducedMachine, motor: MotorCurve | None, settings: Setti
     if events[-1].kind == "stopped":
         w[-1] = 0.0
     drive = np.zeros_like(t) if motor is None else motor.at(w, t)
-    j, m = machine.j(q), machine.m(q) + machine.state_moment(q, w)
+    j, m = machine.j(q), machine.m(q) + machine.state_moment(q, w, t)
     eps = (m + drive - 0.5 * machine.dj(q) * w * w) / j
     kinetic = 0.5 * j * w * w
     start = events[0]

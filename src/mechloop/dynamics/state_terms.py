@@ -10,7 +10,10 @@ that state and reduced with the analogs (:class:`~mechloop.dynamics.loads.Depend
   ``−c·s'(q)²·ω``;
 * a load with ``when`` reduces to ``G(q)`` (the reduced moment of the load as if it always
   acted) where ``sign·x'(q)·ω > 0``, ``x'`` the analog of the deciding parameter's rate,
-  and to zero elsewhere.
+  and to zero elsewhere;
+* a load given as an expression of rates or time reduces to ``scale·f(state)·λ(q)``,
+  the expression evaluated with the parameters at ``q``, their rates ``x'(q)·ω`` and the
+  simulation's time ``t``.
 
 Springs depend on the positions only: they are in ``M_q(q)`` with gravity.
 
@@ -30,6 +33,7 @@ from mechloop.dynamics.elements import RateLaw
 from mechloop.dynamics.loads import Loads
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Placement
+from mechloop.model.expression import Expression
 
 Array = NDArray[np.float64]
 
@@ -40,10 +44,13 @@ def _dot(z, w) -> Array:
 
 @dataclass(frozen=True)
 class _Term:
-    law: RateLaw | None  # a damper (None: a gated load)
+    law: RateLaw | None  # a damper (None: a gated load or an expression)
     sign: float  # a gated load's sign
     lever: int  # rows of the stacked samples
     rate: int
+    expression: Expression | None = None  # an expression of the rates or time
+    scale: float = 1.0
+    channels: tuple[tuple[str, int], ...] = ()  # name -> row (a rate's row: its analog)
 
 
 class StateTerms:
@@ -75,12 +82,24 @@ class StateTerms:
             rows.extend((lever, rate))
             terms.append(_Term(law, sign, len(rows) - 2, len(rows) - 1))
 
+        def add_expression(lever: Array, dep) -> None:
+            rows.append(lever)
+            at = len(rows) - 1
+            channels = []
+            for name in sorted(dep.expression.names - {"t"}):
+                rows.append(res.rate(name[1:]) if name.startswith("d") else res.value(name))
+                channels.append((name, len(rows) - 1))
+            terms.append(_Term(None, 0.0, at, at, dep.expression, dep.scale,
+                               tuple(channels)))
+
         for force in loads_at.forces:
             dep = force.depends
             if dep is None:
                 continue
             static += _dot(force.force, force.point.v)
-            if dep.law is not None:
+            if dep.expression is not None:
+                add_expression(_dot(dep.unit, force.point.v), dep)
+            elif dep.law is not None:
                 add(_dot(dep.unit, force.point.v), dep.speed, dep.law, 0.0)
             else:
                 add(_dot(dep.ungated, force.point.v), dep.rate, None, dep.sign)
@@ -90,7 +109,9 @@ class StateTerms:
                 continue
             w = body_rate(couple.body)
             static += couple.moment * w
-            if dep.law is not None:
+            if dep.expression is not None:
+                add_expression(dep.unit * w, dep)
+            elif dep.law is not None:
                 add(dep.unit * w, dep.speed, dep.law, 0.0)
             else:
                 add(dep.ungated * w, dep.rate, None, dep.sign)
@@ -110,9 +131,9 @@ class StateTerms:
     def __bool__(self) -> bool:
         return bool(self.terms)
 
-    def moment(self, q: Array, omega: Array) -> Array:
-        """``M_s`` (N·m) at angles ``q`` inside the model's range (rad) and speeds
-        ``omega`` (rad/s), arrays of one shape."""
+    def moment(self, q: Array, omega: Array, time: Array | float = 0.0) -> Array:
+        """``M_s`` (N·m) at angles ``q`` inside the model's range (rad), speeds ``omega``
+        (rad/s) and times ``time`` (s), arrays of one shape."""
         q = np.asarray(q, dtype=float)
         omega = np.asarray(omega, dtype=float)
         out = np.zeros(np.broadcast(q, omega).shape)
@@ -121,7 +142,13 @@ class StateTerms:
         y = self._spline(q)
         for t in self.terms:
             lever, rate = y[..., t.lever], y[..., t.rate]
-            if t.law is not None:
+            if t.expression is not None:
+                names = {n: y[..., row] * omega if n.startswith("d") else y[..., row]
+                         for n, row in t.channels}
+                if "t" in t.expression.names:
+                    names["t"] = np.asarray(time, dtype=float)
+                out = out + t.scale * t.expression(names) * lever
+            elif t.law is not None:
                 out = out + t.law(rate * omega) * lever
             else:
                 out = out + np.where(t.sign * rate * omega > 0, lever, 0.0)

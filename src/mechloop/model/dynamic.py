@@ -155,6 +155,26 @@ class ParameterValue(_Frozen):
     unit: str | None = Field(None, description="unit of the loads (default: the model's)")
 
 
+class ExpressionValue(_Frozen):
+    """A load as an expression of the state: ``t`` (s), the parameters ``rK`` (m) and
+    ``aK`` (rad) and their rates ``drK`` (m/s), ``daK`` (rad/s) — SI, whatever the model's
+    units — with ``+ − * / ** %``, comparisons (1 or 0), ``pi`` and sin, cos, tan, arcsin,
+    arccos, arctan, arctan2, sqrt, exp, log, abs, sign, min, max, minimum, maximum, where,
+    hypot, tanh; the value is in ``unit`` (default the model's force or moment unit).
+    Without model time rates are per unit of argument 1 and ``t`` is not known."""
+
+    expression: str = Field(max_length=400, description="e.g. '-800*sign(dr6)' (names "
+                            "in SI: t s, rK m, aK rad, drK m/s, daK rad/s)")
+    unit: str | None = Field(None, description="unit of the value (default: the model's)")
+
+    @model_validator(mode="after")
+    def _parses(self) -> ExpressionValue:
+        from mechloop.model.expression import Expression
+
+        Expression(self.expression)
+        return self
+
+
 class When(_Frozen):
     """A load that acts only while a parameter changes one way: ``rate_of`` the parameter
     whose rate decides, ``sign`` positive (while it grows) or negative (while it falls).
@@ -172,6 +192,9 @@ def _value_tag(value: Any) -> str | None:
         return "constant"
     if isinstance(value, ParameterValue) or (isinstance(value, dict) and "of" in value):
         return "parameter"
+    if isinstance(value, ExpressionValue) or (isinstance(value, dict)
+                                              and "expression" in value):
+        return "expression"
     if isinstance(value, dict | BaseModel):
         return "signal"
     return None
@@ -181,13 +204,15 @@ def _value_tag(value: Any) -> str | None:
 #: table over a parameter's value.
 LoadValue = Annotated[
     Annotated[Scalar, Tag("constant")] | Annotated[Argument, Tag("signal")]
-    | Annotated[ParameterValue, Tag("parameter")],
+    | Annotated[ParameterValue, Tag("parameter")]
+    | Annotated[ExpressionValue, Tag("expression")],
     Discriminator(
         _value_tag,
         custom_error_type="load_value",
         custom_error_message="a load value is a number, a quantity like '1 kN', a table "
-        "{table: {position: value}}, a law {law: ..., start: [k, v], end: [k, v]} or a "
-        "table over a parameter {of: r5, table: [[value, load], ...]}",
+        "{table: {position: value}}, a law {law: ..., start: [k, v], end: [k, v]}, a "
+        "table over a parameter {of: r5, table: [[value, load], ...]} or an expression "
+        "{expression: '-800*sign(dr5)'}",
     ),
 ]
 
