@@ -269,6 +269,10 @@ def test_problems_of_state_loads_are_located():
     paths = {p.path for p in err.value.problems}
     assert paths == {("dampers", 0), ("forces", 0, "when", "rate_of"),
                      ("springs", 0, "bodies")}
+    with pytest.raises(ModelError) as err:  # the crank pin A is not a point of the slider
+        solve_dynamics(_model(springs=[{"bodies": [0, 3], "ends": [{"tail": 1}, {"head": 1}],
+                                        "stiffness": 1, "free_length": 0}]))
+    assert [p.path for p in err.value.problems] == [("springs", 0, "ends", 1)]
     with pytest.raises(ModelError):
         _model(springs=[{"bodies": [0, 3], "ends": SPRING_ENDS, "stiffness": 1}])
     with pytest.raises(ModelError):

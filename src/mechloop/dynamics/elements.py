@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.dynamics.mechanism import Mechanism
+from mechloop.dynamics.mechanism import Mechanism, _fixed_in, _size
 from mechloop.dynamics.points import Placement
 from mechloop.errors import Problem
 from mechloop.model.schema import Model
@@ -75,11 +75,15 @@ class ElementLoad:
 
 
 def element_loads(model: Model, mechanism: Mechanism, points: Placement, state: Placement,
-                  *, static: bool, problems: list[Problem]) -> list[ElementLoad]:
+                  *, static: bool, problems: list[Problem], check_ends: bool = True
+                  ) -> list[ElementLoad]:
     """Every spring's and damper's loads on the moving bodies (SI), in the order of the
-    model file; problems (a body that is not one, a point that does not exist, a damper in
-    a model without time) are appended to ``problems``."""
+    model file; problems (a body that is not one, a point that does not exist or is not
+    fixed in its body, a damper in a model without time) are appended to ``problems``.
+    ``check_ends=False`` skips the last check (the positions of a population of designs,
+    whose points move from design to design)."""
     out: list[ElementLoad] = []
+    scale = _size(model, points) if check_ends and (model.springs or model.dampers) else 0.0
     units = model.units
     try:
         f_force, f_length = (unit_factor(units.force, "force"),
@@ -110,6 +114,16 @@ def element_loads(model: Model, mechanism: Mechanism, points: Placement, state: 
             except KeyError as exc:
                 problems.append(Problem((*path, "ends"), f"vector {exc.args[0]} does not "
                                         "exist", f"use one of {sorted(model.vectors)}"))
+                continue
+            loose = [j for j, (end, body) in enumerate(zip((a, b), item.bodies, strict=True))
+                     if check_ends and not _fixed_in(end, body, mechanism.bodies, points,
+                                                     scale)]
+            if loose:
+                j = loose[0]
+                problems.append(Problem((*path, "ends", j), f"this point is not fixed in "
+                                        f"body {item.bodies[j]}: it moves relative to it",
+                                        "give a point on a vector of that body (or the "
+                                        "body that carries the point)"))
                 continue
             with np.errstate(invalid="ignore", divide="ignore"):
                 d = b.z - a.z

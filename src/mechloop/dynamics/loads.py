@@ -311,7 +311,7 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
                                              placement.point(mass.center),
                                              np.full(n, mass.mass * g * direction)))
     for element in element_loads(model, mechanism, placement, state, static=time is None,
-                                 problems=problems):
+                                 problems=problems, check_ends=designs == 1):
         depends = None if element.law is None else Dependence(
             law=element.law, speed=element.speed, unit=element.unit)
         if element.point is None:
