@@ -410,3 +410,18 @@ def test_an_expression_cannot_run_code():
     with pytest.raises(ModelError) as err:
         solve_dynamics(_model(moments=[{"body": 1, "value": {"expression": "r9 + da1"}}]))
     assert err.value.problems[0].path == ("moments", 0, "value", "expression")
+
+
+def test_a_tabulated_damper_reads_its_table_both_ways():
+    # [speed, tension] for speeds ≥ 0, mirrored for negative ones, the end slope beyond:
+    # power −T(l̇)·l̇ with T(v) = sign(v)·table(|v|), l̇ = dl/dq·ω from the closed form
+    table = [[0.0, 0.0], [0.5, 10.0], [1.0, 12.0]]
+    damper = {"bodies": [0, 3], "ends": SPRING_ENDS, "table": table, "name": "D"}
+    dyn = solve_dynamics(_model(dampers=[damper]))
+    q, w = dyn.kinematics.arguments[1], 600 * math.pi / 30
+    v = _dlength(q) * w
+    assert np.abs(v).max() > 1.0 and (v < 0).any() and (v > 0).any()  # beyond and both ways
+    speed = np.abs(v)
+    tension = np.sign(v) * np.where(speed > 1.0, 12.0 + 4.0 * (speed - 1.0),
+                                    np.interp(speed, [0, 0.5, 1.0], [0, 10, 12]))
+    np.testing.assert_allclose(dyn.powers["D"], -tension * v, rtol=1e-9, atol=1e-12)
