@@ -30,6 +30,12 @@ HAND = {
     "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "compressor_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "spring_release.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    # shaper: crank 1 (R to the frame), block 2 (R on the crank pin, P along the lever),
+    # lever 3 (R to the frame), rod 4 (R to the lever and to the ram), ram 5 (P on the
+    # guide): n = 5, p5 = 7, W = 15 − 14 = 1.  Block + lever with pins at both ends and the
+    # slide between them is an RPR dyad (L3); rod + ram an RRP dyad (L2).
+    "shaper_cutting_stroke.yaml": (5, 7, 0, 1, "L0(1) → L3(2,3) → L2(4,5)", 2),
     # crank 1, coupler 2, rocker 3, four pins: W = 9 − 8 = 1; coupler + rocker is an
     # RRR dyad (L1).
     "four_bar_groups.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),

@@ -168,6 +168,47 @@ def external_moments(data: Mapping, n: int) -> list[tuple[int, np.ndarray]]:
     return [(c["body"], float(c["value"]) * np.ones(n)) for c in data.get("moments", [])]
 
 
+def state_loads(data: Mapping, d: DynamicResults, *, periodic: bool
+                ) -> tuple[list[AppliedForce], list[tuple[int, np.ndarray]]]:
+    """Linear springs and dampers (SI data), from the points' positions alone: the length
+    ``l = |B − A|`` and, for a damper, its rate by finite differences in time (a damper in
+    a joint: the bodies' angular speeds from ``d/dt e^{iα}``); ``+T·u`` on the first end,
+    ``−T·u`` on the second (``T`` the tension, ``u`` from the first end to the second)."""
+    forces: list[AppliedForce] = []
+    moments: list[tuple[int, np.ndarray]] = []
+    res = d.kinematics
+    h = time_step(d) if data.get("dampers") else 1.0
+
+    def rate(values: np.ndarray) -> np.ndarray:
+        out = first_derivative(values, h, periodic=periodic)
+        return np.append(out, out[:1]) if periodic else out  # the last row repeats
+
+    def omega(body: int) -> np.ndarray:
+        if body == 0:
+            return np.zeros(res.broken.size)
+        e = np.exp(1j * res.value(f"a{data['bodies'][body]['vectors'][0]}"))
+        return (np.conj(e) * rate(e)).imag
+
+    for kind in ("springs", "dampers"):
+        for item in data.get(kind, []):
+            first, second = item["bodies"]
+            if item.get("ends") is None:  # a damper in the joint of its bodies
+                m = item["coefficient"] * (omega(second) - omega(first))
+                moments += [(first, m), (second, -m)]
+                continue
+            za, zb = (point_z(d, end) for end in item["ends"])
+            length = np.abs(zb - za)
+            u = (zb - za) / length
+            if kind == "springs":
+                tension = item["stiffness"] * (length - item["free_length"]) \
+                    + item.get("preload", 0.0)
+            else:
+                tension = item["coefficient"] * rate(length)
+            forces += [AppliedForce(first, tension * u, za),
+                       AppliedForce(second, -tension * u, zb)]
+    return forces, moments
+
+
 # -------------------------------------------------------------------- Newton–Euler
 
 
@@ -234,6 +275,11 @@ def newton_euler(d: DynamicResults, data: Mapping, *, periodic: bool = False,
     for f in external_forces(data, d):
         apply(f.body, f.force, f.at)
     for body, moment in external_moments(data, n):
+        turn(body, moment)
+    extra_forces, extra_moments = state_loads(data, d, periodic=periodic)
+    for f in extra_forces:
+        apply(f.body, f.force, f.at)
+    for body, moment in extra_moments:
         turn(body, moment)
 
     masses = lumped_masses(data, d)

@@ -1,1 +1,3 @@
-"""Dynamics: masses, loads, kinetostatics, reduced characteristics, energy and machine motion."""
+"""Dynamics: masses, loads (springs and dampers: :mod:`.elements`), kinetostatics, reduced
+characteristics, energy, machine motion and motion in time (speed-dependent loads there:
+:mod:`.state_terms`)."""

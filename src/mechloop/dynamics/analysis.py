@@ -237,7 +237,8 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
     analog_cache: dict[int, tuple[Placement, Loads]] = {}
     for drive in mechanism.drives:
         at = Placement(analogs(drive.argument), starts)
-        loads_at = build_loads(model, mechanism, at, time, designs=designs or 1)
+        loads_at = build_loads(model, mechanism, at, time, designs=designs or 1,
+                               state=placement)
         analog_cache[drive.argument] = (at, loads_at)
         balancing_vp[drive.argument] = balancing_by_virtual_power(
             mechanism, placement, at, loads_at, static=static)

@@ -54,10 +54,14 @@ class ReducedMachine:
     periodic : bool, optional — False: the samples are a range, not a cycle, even if
         ``J`` returns to its first value (an input that does not turn whole turns); by
         default a machine is periodic when ``J`` returns.
+    state : :class:`~mechloop.dynamics.state_terms.StateTerms`, optional — the reduced
+        moment ``M_s(q, ω)`` of the loads that depend on the speed (dampers, loads with
+        ``when``), beside ``M_q(q)`` (which must leave them out).
     """
 
     def __init__(self, q: ArrayLike, inertia: ArrayLike, load: ArrayLike,
-                 d_inertia: ArrayLike | None = None, *, periodic: bool | None = None):
+                 d_inertia: ArrayLike | None = None, *, periodic: bool | None = None,
+                 state=None):
         q = np.asarray(q, dtype=float)
         j = np.asarray(inertia, dtype=float)
         m = np.asarray(load, dtype=float)
@@ -72,6 +76,7 @@ class ReducedMachine:
             raise SolveError("J must be positive and J, M finite at every position",
                              "give the moving bodies masses; remove chain breaks")
         self.q, self.inertia, self.load = q, j, m
+        self.state = state if state else None
         self.start, self.period = float(q[0]), float(q[-1] - q[0])
         self.periodic = _returns(j) and periodic is not False
         self._j = _spline(q, j, self.periodic)
@@ -92,7 +97,7 @@ class ReducedMachine:
     def with_inertia(self, extra: float) -> ReducedMachine:
         """The same machine with a constant inertia added (a flywheel, a rotor), kg·m²."""
         return ReducedMachine(self.q, self.inertia + extra, self.load, self.d_inertia,
-                              periodic=self.periodic)
+                              periodic=self.periodic, state=self.state)
 
     def wrap(self, q: ArrayLike) -> tuple[Array, Array]:
         """``(turns, q_in)``: ``q = q_in + turns·L`` with ``q_in`` in the model's range
@@ -135,6 +140,15 @@ class ReducedMachine:
         c3, c2, c1, c0 = self._pieces_m[k]
         h = xm - self._knots[k]
         return j, dj, ((c3 * h + c2) * h + c1) * h + c0
+
+    def state_moment(self, q: ArrayLike, omega: ArrayLike, t: ArrayLike = 0.0) -> Array:
+        """``M_s(q, ω, t)``, N·m: the reduced moment of the loads that depend on the speed
+        or time at angles ``q`` (rad, any number of cycles), speeds ``omega`` (rad/s) and
+        times ``t`` (s); zero without such loads."""
+        q = np.asarray(q, dtype=float)
+        if self.state is None:
+            return np.zeros(np.broadcast(q, np.asarray(omega)).shape)
+        return self.state.moment(self.wrap(q)[1], omega, t)
 
     def _piece(self, x: float) -> int:
         """The spline piece that holds ``x`` (the end pieces beyond the knots)."""

@@ -9,8 +9,11 @@ motion (Lagrange's, one degree of freedom)
 
     J(q)·q̈ + ½·J'(q)·q̇² = M_q(q) + M_d(q̇, t)
 
-is integrated by :func:`scipy.integrate.solve_ivp` for the state ``(q, ω, W_d)``, ``W_d``
-the motor's work, with dense output, cycle by cycle.
+is integrated by :func:`scipy.integrate.solve_ivp` for the state ``(q, ω, W_d, W_s)``,
+``W_d`` the motor's work and ``W_s`` the work of the loads that depend on the speed, with
+dense output, cycle by cycle.  Those loads (dampers, loads that act only while a
+parameter moves one way: :mod:`mechloop.dynamics.state_terms`) add ``M_s(q, ω)`` to the
+right-hand side; springs, like gravity, are in ``M_q(q)``.
 
 **Functions of q** (:class:`~mechloop.dynamics.reduced_machine.ReducedMachine`). ``J`` and
 ``M_q`` are known exactly at the model's positions (one cycle of the input) and read
@@ -50,6 +53,7 @@ from scipy.integrate import solve_ivp
 
 from mechloop.dynamics.motors import RPM, MotorCurve, motor_curve
 from mechloop.dynamics.reduced_machine import ReducedMachine
+from mechloop.dynamics.state_terms import StateTerms
 from mechloop.errors import ModelError, Problem, SolveError
 from mechloop.model.units import UnitProblem, to_si
 
@@ -100,7 +104,8 @@ class Settings:
 @dataclass(frozen=True)
 class Segment:
     """One piece of the run, ``t0 ≤ t ≤ t1`` (s), and its dense output: calling it at
-    times ``t`` gives the state ``(3, n)`` (``q``, ``ω``, the motor's work).  The integrator
+    times ``t`` gives the state ``(4, n)`` (``q``, ``ω``, the motor's work, the work of
+    the speed-dependent loads).  The integrator
     works on ``q`` from the cycle's start, so that its relative tolerance does not loosen
     as ``q`` grows cycle by cycle."""
 
@@ -123,10 +128,10 @@ class Simulation:
     ----------
     time, q, omega, epsilon : array, shape (R,) — output rows: s, rad, rad/s, rad/s².
     motor_moment, load_moment : array, shape (R,), N·m — the motor's moment on the input,
-        and the reduced moment of the model's loads ``M_q(q)``.
+        and the reduced moment of the model's loads ``M_q(q) + M_s(q, ω)``.
     inertia : array, shape (R,), kg·m² — ``J(q)`` (with flywheel and rotor).
     kinetic_energy, motor_work, load_work : array, shape (R,), J — ``½·J·ω²``, the motor's
-        work and the loads' work since time 0.
+        work and the loads' work since time 0 (``state_work`` included).
     balance : array, shape (R,), J — ``T − T(0) − W_motor − W_loads``: zero but for the
         integrator's error.
     events : list of :class:`Event` — in time order, the first ``"start"``, the last what
@@ -161,6 +166,7 @@ class Simulation:
     settings: Settings
     segments: list[Segment] = field(repr=False, default_factory=list)
     steps: int = 0
+    state_work: Array | None = None  # (R,), J: work of the speed-dependent loads (None: none)
 
     @property
     def end(self) -> Event:
@@ -241,13 +247,14 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
                          "give an angle beyond the start angle (it grows turn by turn)")
     t_end = math.inf if settings.duration is None else float(settings.duration)
     off = math.inf if motor is None else motor.off_at
-    atol = np.array([settings.atol, settings.atol,
-                     settings.atol * max(1.0, float(machine.inertia.max()))])
+    work_atol = settings.atol * max(1.0, float(machine.inertia.max()))
+    atol = np.array([settings.atol, settings.atol, work_atol, work_atol])
     events = [Event("start", 0.0, q0, omega0)]
     segments: list[Segment] = []
     starts: list[float] = []
     times: list[float] = []
-    t, y = 0.0, np.array([q0, omega0, 0.0])
+    t, y = 0.0, np.array([q0, omega0, 0.0, 0.0])
+    shift = np.zeros(4)
     # laps are the model's cycles: from the angle of position 0, turn by turn; a start
     # inside one makes the first lap partial (not counted as a cycle)
     lap_t, lap_q, partial = 0.0, machine.start, False
@@ -260,11 +267,13 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
     while True:
         driven = motor is not None and t < off
 
-        def rhs(_t: float, s: Array, driven=driven, lap_q=lap_q) -> Array:
+        def rhs(time: float, s: Array, driven=driven, lap_q=lap_q) -> Array:
             q, w = float(s[0]) + lap_q, float(s[1])
             drive = float(motor.torque(np.asarray(w))) if driven else 0.0
             j, dj, m = machine.terms(q, lap_q)
-            return np.array([w, (m + drive - 0.5 * dj * w * w) / j, drive * w])
+            ms = float(machine.state_moment(q, w, time)) if machine.state is not None \
+                else 0.0
+            return np.array([w, (m + ms + drive - 0.5 * dj * w * w) / j, drive * w, ms * w])
 
         checks = {} if settings.reverse else {"stopped": _event(1, 0.0, -1.0)}
         if machine.periodic:
@@ -279,7 +288,8 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
         stop_t = min(t_end, off) if driven else t_end
         if math.isinf(stop_t):
             stop_t = t + max(1000.0, 1000.0 * machine.period / max(float(y[1]), 1e-9))
-        sol = solve_ivp(rhs, (t, stop_t), y - [lap_q, 0.0, 0.0], method=settings.method,
+        shift[0] = lap_q
+        sol = solve_ivp(rhs, (t, stop_t), y - shift, method=settings.method,
                         rtol=settings.rtol, atol=atol, dense_output=True,
                         events=list(checks.values()))
         if sol.status == -1:
@@ -287,7 +297,7 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
                              f"{sol.message}", "loosen rtol/atol or try method: Radau")
         segments.append(Segment(t, float(sol.t[-1]), sol.sol, lap_q))
         steps += sol.t.size - 1
-        t, y = float(sol.t[-1]), sol.y[:, -1] + [lap_q, 0.0, 0.0]
+        t, y = float(sol.t[-1]), sol.y[:, -1] + shift
         hits = sorted((float(te[0]), order, kind) for order, (kind, te) in
                       enumerate(zip(checks, sol.t_events, strict=True)) if te.size)
         if progress is not None:
@@ -344,8 +354,8 @@ def _event(index: int, value: float, direction: float) -> Callable[[float, Array
 
 
 def _dense(segments: list[Segment], t: Array) -> Array:
-    """The state ``(3, n)`` at times ``t`` from the segments' dense output."""
-    out = np.empty((3, t.size))
+    """The state ``(4, n)`` at times ``t`` from the segments' dense output."""
+    out = np.empty((4, t.size))
     ends = np.array([s.t1 for s in segments])
     which = np.minimum(np.searchsorted(ends, t, side="left"), len(segments) - 1)
     for i in np.unique(which):
@@ -364,21 +374,22 @@ def _assemble(machine: ReducedMachine, motor: MotorCurve | None, settings: Setti
     else:
         step = t_final / 1000.0 if settings.every is None else float(settings.every)
         t = np.append(np.arange(0.0, t_final, step), t_final) if step > 0 else np.zeros(1)
-    q, w, w_motor = _dense(segments, t)
+    q, w, w_motor, w_state = _dense(segments, t)
     if events[-1].kind == "stopped":
         w[-1] = 0.0
     drive = np.zeros_like(t) if motor is None else motor.at(w, t)
-    j, m = machine.j(q), machine.m(q)
+    j, m = machine.j(q), machine.m(q) + machine.state_moment(q, w, t)
     eps = (m + drive - 0.5 * machine.dj(q) * w * w) / j
     kinetic = 0.5 * j * w * w
     start = events[0]
-    load_work = machine.work(q) - machine.work(start.q)
+    load_work = machine.work(q) - machine.work(start.q) + w_state
     balance = kinetic - 0.5 * float(machine.j(start.q)) * start.omega**2 - w_motor - load_work
     cycle_time = np.array(times)
     return Simulation(t, q, w, eps, drive, m, j, kinetic, w_motor, load_work, balance,
                       events, np.array(starts), cycle_time,
                       machine.period / cycle_time if times else np.empty(0), steady_time,
-                      machine, motor, settings, segments, steps)
+                      machine, motor, settings, segments, steps,
+                      None if machine.state is None else w_state)
 
 
 def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
@@ -459,16 +470,19 @@ def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults
                                   "remove the chain break (mechloop solve lists the "
                                   "positions) or narrow the argument's range")])
     load = np.array(red.load, dtype=float)
+    q = np.asarray(kin.arguments[k], dtype=float)
+    turns = (q[-1] - q[0]) / (2 * np.pi)
+    whole = round(turns) >= 1 and abs(turns - round(turns)) <= 1e-9 * turns
+    state = _state_terms(model, dynamics, k, q, whole)
+    if state is not None:
+        load -= state.static
     if settings.friction and dynamics.forces.friction_loss.any():
         rate = _argument_rate(kin, k)
         with np.errstate(divide="ignore", invalid="ignore"):
             load -= np.where(rate != 0, dynamics.forces.friction_loss / rate, 0.0)
-    q = np.asarray(kin.arguments[k], dtype=float)
-    turns = (q[-1] - q[0]) / (2 * np.pi)
-    whole = round(turns) >= 1 and abs(turns - round(turns)) <= 1e-9 * turns
     try:
         machine = ReducedMachine(q, red.inertia, load, red.d_inertia,
-                                 periodic=None if whole else False)
+                                 periodic=None if whole else False, state=state)
     except SolveError as exc:
         key = ("arguments", k) if "advance" in exc.message else ("bodies",)
         raise exc.at(key) from None
@@ -485,6 +499,24 @@ def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults
         extra = _si(settings.flywheel, "inertia", model.units.inertia,
                     ("simulate", "flywheel"))
     return machine, extra
+
+
+def _state_terms(model: Model, dynamics: DynamicResults, k: int, q: Array, whole: bool
+                 ) -> StateTerms | None:
+    """The reduced moment of the loads that depend on the speed (None: the model has
+    none), from the analogs of input ``k``."""
+    if not any(load.depends is not None
+               for load in (*dynamics.loads.forces, *dynamics.loads.moments)):
+        return None
+    from mechloop.dynamics.loads import build_loads
+    from mechloop.dynamics.points import Placement
+    from mechloop.solve.inputs import model_time
+    from mechloop.solve.kinematics import solve
+
+    at = Placement(solve(model, analogs_of=k))
+    loads_at = build_loads(model, dynamics.mechanism, at, model_time(model),
+                           state=dynamics.placement)
+    return StateTerms(q, loads_at, dynamics.mechanism, at, periodic=whole)
 
 
 def _si(value, kind, unit: str, path: tuple[str | int, ...]) -> float:

@@ -137,24 +137,82 @@ class Friction(_Frozen):
     length: Scalar | None = Field(None, description="slider length of prismatic joints")
 
 
+#: A parameter of the model: ``rK`` (length of vector K) or ``aK`` (its angle).
+ParameterName = Annotated[str, Field(pattern=r"^[ra][1-9][0-9]{0,5}$")]
+
+
+class ParameterValue(_Frozen):
+    """A load as a function of a model parameter's value: ``[value, load]`` pairs, the
+    parameter's values increasing (its units: length or angle), the load linear between
+    them and held at the end values beyond (e.g. a resistance over the output's
+    position)."""
+
+    of: ParameterName = Field(description="the parameter, e.g. r5 (the length of vector "
+                              "5) or a3 (the angle of vector 3)")
+    table: list[tuple[Scalar, Scalar]] = Field(
+        min_length=2, description="[parameter value, load] pairs, parameter increasing "
+        "(model units, or numbers with units)")
+    unit: str | None = Field(None, description="unit of the loads (default: the model's)")
+
+
+class ExpressionValue(_Frozen):
+    """A load as an expression of the state: ``t`` (s), the parameters ``rK`` (m) and
+    ``aK`` (rad) and their rates ``drK`` (m/s), ``daK`` (rad/s) — SI, whatever the model's
+    units — with ``+ − * / ** %``, comparisons (1 or 0), ``pi`` and sin, cos, tan, arcsin,
+    arccos, arctan, arctan2, sqrt, exp, log, abs, sign, min, max, minimum, maximum, where,
+    hypot, tanh; the value is in ``unit`` (default the model's force or moment unit).
+    Without model time rates are per unit of argument 1 and ``t`` is not known."""
+
+    expression: str = Field(max_length=400, description="e.g. '-800*sign(dr6)' (names "
+                            "in SI: t s, rK m, aK rad, drK m/s, daK rad/s)")
+    unit: str | None = Field(None, description="unit of the value (default: the model's)")
+
+    @model_validator(mode="after")
+    def _parses(self) -> ExpressionValue:
+        from mechloop.model.expression import Expression
+
+        Expression(self.expression)
+        return self
+
+
+class When(_Frozen):
+    """A load that acts only while a parameter changes one way: ``rate_of`` the parameter
+    whose rate decides, ``sign`` positive (while it grows) or negative (while it falls).
+    Where the rate is zero the load does not act."""
+
+    rate_of: ParameterName = Field(description="the parameter whose rate decides, e.g. r5")
+    sign: Literal["positive", "negative"] = Field(description="act while the rate is "
+                                                  "positive (growing) or negative")
+
+
 def _value_tag(value: Any) -> str | None:
     if isinstance(value, bool):
         return None
     if isinstance(value, int | float | str):
         return "constant"
+    if isinstance(value, ParameterValue) or (isinstance(value, dict) and "of" in value):
+        return "parameter"
+    if isinstance(value, ExpressionValue) or (isinstance(value, dict)
+                                              and "expression" in value):
+        return "expression"
     if isinstance(value, dict | BaseModel):
         return "signal"
     return None
 
 
-#: A load over positions: a constant, or a table / law exactly like a model argument.
+#: A load over positions: a constant, a table / law exactly like a model argument, or a
+#: table over a parameter's value.
 LoadValue = Annotated[
-    Annotated[Scalar, Tag("constant")] | Annotated[Argument, Tag("signal")],
+    Annotated[Scalar, Tag("constant")] | Annotated[Argument, Tag("signal")]
+    | Annotated[ParameterValue, Tag("parameter")]
+    | Annotated[ExpressionValue, Tag("expression")],
     Discriminator(
         _value_tag,
         custom_error_type="load_value",
         custom_error_message="a load value is a number, a quantity like '1 kN', a table "
-        "{table: {position: value}} or a law {law: ..., start: [k, v], end: [k, v]}",
+        "{table: {position: value}}, a law {law: ..., start: [k, v], end: [k, v]}, a "
+        "table over a parameter {of: r5, table: [[value, load], ...]} or an expression "
+        "{expression: '-800*sign(dr5)'}",
     ),
 ]
 
@@ -170,6 +228,8 @@ class Force(_Frozen):
     angle: Scalar = Field(0.0, description="direction (angle units): from +X, or from "
                           "vector 'along'")
     along: int | None = Field(None, description="the force follows this vector's direction")
+    when: When | None = Field(None, description="act only while a parameter's rate has "
+                              "this sign (default: always)")
     name: str | None = None
 
 
@@ -178,6 +238,8 @@ class Moment(_Frozen):
 
     body: int = Field(ge=1, description="the body the moment acts on")
     value: LoadValue = Field(description="moment over positions (moment units)")
+    when: When | None = Field(None, description="act only while a parameter's rate has "
+                              "this sign (default: always)")
     name: str | None = None
 
 

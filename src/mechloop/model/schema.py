@@ -36,6 +36,7 @@ from mechloop.model.dynamic import (
     Moment,
     TailPoint,
 )
+from mechloop.model.elements import Damper, Spring
 from mechloop.model.gearing import GearMesh
 from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
@@ -250,6 +251,10 @@ class Model(_Frozen):
     forces: list[Force] = Field(default_factory=list, description="external forces")
     moments: list[Moment] = Field(default_factory=list, description="external moments")
     gravity: Gravity | None = Field(None, description="gravity (off when absent)")
+    springs: list[Spring] = Field(default_factory=list, description="springs between "
+                                  "two points of two bodies")
+    dampers: list[Damper] = Field(default_factory=list, description="dampers between two "
+                                  "points, or in the joint of two bodies")
     friction: Friction = Field(Friction(), description="friction defaults for every joint")
     machine: Machine | None = Field(None, description="machine motion and flywheel sizing "
                                     "(one-input machines)")
