@@ -29,10 +29,11 @@ relative test the elementary modules use — for 2×2 it is the sine between the
 or the solution jumped to another assembly branch (the determinant changed sign, or,
 with a predictor from the last two positions, the solution lies farther from it than
 twice the last step and more than :data:`JUMP_ANGLE` for an angle or :data:`JUMP_LENGTH`
-of the block's size for a length).  The first step after position 0 and after a break
-has no such predictor: there only the determinant's sign tells the branch (a jump to
-another assembly of the same sign is not seen there).  After a break, later positions
-restart from the last good solution (no predictor).
+of the block's size for a length).  The first step after position 0 and after a break,
+which has no line through two good positions, is checked the same way against the
+first-order predictor ``u + δ`` (``δ = −J⁻¹F`` at the new position from the last
+solution: the velocity times the input's step), with twice ``|δ|`` as the step.  After a
+break, later positions restart from the last good solution.
 
 The continuation is sequential along positions and runs compiled (numba): a block is
 described by integer and float arrays (where each vector's ``r`` and ``α`` come from — a
@@ -269,12 +270,22 @@ def _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size, starts, 
 @njit(cache=True, nogil=True)
 def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_start,
               starts, want, guessed, guess, singular_sin,
-              last, prev, run, sign, found, U, status, det_out):  # pragma: no cover
+              last, prev, run, sign, found, U, status, det_out,
+              from_start, start_u, start_sign):  # pragma: no cover
     """Every row (design) along the columns (positions) ``first..n_regular−1`` by
     continuation, then the extra columns each from its nearest regular column
-    ``extra_start``.  ``last``, ``prev`` (the last two good solutions), ``run`` (good
-    columns in a row just before), ``sign`` (the determinant's sign on the branch) and
-    ``found`` (an assembly known) carry the state in and out."""
+    ``extra_start`` — or, with ``from_start``, each from its own start ``start_u[row, j]``
+    on the branch of determinant sign ``start_sign[row, j]`` (a NaN start: not solved).
+    ``last``, ``prev`` (the last two good solutions), ``run`` (good columns in a row just
+    before), ``sign`` (the determinant's sign on the branch) and ``found`` (an assembly
+    known) carry the state in and out.
+
+    A step with fewer than two good columns just before (the first after the assembly,
+    or after a break) is checked by the first-order predictor ``last + δ``, ``δ`` the
+    tangent step ``−J(last)⁻¹ F(last)`` at the new column (the velocity times the
+    input's step): the solution must lie within :data:`JUMP_ANGLE` (or
+    :data:`JUMP_LENGTH` of the size) or twice ``|δ|`` of it, as a later step is checked
+    against the line through its last two."""
     n_rows = K.shape[1]
     n_cols = K.shape[2]
     m = angle.shape[0]
@@ -282,6 +293,7 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
     J = np.empty((m, m))
     dx = np.empty(m)
     u = np.empty(m)
+    tangent = np.empty(m)
     for row in range(n_rows):
         for col in range(first, n_regular):
             size = _size(K, row, col, ru, rc)
@@ -304,6 +316,14 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     u[i] = 2.0 * last[row, i] - prev[row, i]
                 else:
                     u[i] = last[row, i]
+            predicted = False
+            if run[row] < 2:  # no line through two good columns: the tangent predictor
+                _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J)
+                d0, _ = _step(J, F, dx)
+                predicted = d0 != 0.0 and math.isfinite(d0)
+                for i in range(m):
+                    tangent[i] = dx[i]
+                    predicted = predicted and math.isfinite(dx[i])
             ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
                                      size, F, J, dx)
             code = OK
@@ -320,6 +340,13 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size, step)
                     if d > limit:
                         code = JUMP
+            elif predicted:
+                for i in range(m):
+                    d = abs(u[i] - (last[row, i] + tangent[i]))
+                    limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
+                                2.0 * abs(tangent[i]))
+                    if d > limit:
+                        code = JUMP
             status[row, col] = code
             det_out[row, col] = det if code == OK else 0.0
             if code == OK:
@@ -333,6 +360,32 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                 for i in range(m):
                     U[row, col, i] = math.nan
         for col in range(n_regular, n_cols):
+            if from_start:
+                j = col - n_regular
+                status[row, col] = NO_CONVERGENCE
+                det_out[row, col] = 0.0
+                usable = True
+                for i in range(m):
+                    u[i] = start_u[row, j, i]
+                    U[row, col, i] = math.nan
+                    usable = usable and math.isfinite(u[i])
+                if not usable:
+                    continue
+                size = _size(K, row, col, ru, rc)
+                ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac,
+                                         angle, size, F, J, dx)
+                if not ok:
+                    continue
+                if not ratio > singular_sin:
+                    status[row, col] = DEAD
+                elif (det > 0) != (start_sign[row, j] > 0):
+                    status[row, col] = JUMP
+                else:
+                    status[row, col] = OK
+                    det_out[row, col] = det
+                    for i in range(m):
+                        U[row, col, i] = u[i]
+                continue
             s = extra_start[row, col - n_regular]
             near = -1
             for d in range(n_regular):
@@ -397,7 +450,8 @@ class Carry:
 def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
                    singular_sin: float, carry: Carry | None = None,
                    n_regular: int | None = None,
-                   extra_start: NDArray[np.int64] | None = None
+                   extra_start: NDArray[np.int64] | None = None,
+                   extra_from: tuple[Array, Array] | None = None
                    ) -> tuple[Array, NDArray[np.int8], Array, Carry]:
     """Solve the block at every row and column of the known stack.
 
@@ -406,7 +460,11 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
     first assembly (−1: variant 1, +1: variant 2, 0: any); ``guess`` approximate values
     (SI) of some unknowns by index.  ``carry`` continues an earlier call whose last
     column is this call's column 0.  Columns from ``n_regular`` on are arbitrary inputs,
-    each solved from the regular column ``extra_start[row, j]`` (or the nearest good one).
+    each solved from the regular column ``extra_start[row, j]`` (or the nearest good one)
+    — or, with ``extra_from = (start, sign)`` (``(R, C − n_regular, m)`` and
+    ``(R, C − n_regular)``), each from its own start, kept only on the branch of the
+    determinant sign given (the existence check's zoom between positions; a NaN start is
+    not solved and counts as :data:`NO_CONVERGENCE`).
 
     Returns the unknowns ``(R, C, m)`` (NaN where not OK), the status ``(R, C)``
     (:data:`OK`, :data:`NO_CONVERGENCE`, :data:`DEAD`, :data:`JUMP`), the determinant
@@ -432,6 +490,12 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
             carry.status_end, carry.det_end)))
         U[:, 0], status[:, 0], det[:, 0] = carry.u_end, carry.status_end, carry.det_end
         first = 1
+    n_extra = n_cols - n_regular
+    if extra_from is None:
+        start_u, start_sign = np.zeros((n_rows, n_extra, m)), np.zeros((n_rows, n_extra))
+    else:
+        start_u = np.ascontiguousarray(extra_from[0], dtype=float).reshape(n_rows, n_extra, m)
+        start_sign = np.ascontiguousarray(extra_from[1], dtype=float).reshape(n_rows, n_extra)
     guessed = np.zeros(m, dtype=bool)
     values = np.zeros(m)
     for i, v in guess.items():
@@ -440,7 +504,7 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
               plan.r_col, plan.a_unknown, plan.a_scale, plan.a_col, plan.angle, first,
               n_regular, extra, start_points(m), int(want), guessed, values,
               float(singular_sin), carry.last, carry.prev, carry.run, carry.sign,
-              carry.found, U, status, det)
+              carry.found, U, status, det, extra_from is not None, start_u, start_sign)
     end = n_regular - 1
     carry.u_end, carry.status_end, carry.det_end = (U[:, end].copy(), status[:, end].copy(),
                                                     det[:, end].copy())

@@ -180,6 +180,9 @@ class _Setup:
     #: ``(D, K)`` (the nearest position by argument 1)
     n_regular: int | None = None
     extra_start: NDArray[np.int64] | None = None
+    #: the existence check's zoom: per coupled block (number), a start ``(R, K, m)``
+    #: and the branch's determinant sign ``(R, K)`` for each extra column
+    block_starts: dict[int, tuple[Array, Array]] | None = None
 
     def link_value(self, name: str, root: Value) -> Value:
         """The value of linked parameter ``name`` given its root's value (SI)."""
