@@ -281,11 +281,13 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
     known) carry the state in and out.
 
     A step with fewer than two good columns just before (the first after the assembly,
-    or after a break) is checked by the first-order predictor ``last + δ``, ``δ`` the
-    tangent step ``−J(last)⁻¹ F(last)`` at the new column (the velocity times the
-    input's step): the solution must lie within :data:`JUMP_ANGLE` (or
-    :data:`JUMP_LENGTH` of the size) or twice ``|δ|`` of it, as a later step is checked
-    against the line through its last two."""
+    or after a break) is checked by the first-order predictor ``last + δ``: ``δ =
+    −J⁻¹ F(last)``, ``F`` the residual of the last solution at the new column and ``J``
+    the Jacobian at the last solution's own column (the velocity times the input's
+    step; after a break, where that column is not at hand, at the new column): the
+    solution must lie within :data:`JUMP_ANGLE` (or :data:`JUMP_LENGTH` of the size) or
+    twice ``|δ|`` of it, as a later step is checked against the line through its last
+    two."""
     n_rows = K.shape[1]
     n_cols = K.shape[2]
     m = angle.shape[0]
@@ -319,6 +321,12 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
             predicted = False
             if run[row] < 2:  # no line through two good columns: the tangent predictor
                 _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J)
+                if run[row] == 1:  # the Jacobian where the last solution holds (col − 1)
+                    for i in range(m):
+                        tangent[i] = F[i]
+                    _evaluate(K, row, col - 1, u, eq, ru, rs, rc, au, as_, ac, F, J)
+                    for i in range(m):
+                        F[i] = tangent[i]
                 d0, _ = _step(J, F, dx)
                 predicted = d0 != 0.0 and math.isfinite(d0)
                 for i in range(m):
