@@ -24,6 +24,7 @@ from oracles.assemblies import Equations
 from test_coupled_blocks import BASE, triad
 
 import mechloop
+from mechloop.model.check import require_valid
 from mechloop.modules.coupled import JUMP, OK, Plan, continue_block
 from mechloop.solve.designs import solve_designs
 from mechloop.solve.existence import THRESHOLD, assembles_throughout
@@ -166,3 +167,23 @@ def test_a_same_sign_jump_on_the_first_step_is_a_jump():
     U2, status2, _, _ = continue_block(plan, near, want=1, guess={}, singular_sin=1e-6)
     assert (status2 == OK).all()
     np.testing.assert_allclose(U2[0, 1], Uf[0, 1], atol=1e-12)
+
+
+# ------------------------------------------------------------------ variant auto
+
+def test_variant_auto_on_a_block_follows_the_assembly_as_a_fixed_variant_does():
+    """``variant: auto`` on a contour of a block: the first assembly as without it (here
+    the guess's), followed by continuity — over a turn where the determinant keeps its
+    sign, exactly the numbers and breaks of the fixed variant; the check between
+    positions gives the same verdict."""
+    fixed = window_model(50, 1.108)
+    contours = list(fixed.contours)
+    contours[0] = contours[0].model_copy(update={"variant": "auto"})
+    auto = fixed.model_copy(update={"contours": contours})
+    assert require_valid(auto).blocks[0].variant == "auto"
+    a, b = mechloop.solve(fixed), mechloop.solve(auto)
+    assert not a.broken.any() and not b.broken.any()
+    for name in ("a1", "a3", "a6", "a7"):
+        np.testing.assert_array_equal(a.values[name], b.values[name])
+        np.testing.assert_array_equal(a.rates[name], b.rates[name])
+    assert assembles_throughout(fixed).feasible[0] and assembles_throughout(auto).feasible[0]

@@ -271,23 +271,26 @@ def _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size, starts, 
 def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_start,
               starts, want, guessed, guess, singular_sin,
               last, prev, run, sign, found, U, status, det_out,
-              from_start, start_u, start_sign):  # pragma: no cover
+              from_start, start_u, start_sign, track):  # pragma: no cover
     """Every row (design) along the columns (positions) ``first..n_regular−1`` by
     continuation, then the extra columns each from its nearest regular column
     ``extra_start`` — or, with ``from_start``, each from its own start ``start_u[row, j]``
     on the branch of determinant sign ``start_sign[row, j]`` (a NaN start: not solved).
     ``last``, ``prev`` (the last two good solutions), ``run`` (good columns in a row just
     before), ``sign`` (the determinant's sign on the branch) and ``found`` (an assembly
-    known) carry the state in and out.
+    known) carry the state in and out.  With ``track`` (a block of ``variant: auto``)
+    the determinant's sign may change from one column to the next where the solution
+    passes the predictor check (a continuous path through a singular position): the
+    branch's sign then follows it.  A start sign 0 accepts either sign.
 
     A step with fewer than two good columns just before (the first after the assembly,
     or after a break) is checked by the first-order predictor ``last + δ``: ``δ =
-    −J⁻¹ F(last)``, ``F`` the residual of the last solution at the new column and ``J``
-    the Jacobian at the last solution's own column (the velocity times the input's
-    step; after a break, where that column is not at hand, at the new column): the
-    solution must lie within :data:`JUMP_ANGLE` (or :data:`JUMP_LENGTH` of the size) or
-    twice ``|δ|`` of it, as a later step is checked against the line through its last
-    two."""
+    −J⁻¹ F``, ``F`` and ``J`` the residual and Jacobian of the last solution at the new
+    column (the velocity times the input's step, to first order; the Jacobian where
+    the last solution holds instead was tried and passes more jumps near a limit
+    position, where it is nearly singular): the solution must lie within
+    :data:`JUMP_ANGLE` (or :data:`JUMP_LENGTH` of the size) or twice ``|δ|`` of it, as a
+    later step is checked against the line through its last two."""
     n_rows = K.shape[1]
     n_cols = K.shape[2]
     m = angle.shape[0]
@@ -321,12 +324,6 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
             predicted = False
             if run[row] < 2:  # no line through two good columns: the tangent predictor
                 _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J)
-                if run[row] == 1:  # the Jacobian where the last solution holds (col − 1)
-                    for i in range(m):
-                        tangent[i] = F[i]
-                    _evaluate(K, row, col - 1, u, eq, ru, rs, rc, au, as_, ac, F, J)
-                    for i in range(m):
-                        F[i] = tangent[i]
                 d0, _ = _step(J, F, dx)
                 predicted = d0 != 0.0 and math.isfinite(d0)
                 for i in range(m):
@@ -335,26 +332,35 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
             ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
                                      size, F, J, dx)
             code = OK
+            flip = False
             if not ok:
                 code = NO_CONVERGENCE
             elif not ratio > singular_sin:
                 code = DEAD
-            elif (det > 0) != (sign[row] > 0):
-                code = JUMP
-            elif run[row] >= 2:
-                for i in range(m):
-                    d = abs(u[i] - (2.0 * last[row, i] - prev[row, i]))
-                    step = 2.0 * abs(last[row, i] - prev[row, i])
-                    limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size, step)
-                    if d > limit:
+            else:
+                if (det > 0) != (sign[row] > 0):
+                    if track:  # variant auto: the sign may change on a continuous path
+                        flip = True
+                    else:
                         code = JUMP
-            elif predicted:
-                for i in range(m):
-                    d = abs(u[i] - (last[row, i] + tangent[i]))
-                    limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
-                                2.0 * abs(tangent[i]))
-                    if d > limit:
-                        code = JUMP
+                if code == OK and run[row] >= 2:
+                    for i in range(m):
+                        d = abs(u[i] - (2.0 * last[row, i] - prev[row, i]))
+                        step = 2.0 * abs(last[row, i] - prev[row, i])
+                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size, step)
+                        if d > limit:
+                            code = JUMP
+                elif code == OK and predicted:
+                    for i in range(m):
+                        d = abs(u[i] - (last[row, i] + tangent[i]))
+                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
+                                    2.0 * abs(tangent[i]))
+                        if d > limit:
+                            code = JUMP
+                elif code == OK and flip:
+                    code = JUMP  # no predictor to tell a continuous path from a jump
+            if code == OK and flip:
+                sign[row] = 1 if det > 0 else -1
             status[row, col] = code
             det_out[row, col] = det if code == OK else 0.0
             if code == OK:
@@ -386,7 +392,7 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     continue
                 if not ratio > singular_sin:
                     status[row, col] = DEAD
-                elif (det > 0) != (start_sign[row, j] > 0):
+                elif start_sign[row, j] != 0 and (det > 0) != (start_sign[row, j] > 0):
                     status[row, col] = JUMP
                 else:
                     status[row, col] = OK
@@ -459,7 +465,8 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
                    singular_sin: float, carry: Carry | None = None,
                    n_regular: int | None = None,
                    extra_start: NDArray[np.int64] | None = None,
-                   extra_from: tuple[Array, Array] | None = None
+                   extra_from: tuple[Array, Array] | None = None,
+                   track: bool = False
                    ) -> tuple[Array, NDArray[np.int8], Array, Carry]:
     """Solve the block at every row and column of the known stack.
 
@@ -472,7 +479,10 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
     — or, with ``extra_from = (start, sign)`` (``(R, C − n_regular, m)`` and
     ``(R, C − n_regular)``), each from its own start, kept only on the branch of the
     determinant sign given (the existence check's zoom between positions; a NaN start is
-    not solved and counts as :data:`NO_CONVERGENCE`).
+    not solved and counts as :data:`NO_CONVERGENCE`; a sign 0 accepts either).
+    ``track``: ``variant: auto`` — the assembly is followed by continuity, its
+    determinant's sign changing where the solution passes the jump test (see
+    :func:`_continue`).
 
     Returns the unknowns ``(R, C, m)`` (NaN where not OK), the status ``(R, C)``
     (:data:`OK`, :data:`NO_CONVERGENCE`, :data:`DEAD`, :data:`JUMP`), the determinant
@@ -512,7 +522,8 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
               plan.r_col, plan.a_unknown, plan.a_scale, plan.a_col, plan.angle, first,
               n_regular, extra, start_points(m), int(want), guessed, values,
               float(singular_sin), carry.last, carry.prev, carry.run, carry.sign,
-              carry.found, U, status, det, extra_from is not None, start_u, start_sign)
+              carry.found, U, status, det, extra_from is not None, start_u, start_sign,
+              bool(track))
     end = n_regular - 1
     carry.u_end, carry.status_end, carry.det_end = (U[:, end].copy(), status[:, end].copy(),
                                                     det[:, end].copy())

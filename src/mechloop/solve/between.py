@@ -81,7 +81,7 @@ def contour_margins(info: ContourInfo | BlockMargin, values: Mapping[str, Array]
     (``sign`` the branch's)."""
     if isinstance(info, BlockMargin):
         raw = info.raw(values)
-        return raw if sign is None else raw * sign
+        return raw if sign is None or info.tracked else raw * sign
     u1, u2 = info.functions
     if info.module == "Pl4":
         return np.sin(values[u1] - values[u2]) ** 2

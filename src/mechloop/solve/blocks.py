@@ -46,11 +46,11 @@ def unknowns_of(block: BlockInfo, infos: list[ContourInfo]) -> tuple[str, ...]:
 
 def wanted_sign(block: BlockInfo, infos: list[ContourInfo]) -> int:
     """The determinant sign of the first assembly: −1 for variant 1 (and ``auto``: the
-    assembly of variant 1 at the first position, then followed by continuity — what
-    ``auto`` means for an elementary contour, and what the continuation does for every
-    block), +1 for variant 2 — the convention of Pl3/Pl4 —; for a forced Pl1 +1 (its
-    length positive: the determinant is that length), for a forced Pl2 0 (any: one
-    solution)."""
+    assembly of variant 1 at the first position, then followed by continuity through a
+    change of the determinant's sign — what ``auto`` means for an elementary contour —,
+    :func:`~mechloop.modules.coupled.continue_block`'s ``track``), +1 for variant 2 —
+    the convention of Pl3/Pl4 —; for a forced Pl1 +1 (its length positive: the
+    determinant is that length), for a forced Pl2 0 (any: one solution)."""
     if not block.coupled and MODULE_SOLUTIONS.get(infos[0].module, 2) == 1:
         return 1 if infos[0].module == "Pl1" else 0
     return 1 if block.variant == 2 else -1
@@ -172,7 +172,9 @@ class BlockMargin:
     block the sine between the columns, so ``ρ²`` is the elementary modules' ``sin²``)
     and ``s = sign(det J)`` times the branch's sign (given per design), so the margin is
     positive on the branch followed and changes sign where the block passes a singular
-    position onto another assembly.  ``number`` is the block's first contour (where its
+    position onto another assembly — except for a block of ``variant: auto``, which
+    follows its assembly through such a change: its margin is ``ρ²`` and its sign
+    (:meth:`branch`) 0, either.  ``number`` is the block's first contour (where its
     breaks are reported), ``module`` :data:`~mechloop.model.structure.COUPLED`."""
 
     def __init__(self, block: BlockInfo, setup):
@@ -180,6 +182,7 @@ class BlockMargin:
         from mechloop.modules.coupled import Plan
 
         self.block, self.number, self.module = block, block.contours[0], COUPLED
+        self.tracked = block.variant == "auto"
         self.unknowns = block.unknowns
         self.angle = np.array([u[0] == "a" for u in block.unknowns])
         structure = setup.structure
@@ -223,11 +226,14 @@ class BlockMargin:
         norms = np.prod(np.linalg.norm(J, axis=-2), axis=-1)
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(norms > 0, np.abs(det) / norms, 0.0)
-        return np.where(finite, np.sign(det) * ratio * ratio, np.nan)
+        sign = 1.0 if self.tracked else np.sign(det)
+        return np.where(finite, sign * ratio * ratio, np.nan)
 
     def branch(self, raw: Array) -> Array:
         """The branch's sign per design ``(D, 1)``: the sign of the first finite margin
-        along positions (+1 if none)."""
+        along positions (+1 if none); 0 (either) for ``variant: auto``."""
+        if self.tracked:
+            return np.zeros((raw.shape[0], 1))
         finite = np.isfinite(raw)
         first = np.argmax(finite, axis=-1)
         value = np.take_along_axis(raw, first[:, None], axis=-1)
