@@ -433,6 +433,55 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     U[row, col, i] = u[i]
 
 
+@njit(cache=True, nogil=True)
+def _signed_ratios(eq, ru, au, r, a, rs, as_, m, out):  # pragma: no cover - compiled
+    """``sign(det J)·|det J| / Π ‖column‖`` of the block Jacobian at every element ``n``
+    of the term values ``r[t, n]``, ``a[t, n]`` (scales ``rs``, ``as_`` likewise), into
+    ``out[n]`` (NaN where a value is not finite)."""
+    J = np.empty((m, m))
+    F = np.zeros(m)
+    dx = np.empty(m)
+    for n in range(out.shape[0]):
+        for i in range(m):
+            F[i] = 0.0
+            for j in range(m):
+                J[i, j] = 0.0
+        finite = True
+        for t in range(eq.shape[0]):
+            c = math.cos(a[t, n])
+            s = math.sin(a[t, n])
+            e = 2 * eq[t]
+            if ru[t] >= 0:
+                J[e, ru[t]] += rs[t, n] * c
+                J[e + 1, ru[t]] += rs[t, n] * s
+            if au[t] >= 0:
+                J[e, au[t]] -= as_[t, n] * r[t, n] * s
+                J[e + 1, au[t]] += as_[t, n] * r[t, n] * c
+            finite = finite and math.isfinite(r[t, n]) and math.isfinite(a[t, n])
+        if not finite:
+            out[n] = math.nan
+            continue
+        det, ratio = _step(J, F, dx)
+        out[n] = ratio if det > 0 else -ratio
+
+
+def block_signed_ratio(plan: Plan, r: list[Array], a: list[Array], r_scale: list,
+                       a_scale: list, shape: tuple[int, ...]) -> Array:
+    """``sign(det J)·|det J| / Π ‖column‖`` of the block Jacobian, ``shape`` (NaN where a
+    value is): :func:`block_hadamard` with the determinant's sign, compiled."""
+    size = int(np.prod(shape, dtype=np.int64))
+
+    def stack(values: list) -> Array:
+        return np.ascontiguousarray(np.stack([np.broadcast_to(np.asarray(v, dtype=float),
+                                                              shape).reshape(size)
+                                              for v in values]))
+
+    out = np.empty(size)
+    _signed_ratios(plan.eq, plan.r_unknown, plan.a_unknown, stack(r), stack(a),
+                   stack(r_scale), stack(a_scale), len(plan.unknowns), out)
+    return out.reshape(shape)
+
+
 @functools.lru_cache(maxsize=8)
 def start_points(m: int) -> Array:
     """The fixed starts of the first assembly, ``(STARTS, m)`` fractions in [0, 1): a

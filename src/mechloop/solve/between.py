@@ -117,9 +117,10 @@ def between_positions(values: _Resolver, over: Mapping[str, Array],
     values = {k: v[rows] for k, v in samples.values.items()}
     cand_row, cand_contour, cand_lo, cand_hi = [], [], [], []
     signs: dict[int, Array] = {}
-    branches = {}  # every coupled block: its branch's sign per row (the zoom's starts)
-    for block in check.block_margins:
-        branches[block.block.number] = block.branch(block.raw(values))
+    branches, raws = {}, {}  # every coupled block: its branch's sign per row (the zoom's
+    for block in check.block_margins:  # starts) and its unsigned margin at the samples
+        raws[block.number] = block.raw(values)
+        branches[block.block.number] = block.branch(raws[block.number])
     for ci, info in enumerate(contours):
         sign = None
         if info.module == "Pl2":
@@ -129,7 +130,10 @@ def between_positions(values: _Resolver, over: Mapping[str, Array],
         elif isinstance(info, BlockMargin):
             sign = branches[info.block.number]
             signs[info.number] = sign
-        m = contour_margins(info, values, size, sign)  # NaN at a broken position
+        if isinstance(info, BlockMargin):  # already at hand
+            m = raws[info.number] if info.tracked else raws[info.number] * sign
+        else:
+            m = contour_margins(info, values, size, sign)  # NaN at a broken position
         least[rows] = np.minimum(least[rows], np.where(np.isnan(m), np.inf, m).min(axis=-1))
         # sign changes (Pl2) are breaks between the positions found as they are
         with np.errstate(invalid="ignore"):

@@ -211,23 +211,16 @@ class BlockMargin:
                          angle=self.angle)
 
     def raw(self, values) -> Array:
-        """``sign(det J)·ρ²`` at the solved ``values`` (name -> array, one shape), NaN
-        where a value is."""
-        from mechloop.modules.coupled import block_jacobian
+        """``sign(det J)·ρ²`` (``ρ²`` for ``variant: auto``) at the solved ``values``
+        (name -> array, one shape), NaN where a value is."""
+        from mechloop.modules.coupled import block_signed_ratio
 
         shape = np.shape(values[self.unknowns[0]])
-        r = [np.asarray(values[f"r{n}"], dtype=float) for n, _, _ in self.terms]
-        a = [np.asarray(values[f"a{n}"], dtype=float) for n, _, _ in self.terms]
-        J = block_jacobian(self.plan, r, a, [s for _, s, _ in self.terms],
-                           [s for _, _, s in self.terms], shape)
-        finite = np.isfinite(J).all(axis=(-2, -1))
-        J[~finite] = np.eye(len(self.unknowns))
-        det = np.linalg.det(J)
-        norms = np.prod(np.linalg.norm(J, axis=-2), axis=-1)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = np.where(norms > 0, np.abs(det) / norms, 0.0)
-        sign = 1.0 if self.tracked else np.sign(det)
-        return np.where(finite, sign * ratio * ratio, np.nan)
+        r = [values[f"r{n}"] for n, _, _ in self.terms]
+        a = [values[f"a{n}"] for n, _, _ in self.terms]
+        ratio = block_signed_ratio(self.plan, r, a, [s for _, s, _ in self.terms],
+                                   [s for _, _, s in self.terms], shape)
+        return np.abs(ratio) * (np.abs(ratio) if self.tracked else ratio)
 
     def branch(self, raw: Array) -> Array:
         """The branch's sign per design ``(D, 1)``: the sign of the first finite margin
