@@ -190,3 +190,32 @@ def test_variant_auto_on_a_block_follows_the_assembly_as_a_fixed_variant_does():
         np.testing.assert_array_equal(a.values[name], b.values[name])
         np.testing.assert_array_equal(a.rates[name], b.rates[name])
     assert assembles_throughout(fixed).feasible[0] and assembles_throughout(auto).feasible[0]
+
+
+# ------------------------------------------------------------------ mechloop solve
+
+def test_solve_warns_of_a_triad_break_between_two_positions(tmp_path):
+    """Positions at 71.25°, 73.25°, 75.25° and 77.25°: every one assembles on the branch
+    (the continuation steps over the window), and the solve names the break between
+    positions 0 and 1 with the oracle's ends (71.7609° to 72.9215°, the first test);
+    the command line prints it."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+
+    model = window_model(3, 1.11916)
+    model = model.model_copy(update={"arguments": {1: model.arguments[1].model_copy(
+        update={"table": {0: 71.25, 3: 77.25}})}})
+    res = mechloop.solve(model)
+    assert not res.broken.any()
+    (brk,) = res.breaks_between
+    assert (brk.contour, brk.module, brk.after) == (1, "coupled", 0)
+    np.testing.assert_allclose(np.degrees([brk.start, brk.stop]), [71.7609, 72.9215],
+                               atol=1e-4)
+    path = tmp_path / "triad.json"
+    path.write_text(json.dumps(model.model_dump(mode="json", exclude_none=True)))
+    result = CliRunner().invoke(app, ["solve", str(path)])
+    assert result.exit_code == 0, result.output
+    assert "between positions 0 and 1" in " ".join(result.output.split())
