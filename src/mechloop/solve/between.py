@@ -10,6 +10,12 @@ of all designs solved together by the same closed-form modules
 (:func:`~mechloop.solve.kinematics._solve_block`), the bracket narrowed around the least.
 A point with no solution or a margin at or below :data:`THRESHOLD` is a break; its ends
 are found by bisection when asked for.  Used by :mod:`.existence`.
+
+A coupled block (:class:`~mechloop.solve.blocks.BlockMargin`: its margin ``±ρ²`` from the
+block Jacobian) has no closed form to solve a free-standing input with: the zoom solves it
+by Newton's method from the line through the two solved points around each input (the
+samples, then the zoom's own points), on the branch's determinant sign, and the bisection
+from the last point found assembled on either side (:func:`_predict`, :func:`_solve_at`).
 """
 
 from __future__ import annotations
