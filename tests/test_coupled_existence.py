@@ -219,3 +219,36 @@ def test_solve_warns_of_a_triad_break_between_two_positions(tmp_path):
     result = CliRunner().invoke(app, ["solve", str(path)])
     assert result.exit_code == 0, result.output
     assert "between positions 0 and 1" in " ".join(result.output.split())
+
+
+def test_variant_auto_follows_a_block_through_a_change_of_its_determinant_sign():
+    """A triangle (known side ``d(t)``, unknown angles of sides 1 and 1.5) flattened at
+    ``t = 0.5`` (``d = 2.5``) and reopened: the continuous motion turns side 1 on through
+    180° (its angle linear in ``t`` near there, the determinant changing sign). With
+    ``track`` (``variant: auto``) the block follows it and the sign; without, the step
+    across is a jump and the assembly restarts on the old sign (the mirror image)."""
+    r2, r3, k = 1.0, 1.5, 0.8
+    t = np.linspace(0.0, 1.0, 20)
+    d = (r2 + r3) * (1 - k * (t - 0.5) ** 2)
+    known = np.empty((5, 1, t.size))
+    for i, v in enumerate([0.0, 1.0, r2, r3]):
+        known[i] = v
+    known[4] = d
+    terms = np.array([(0, -1, 1, 4, -1, 1, 0), (0, -1, 1, 2, 0, 1, 0),
+                      (0, -1, 1, 3, 1, 1, 0)], dtype=np.int64).T
+    plan = Plan(unknowns=("a2", "a3"), eq=terms[0], r_unknown=terms[1], r_scale=terms[2],
+                r_col=terms[3], a_unknown=terms[4], a_scale=terms[5], a_col=terms[6],
+                angle=np.ones(2, dtype=bool))
+    U, status, det, _ = continue_block(plan, known, want=-1, guess={}, singular_sin=1e-6,
+                                       track=True)
+    assert (status == OK).all()
+    np.testing.assert_array_equal(np.sign(det[0]), np.where(t < 0.5, -1.0, 1.0))
+    # the closed form: side 1 makes the triangle's angle γ at the origin with −d, on one
+    # side before the flat position and on the other after it: −π ± γ,
+    # γ = arccos((d² + r2² − r3²) / (2 d r2))
+    gamma = np.arccos(np.clip((d ** 2 + r2 ** 2 - r3 ** 2) / (2 * d * r2), -1, 1))
+    expected = -np.pi + np.where(t < 0.5, gamma, -gamma)
+    np.testing.assert_allclose(U[0, :, 0], expected, atol=1e-9)
+    U, status, det, _ = continue_block(plan, known, want=-1, guess={}, singular_sin=1e-6)
+    assert status[0, 10] == JUMP and (np.delete(status[0], 10) == OK).all()
+    assert (np.sign(np.delete(det[0], 10)) == -1).all()
