@@ -250,6 +250,9 @@ FIGURES: list[tuple[str, str, tuple]] = [
     # energy example (the compressor)
     (R, r"efficiency \((?P<fig>28) %\)",
      ("test", "tests/test_readme_commands.py::test_energy_example_prints_a_meaningful_efficiency")),
+    # a coupled block's break between two positions
+    (R, r"lost for about (?P<fig>1\.2)° of the", ("test", "tests/test_coupled_existence.py::"
+     "test_a_triad_break_between_two_samples_is_found_where_the_oracle_loses_it")),
     # the real roof support against the simplification
     (R, r"(?P<fig>4\.30) MN at the lowest", ("computed", "real low MN")),
     (R, r"(?P<fig>3\.32) MN at the top", ("computed", "real top MN")),

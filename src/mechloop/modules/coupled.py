@@ -29,10 +29,11 @@ relative test the elementary modules use — for 2×2 it is the sine between the
 or the solution jumped to another assembly branch (the determinant changed sign, or,
 with a predictor from the last two positions, the solution lies farther from it than
 twice the last step and more than :data:`JUMP_ANGLE` for an angle or :data:`JUMP_LENGTH`
-of the block's size for a length).  The first step after position 0 and after a break
-has no such predictor: there only the determinant's sign tells the branch (a jump to
-another assembly of the same sign is not seen there).  After a break, later positions
-restart from the last good solution (no predictor).
+of the block's size for a length).  The first step after position 0 and after a break,
+which has no line through two good positions, is checked the same way against the
+first-order predictor ``u + δ`` (``δ = −J⁻¹F`` at the new position from the last
+solution: the velocity times the input's step), with twice ``|δ|`` as the step.  After a
+break, later positions restart from the last good solution.
 
 The continuation is sequential along positions and runs compiled (numba): a block is
 described by integer and float arrays (where each vector's ``r`` and ``α`` come from — a
@@ -269,12 +270,27 @@ def _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size, starts, 
 @njit(cache=True, nogil=True)
 def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_start,
               starts, want, guessed, guess, singular_sin,
-              last, prev, run, sign, found, U, status, det_out):  # pragma: no cover
+              last, prev, run, sign, found, U, status, det_out,
+              from_start, start_u, start_sign, track):  # pragma: no cover
     """Every row (design) along the columns (positions) ``first..n_regular−1`` by
     continuation, then the extra columns each from its nearest regular column
-    ``extra_start``.  ``last``, ``prev`` (the last two good solutions), ``run`` (good
-    columns in a row just before), ``sign`` (the determinant's sign on the branch) and
-    ``found`` (an assembly known) carry the state in and out."""
+    ``extra_start`` — or, with ``from_start``, each from its own start ``start_u[row, j]``
+    on the branch of determinant sign ``start_sign[row, j]`` (a NaN start: not solved).
+    ``last``, ``prev`` (the last two good solutions), ``run`` (good columns in a row just
+    before), ``sign`` (the determinant's sign on the branch) and ``found`` (an assembly
+    known) carry the state in and out.  With ``track`` (a block of ``variant: auto``)
+    the determinant's sign may change from one column to the next where the solution
+    passes the predictor check (a continuous path through a singular position): the
+    branch's sign then follows it.  A start sign 0 accepts either sign.
+
+    A step with fewer than two good columns just before (the first after the assembly,
+    or after a break) is checked by the first-order predictor ``last + δ``: ``δ =
+    −J⁻¹ F``, ``F`` and ``J`` the residual and Jacobian of the last solution at the new
+    column (the velocity times the input's step, to first order; the Jacobian where
+    the last solution holds instead was tried and passes more jumps near a limit
+    position, where it is nearly singular): the solution must lie within
+    :data:`JUMP_ANGLE` (or :data:`JUMP_LENGTH` of the size) or twice ``|δ|`` of it, as a
+    later step is checked against the line through its last two."""
     n_rows = K.shape[1]
     n_cols = K.shape[2]
     m = angle.shape[0]
@@ -282,6 +298,7 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
     J = np.empty((m, m))
     dx = np.empty(m)
     u = np.empty(m)
+    tangent = np.empty(m)
     for row in range(n_rows):
         for col in range(first, n_regular):
             size = _size(K, row, col, ru, rc)
@@ -304,22 +321,46 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     u[i] = 2.0 * last[row, i] - prev[row, i]
                 else:
                     u[i] = last[row, i]
+            predicted = False
+            if run[row] < 2:  # no line through two good columns: the tangent predictor
+                _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J)
+                d0, _ = _step(J, F, dx)
+                predicted = d0 != 0.0 and math.isfinite(d0)
+                for i in range(m):
+                    tangent[i] = dx[i]
+                    predicted = predicted and math.isfinite(dx[i])
             ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
                                      size, F, J, dx)
             code = OK
+            flip = False
             if not ok:
                 code = NO_CONVERGENCE
             elif not ratio > singular_sin:
                 code = DEAD
-            elif (det > 0) != (sign[row] > 0):
-                code = JUMP
-            elif run[row] >= 2:
-                for i in range(m):
-                    d = abs(u[i] - (2.0 * last[row, i] - prev[row, i]))
-                    step = 2.0 * abs(last[row, i] - prev[row, i])
-                    limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size, step)
-                    if d > limit:
+            else:
+                if (det > 0) != (sign[row] > 0):
+                    if track:  # variant auto: the sign may change on a continuous path
+                        flip = True
+                    else:
                         code = JUMP
+                if code == OK and run[row] >= 2:
+                    for i in range(m):
+                        d = abs(u[i] - (2.0 * last[row, i] - prev[row, i]))
+                        step = 2.0 * abs(last[row, i] - prev[row, i])
+                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size, step)
+                        if d > limit:
+                            code = JUMP
+                elif code == OK and predicted:
+                    for i in range(m):
+                        d = abs(u[i] - (last[row, i] + tangent[i]))
+                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
+                                    2.0 * abs(tangent[i]))
+                        if d > limit:
+                            code = JUMP
+                elif code == OK and flip:
+                    code = JUMP  # no predictor to tell a continuous path from a jump
+            if code == OK and flip:
+                sign[row] = 1 if det > 0 else -1
             status[row, col] = code
             det_out[row, col] = det if code == OK else 0.0
             if code == OK:
@@ -333,6 +374,32 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                 for i in range(m):
                     U[row, col, i] = math.nan
         for col in range(n_regular, n_cols):
+            if from_start:
+                j = col - n_regular
+                status[row, col] = NO_CONVERGENCE
+                det_out[row, col] = 0.0
+                usable = True
+                for i in range(m):
+                    u[i] = start_u[row, j, i]
+                    U[row, col, i] = math.nan
+                    usable = usable and math.isfinite(u[i])
+                if not usable:
+                    continue
+                size = _size(K, row, col, ru, rc)
+                ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac,
+                                         angle, size, F, J, dx)
+                if not ok:
+                    continue
+                if not ratio > singular_sin:
+                    status[row, col] = DEAD
+                elif start_sign[row, j] != 0 and (det > 0) != (start_sign[row, j] > 0):
+                    status[row, col] = JUMP
+                else:
+                    status[row, col] = OK
+                    det_out[row, col] = det
+                    for i in range(m):
+                        U[row, col, i] = u[i]
+                continue
             s = extra_start[row, col - n_regular]
             near = -1
             for d in range(n_regular):
@@ -366,6 +433,55 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     U[row, col, i] = u[i]
 
 
+@njit(cache=True, nogil=True)
+def _signed_ratios(eq, ru, au, r, a, rs, as_, m, out):  # pragma: no cover - compiled
+    """``sign(det J)·|det J| / Π ‖column‖`` of the block Jacobian at every element ``n``
+    of the term values ``r[t, n]``, ``a[t, n]`` (scales ``rs``, ``as_`` likewise), into
+    ``out[n]`` (NaN where a value is not finite)."""
+    J = np.empty((m, m))
+    F = np.zeros(m)
+    dx = np.empty(m)
+    for n in range(out.shape[0]):
+        for i in range(m):
+            F[i] = 0.0
+            for j in range(m):
+                J[i, j] = 0.0
+        finite = True
+        for t in range(eq.shape[0]):
+            c = math.cos(a[t, n])
+            s = math.sin(a[t, n])
+            e = 2 * eq[t]
+            if ru[t] >= 0:
+                J[e, ru[t]] += rs[t, n] * c
+                J[e + 1, ru[t]] += rs[t, n] * s
+            if au[t] >= 0:
+                J[e, au[t]] -= as_[t, n] * r[t, n] * s
+                J[e + 1, au[t]] += as_[t, n] * r[t, n] * c
+            finite = finite and math.isfinite(r[t, n]) and math.isfinite(a[t, n])
+        if not finite:
+            out[n] = math.nan
+            continue
+        det, ratio = _step(J, F, dx)
+        out[n] = ratio if det > 0 else -ratio
+
+
+def block_signed_ratio(plan: Plan, r: list[Array], a: list[Array], r_scale: list,
+                       a_scale: list, shape: tuple[int, ...]) -> Array:
+    """``sign(det J)·|det J| / Π ‖column‖`` of the block Jacobian, ``shape`` (NaN where a
+    value is): :func:`block_hadamard` with the determinant's sign, compiled."""
+    size = int(np.prod(shape, dtype=np.int64))
+
+    def stack(values: list) -> Array:
+        return np.ascontiguousarray(np.stack([np.broadcast_to(np.asarray(v, dtype=float),
+                                                              shape).reshape(size)
+                                              for v in values]))
+
+    out = np.empty(size)
+    _signed_ratios(plan.eq, plan.r_unknown, plan.a_unknown, stack(r), stack(a),
+                   stack(r_scale), stack(a_scale), len(plan.unknowns), out)
+    return out.reshape(shape)
+
+
 @functools.lru_cache(maxsize=8)
 def start_points(m: int) -> Array:
     """The fixed starts of the first assembly, ``(STARTS, m)`` fractions in [0, 1): a
@@ -397,7 +513,9 @@ class Carry:
 def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
                    singular_sin: float, carry: Carry | None = None,
                    n_regular: int | None = None,
-                   extra_start: NDArray[np.int64] | None = None
+                   extra_start: NDArray[np.int64] | None = None,
+                   extra_from: tuple[Array, Array] | None = None,
+                   track: bool = False
                    ) -> tuple[Array, NDArray[np.int8], Array, Carry]:
     """Solve the block at every row and column of the known stack.
 
@@ -406,7 +524,14 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
     first assembly (−1: variant 1, +1: variant 2, 0: any); ``guess`` approximate values
     (SI) of some unknowns by index.  ``carry`` continues an earlier call whose last
     column is this call's column 0.  Columns from ``n_regular`` on are arbitrary inputs,
-    each solved from the regular column ``extra_start[row, j]`` (or the nearest good one).
+    each solved from the regular column ``extra_start[row, j]`` (or the nearest good one)
+    — or, with ``extra_from = (start, sign)`` (``(R, C − n_regular, m)`` and
+    ``(R, C − n_regular)``), each from its own start, kept only on the branch of the
+    determinant sign given (the existence check's zoom between positions; a NaN start is
+    not solved and counts as :data:`NO_CONVERGENCE`; a sign 0 accepts either).
+    ``track``: ``variant: auto`` — the assembly is followed by continuity, its
+    determinant's sign changing where the solution passes the jump test (see
+    :func:`_continue`).
 
     Returns the unknowns ``(R, C, m)`` (NaN where not OK), the status ``(R, C)``
     (:data:`OK`, :data:`NO_CONVERGENCE`, :data:`DEAD`, :data:`JUMP`), the determinant
@@ -432,6 +557,12 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
             carry.status_end, carry.det_end)))
         U[:, 0], status[:, 0], det[:, 0] = carry.u_end, carry.status_end, carry.det_end
         first = 1
+    n_extra = n_cols - n_regular
+    if extra_from is None:
+        start_u, start_sign = np.zeros((n_rows, n_extra, m)), np.zeros((n_rows, n_extra))
+    else:
+        start_u = np.ascontiguousarray(extra_from[0], dtype=float).reshape(n_rows, n_extra, m)
+        start_sign = np.ascontiguousarray(extra_from[1], dtype=float).reshape(n_rows, n_extra)
     guessed = np.zeros(m, dtype=bool)
     values = np.zeros(m)
     for i, v in guess.items():
@@ -440,7 +571,8 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
               plan.r_col, plan.a_unknown, plan.a_scale, plan.a_col, plan.angle, first,
               n_regular, extra, start_points(m), int(want), guessed, values,
               float(singular_sin), carry.last, carry.prev, carry.run, carry.sign,
-              carry.found, U, status, det)
+              carry.found, U, status, det, extra_from is not None, start_u, start_sign,
+              bool(track))
     end = n_regular - 1
     carry.u_end, carry.status_end, carry.det_end = (U[:, end].copy(), status[:, end].copy(),
                                                     det[:, end].copy())

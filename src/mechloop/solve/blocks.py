@@ -45,9 +45,12 @@ def unknowns_of(block: BlockInfo, infos: list[ContourInfo]) -> tuple[str, ...]:
 
 
 def wanted_sign(block: BlockInfo, infos: list[ContourInfo]) -> int:
-    """The determinant sign of the first assembly: −1 for variant 1 (and ``auto``), +1
-    for variant 2 — the convention of Pl3/Pl4 —; for a forced Pl1 +1 (its length
-    positive: the determinant is that length), for a forced Pl2 0 (any: one solution)."""
+    """The determinant sign of the first assembly: −1 for variant 1 (and ``auto``: the
+    assembly of variant 1 at the first position, then followed by continuity through a
+    change of the determinant's sign — what ``auto`` means for an elementary contour —,
+    :func:`~mechloop.modules.coupled.continue_block`'s ``track``), +1 for variant 2 —
+    the convention of Pl3/Pl4 —; for a forced Pl1 +1 (its length positive: the
+    determinant is that length), for a forced Pl2 0 (any: one solution)."""
     if not block.coupled and MODULE_SOLUTIONS.get(infos[0].module, 2) == 1:
         return 1 if infos[0].module == "Pl1" else 0
     return 1 if block.variant == 2 else -1
@@ -108,10 +111,12 @@ def solve_coupled(block: BlockInfo, setup, params: dict, resolve: Callable,
     guess = {index[n]: v for n, v in block.guess.items() if n in index}
     n_regular = getattr(setup, "n_regular", None)
     extra_start = getattr(setup, "extra_start", None)
+    extra_from = (getattr(setup, "block_starts", None) or {}).get(block.number)
     U, status, det, new_carry = continue_block(
         plan, known, want=wanted_sign(block, infos), guess=guess,
         singular_sin=SINGULAR_SIN, carry=carry, n_regular=n_regular,
-        extra_start=None if extra_start is None else extra_start.reshape(n_rows, -1))
+        extra_start=None if extra_start is None else extra_start.reshape(n_rows, -1),
+        extra_from=extra_from)
 
     good = (status == 0).reshape(shape)
     for i, name in enumerate(unknowns):
@@ -158,3 +163,71 @@ def _rates(plan, terms, params: dict, known: Array, columns: list, shape, good, 
     for i, name in enumerate(plan.unknowns):
         params[name].rate = rate[..., i]
         params[name].accel = accel[..., i]
+
+
+class BlockMargin:
+    """The existence margin of a coupled block, for the check between positions
+    (:mod:`mechloop.solve.between`): ``s·ρ²`` with ``ρ = |det J| / Π ‖column‖`` of the
+    block Jacobian (scale-free: 1 for orthogonal columns, 0 at a dead point; for a 2×2
+    block the sine between the columns, so ``ρ²`` is the elementary modules' ``sin²``)
+    and ``s = sign(det J)`` times the branch's sign (given per design), so the margin is
+    positive on the branch followed and changes sign where the block passes a singular
+    position onto another assembly — except for a block of ``variant: auto``, which
+    follows its assembly through such a change: its margin is ``ρ²`` and its sign
+    (:meth:`branch`) 0, either.  ``number`` is the block's first contour (where its
+    breaks are reported), ``module`` :data:`~mechloop.model.structure.COUPLED`."""
+
+    def __init__(self, block: BlockInfo, setup):
+        from mechloop.model.structure import COUPLED
+        from mechloop.modules.coupled import Plan
+
+        self.block, self.number, self.module = block, block.contours[0], COUPLED
+        self.tracked = block.variant == "auto"
+        self.unknowns = block.unknowns
+        self.angle = np.array([u[0] == "a" for u in block.unknowns])
+        structure = setup.structure
+        by_number = {c.number: c for c in structure.contours}
+        index = {u: i for i, u in enumerate(block.unknowns)}
+        eq, ru, au, self.terms = [], [], [], []
+        for j, n in enumerate(block.contours):
+            for number in by_number[n].vectors:
+                found = []
+                for name in (f"r{number}", f"a{number}"):
+                    chain = structure.links.get(name)
+                    if name in index:
+                        found.append((index[name], 1.0))
+                    elif chain is not None and chain.root in index:
+                        found.append((index[chain.root], setup.scales.get(name, 1.0)))
+                    else:
+                        found.append((-1, 1.0))
+                eq.append(j)
+                ru.append(found[0][0])
+                au.append(found[1][0])
+                self.terms.append((number, found[0][1], found[1][1]))
+        none = np.full(len(eq), -1, dtype=np.int64)  # columns: unused by block_jacobian
+        self.plan = Plan(unknowns=block.unknowns, eq=np.array(eq, dtype=np.int64),
+                         r_unknown=np.array(ru, dtype=np.int64), r_scale=none, r_col=none,
+                         a_unknown=np.array(au, dtype=np.int64), a_scale=none, a_col=none,
+                         angle=self.angle)
+
+    def raw(self, values) -> Array:
+        """``sign(det J)·ρ²`` (``ρ²`` for ``variant: auto``) at the solved ``values``
+        (name -> array, one shape), NaN where a value is."""
+        from mechloop.modules.coupled import block_signed_ratio
+
+        shape = np.shape(values[self.unknowns[0]])
+        r = [values[f"r{n}"] for n, _, _ in self.terms]
+        a = [values[f"a{n}"] for n, _, _ in self.terms]
+        ratio = block_signed_ratio(self.plan, r, a, [s for _, s, _ in self.terms],
+                                   [s for _, _, s in self.terms], shape)
+        return np.abs(ratio) * (np.abs(ratio) if self.tracked else ratio)
+
+    def branch(self, raw: Array) -> Array:
+        """The branch's sign per design ``(D, 1)``: the sign of the first finite margin
+        along positions (+1 if none); 0 (either) for ``variant: auto``."""
+        if self.tracked:
+            return np.zeros((raw.shape[0], 1))
+        finite = np.isfinite(raw)
+        first = np.argmax(finite, axis=-1)
+        value = np.take_along_axis(raw, first[:, None], axis=-1)
+        return np.where(np.isfinite(value) & (value < 0), -1.0, 1.0)

@@ -22,10 +22,19 @@ loop is decided over the range of the argument's values at the positions).  A co
 with ``variant: auto`` is checked itself (its margin does not depend on the variant); a
 contour that needs one (directly or through others) is checked at the positions only,
 since which variant holds between two positions is not known: give such contours a fixed
-variant for the check between positions.  A coupled block (contours solved together by
-Newton's continuation, :mod:`mechloop.modules.coupled`), and every contour that needs
-one, is likewise checked at the positions only: its assembly between two positions is
-the one continued from them, which the zoom's free-standing inputs do not know.
+variant for the check between positions.
+
+A **coupled block** (contours solved together by Newton's continuation,
+:mod:`mechloop.modules.coupled`) is checked between positions as one: its margin is
+``±ρ²``, ``ρ = |det J| / Π ‖column‖`` of the block Jacobian (scale-free, the sine between
+the columns for a 2×2 block), signed positive on the branch followed
+(:class:`~mechloop.solve.blocks.BlockMargin`); its minima are located like the others',
+and the zoom solves the block at each intermediate input by Newton's method started
+from the line through the two solved points around it (the continuation's predictor),
+on the branch's determinant sign.  Where Newton does not converge, meets a singular
+Jacobian, lands on the other sign or jumps farther than the continuation allows, the
+block breaks.  Contours that need a block are checked between positions too (the zoom
+solves the block first).
 """
 
 from __future__ import annotations
@@ -38,13 +47,14 @@ from numpy.typing import ArrayLike, NDArray
 
 from mechloop.model.check import require_valid
 from mechloop.model.schema import Model
-from mechloop.model.structure import COUPLED, ContourInfo, Structure, param_role
+from mechloop.model.structure import ContourInfo, Structure, param_role
 from mechloop.solve.between import (
     THRESHOLD,
     BreakInterval,
     Sampled,
     between_positions,
 )
+from mechloop.solve.blocks import BlockMargin
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import _constant_si, _Setup, _setup
 from mechloop.solve.loop_forms import CrankLoop, least_margin, lost_intervals
@@ -117,13 +127,22 @@ class ExistenceCheck:
                 factor *= role.ratio
                 current = role.link
             self.chains[name] = path
-        # contours that need a contour with a tracked variant, directly or not
+        # the coupled blocks, each checked as one (its margin from its Jacobian)
+        self.block_margins = [BlockMargin(b, self.base) for b in self.structure.blocks
+                              if b.coupled]
+        in_block = {n: b.block.contours for b in self.block_margins
+                    for n in b.block.contours}
+        by_number = {c.number: c for c in self.structure.contours}
+        # contours that need an elementary contour with a tracked variant, directly or not
+        # (a block's contours together: a block follows its assembly by continuity)
         self.after_auto: set[int] = set()
         for info in self.base.ordered:  # in solving order: needs come first
-            if info.module == COUPLED or any(
-                    self.structure.contours[n - 1].variant == "auto" or n in self.after_auto
-                    for n in info.needs):
+            needs = {n for c in in_block.get(info.number, (info.number,))
+                     for n in by_number[c].needs} - set(in_block.get(info.number, ()))
+            if any((by_number[n].variant == "auto" and n not in in_block)
+                   or n in self.after_auto for n in needs):
                 self.after_auto.add(info.number)
+        self.in_block = set(in_block)
         self.argument_of = {root: next(k for k, sig in self.args.items() if sig is signal)
                             for root, (signal, _) in self.base.driven.items()}
 
@@ -158,8 +177,10 @@ class ExistenceCheck:
                         breaks.append(BreakInterval(int(d), loop.info.number, start, stop,
                                                     _after(x, start), True))
 
-        generic = [info for info in self.base.ordered if info.number not in loops
-                   and _checked(info, structure) and info.number not in self.after_auto]
+        generic: list = [info for info in self.base.ordered if info.number not in loops
+                         and info.number not in self.in_block
+                         and _checked(info, structure) and info.number not in self.after_auto]
+        generic += [b for b in self.block_margins if b.number not in self.after_auto]
         if generic and 1 in args:
             if samples is None:
                 from mechloop.solve.designs import solve_designs

@@ -187,6 +187,9 @@ class _Setup:
     #: per carried angle, its continuous value near each extra column ``(D, K)`` (SI),
     #: where the solve has no regular positions to take the turns from; see ``turns``
     turn_ref: Mapping[str, Array] | None = None
+    #: the existence check's zoom: per coupled block (number), a start ``(R, K, m)``
+    #: and the branch's determinant sign ``(R, K)`` for each extra column
+    block_starts: dict[int, tuple[Array, Array]] | None = None
 
     def link_value(self, name: str, root: Value) -> Value:
         """The value of linked parameter ``name`` given its root's value (SI)."""
