@@ -197,7 +197,8 @@ def test_between_positions_takes_the_turns_from_the_samples() -> None:
     t = np.arange(90.0)[None, :] + 0.5
     inputs = np.interp(t, np.arange(91), one.arguments[1])
     turns = {"a3": one.value("a3")[None, :]}
-    values, broken = _solve_at(ExistenceCheck(model), {}, inputs, _turns_at(turns, t))
+    values, broken = _solve_at(ExistenceCheck(model), {}, inputs,
+                               turn_ref=_turns_at(turns, t))
     fine = solve(geared_four_bar(*dims, k=-0.4, n=180))
     assert not broken.any()
     for name in ("a3", "a7", "r6"):  # a3 continuous, so a7 = k·a3 + Δ is right
