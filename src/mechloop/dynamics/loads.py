@@ -208,6 +208,28 @@ def _gate(load, placement: Placement, state: Placement, path: tuple,
         sign=sign, rate=placement.results.rate(name))
 
 
+def _dependent(model: Model, load, value, kind: str, unit: str, direction, gate,
+               path: tuple, problems: list[Problem]):
+    """A load's values over positions and how they depend on the state: ``(value,
+    depends)``, or None (with a problem) for an expression of the state that also has
+    ``when:``.  ``direction`` turns an expression's scalar into the load (the force's
+    unit direction, ones for a moment); ``gate`` is the load's ``when:`` (positions where it
+    acts, its dependence) or None."""
+    depends = None
+    if _moving(load.value):
+        if gate is not None:
+            problems.append(Problem((*path, "when"), "an expression of the rates or time "
+                                    "cannot also have when:", "write the condition into "
+                                    "the expression: (drK > 0)*..."))
+            return None
+        depends = _expression_dependence(model, load.value, kind, unit, direction)
+    if gate is not None:
+        acts, depends = gate
+        depends = Dependence(sign=depends.sign, rate=depends.rate, ungated=value)
+        value = np.where(acts, value, 0.0)
+    return value, depends
+
+
 def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
                 time: Signal | None, *, designs: int = 1,
                 state: Placement | None = None) -> Loads:
@@ -256,22 +278,10 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             problems.append(Problem((*path, "at"), f"vector {exc.args[0]} does not exist",
                                     f"use one of {sorted(model.vectors)}"))
             continue
-        force = value * np.exp(1j * angle)
-        depends = None
-        if _moving(load.value):
-            if gate is not None:
-                problems.append(Problem((*path, "when"), "an expression of the rates or "
-                                        "time cannot also have when:", "write the "
-                                        "condition into the expression: (drK > 0)*..."))
-                continue
-            depends = _expression_dependence(model, load.value, "force", units.force,
-                                             np.exp(1j * angle))
-        if gate is not None:
-            acts, depends = gate
-            depends = Dependence(sign=depends.sign, rate=depends.rate, ungated=force)
-            force = np.where(acts, force, 0.0)
-        forces.append(PointForce(load.name or f"F{i + 1}", load.body, point, force,
-                                 depends))
+        made = _dependent(model, load, value * np.exp(1j * angle), "force", units.force,
+                          np.exp(1j * angle), gate, path, problems)
+        if made is not None:
+            forces.append(PointForce(load.name or f"F{i + 1}", load.body, point, *made))
     for i, load in enumerate(model.moments):
         path = ("moments", i)
         if load.body not in mechanism.bodies:
@@ -284,20 +294,10 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
                                                      problems)
         if value is None or (load.when is not None and gate is None):
             continue
-        depends = None
-        if _moving(load.value):
-            if gate is not None:
-                problems.append(Problem((*path, "when"), "an expression of the rates or "
-                                        "time cannot also have when:", "write the "
-                                        "condition into the expression: (drK > 0)*..."))
-                continue
-            depends = _expression_dependence(model, load.value, "moment", units.moment,
-                                             np.ones(value.size))
-        if gate is not None:
-            acts, depends = gate
-            depends = Dependence(sign=depends.sign, rate=depends.rate, ungated=value)
-            value = np.where(acts, value, 0.0)
-        moments.append(Couple(load.name or f"M{i + 1}", load.body, value, depends))
+        made = _dependent(model, load, value, "moment", units.moment, np.ones(value.size),
+                          gate, path, problems)
+        if made is not None:
+            moments.append(Couple(load.name or f"M{i + 1}", load.body, *made))
     if model.gravity is not None:
         try:
             g = to_si(model.gravity.g, "acceleration", units.acceleration)

@@ -583,10 +583,17 @@ def block_jacobian(plan: Plan, r: list[Array], a: list[Array], r_scale: list[Arr
                    a_scale: list[Array], shape: tuple[int, ...]) -> Array:
     """The block Jacobian ``(*shape, m, m)`` at the values ``r[t]``, ``a[t]`` of its terms
     (columns: ``scale·e`` for a length unknown, ``scale·r·n`` for an angle unknown)."""
+    return _assembled(plan, r, [(np.cos(at), np.sin(at)) for at in a], r_scale, a_scale,
+                      shape)
+
+
+def _assembled(plan: Plan, r: list[Array], cs: list[tuple[Array, Array]],
+               r_scale: list[Array], a_scale: list[Array], shape: tuple[int, ...]) -> Array:
+    """The block Jacobian ``(*shape, m, m)`` from the cosines and sines ``cs`` of the terms'
+    angles."""
     m = len(plan.unknowns)
     J = np.zeros((*shape, m, m))
-    for t in range(len(r)):
-        c, s = np.cos(a[t]), np.sin(a[t])
+    for t, (c, s) in enumerate(cs):
         e = 2 * int(plan.eq[t])
         ru, au = int(plan.r_unknown[t]), int(plan.a_unknown[t])
         if ru >= 0:
@@ -624,18 +631,11 @@ def block_rates(plan: Plan, r: list[Array], a: list[Array], r_rate: list[Array],
     """
     m = len(plan.unknowns)
     shape = good.shape
-    J = np.zeros((*shape, m, m))
-    b = np.zeros((*shape, m))
     cs = [(np.cos(at), np.sin(at)) for at in a]
+    J = _assembled(plan, r, cs, r_scale, a_scale, shape)
+    b = np.zeros((*shape, m))
     for t, (c, s) in enumerate(cs):
         e = 2 * int(plan.eq[t])
-        ru, au = int(plan.r_unknown[t]), int(plan.a_unknown[t])
-        if ru >= 0:
-            J[..., e, ru] += r_scale[t] * c
-            J[..., e + 1, ru] += r_scale[t] * s
-        if au >= 0:
-            J[..., e, au] -= a_scale[t] * r[t] * s
-            J[..., e + 1, au] += a_scale[t] * r[t] * c
         w = r[t] * a_rate[t]
         b[..., e] += r_rate[t] * c - w * s
         b[..., e + 1] += r_rate[t] * s + w * c
