@@ -357,10 +357,12 @@ def test_every_view_renders_for_every_example_without_warnings(path, tmp_path):
         figures = list(_kinematic_figures(mechloop.solve(m)))
         if m.bodies:
             figures += list(_dynamic_figures(mechloop.solve_dynamics(m)))
+        # every figure drawn once, the three formats taken in turn (each format's writer
+        # still meets many kinds of figure per example, in a third of the time)
         for i, figure in enumerate(figures):
-            for suffix in (".png", ".svg", ".pdf"):
-                target = save_figure(figure, tmp_path / f"view{i}{suffix}", dpi=40)
-                assert target.stat().st_size > 1000
+            suffix = (".png", ".svg", ".pdf")[i % 3]
+            target = save_figure(figure, tmp_path / f"view{i}{suffix}", dpi=40)
+            assert target.stat().st_size > 1000
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
