@@ -406,8 +406,12 @@ def _print_simulation(sim) -> None:
               f"within about {accuracy.inertia_error:.2g} kg*m^2, slope within "
               f"{accuracy.slope_error:.2g} kg*m^2/rad of dJ/dq)")
     for event in sim.events[1:]:
-        out.print(f"{event.kind}: t = {event.t:.6g} s, angle {np.degrees(event.q):.6g} deg, "
-                  f"speed {event.omega / RPM:.6g} rpm")
+        out.print(event.describe())
+    for end in sim.machine.breaks:
+        if end is not None:
+            err.print(f"[bold yellow]warning:[/] {end.describe()}: the machine is the "
+                      "stretch of positions between the breaks, not a cycle — no cycle, "
+                      "steady state or δ")
     count = sim.cycle_time.size
     if count:
         _, _, omega = sim.cycle_profile()
