@@ -26,7 +26,11 @@ by ``e``; through all of them the error is about ``e/16``, fourth order) and che
 (``Interpolation.slope_error``: the spline's slope against the analogs' ``dJ/dq`` at the
 positions); refine ``positions`` for a smaller one.  A machine whose ``J`` is periodic runs
 through any number of cycles; one whose ``J`` is not (a rocker's range) stops where it
-leaves the modelled range.
+leaves the modelled range (event ``"range"``).  A chain that breaks somewhere in the range
+(at positions, or between two by the exact existence check) is simulated over the
+stretch of positions around the start that it passes through
+(:mod:`mechloop.dynamics.chain_span`): the run stops at the stretch's last position with
+the event ``"chain break ahead"``, which names the exact input value of the break.
 
 **Cycles and the steady state.** A cycle is one period ``L`` of ``q`` (the model's range of
 the input), from the angle of position 0 on, turn by turn (a start inside a cycle makes the
@@ -428,9 +432,9 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
     ``progress(done, total)`` is called as the run goes (see :func:`integrate`).
 
     Raises :class:`~mechloop.errors.ModelError` (located at the key to change) when the
-    model cannot be simulated: no settings, not one turning input, a chain break or a
-    singular force analysis at some position, an input that does not advance, no moving
-    mass, ``flywheel: machine`` without a flywheel from ``machine:``.
+    model cannot be simulated: no settings, not one turning input, a start at a chain
+    break or fewer than 4 positions between breaks around it, an input that does not
+    advance, no moving mass, ``flywheel: machine`` without a flywheel from ``machine:``.
     """
     from mechloop.model.simulate import Simulate
 
