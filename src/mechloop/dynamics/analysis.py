@@ -265,6 +265,12 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
         k = mechanism.drives[0].argument
         spec = model.machine if flywheel else model.machine.model_copy(update={"delta": None})
         try:
+            if designs is None and kin.breaks_between:
+                # every position assembles, but the machine cannot pass between two
+                raise MachineError("machine motion needs the whole cycle, but the chain "
+                                   f"breaks between positions: "
+                                   f"{kin.breaks_between[0].describe()}",
+                                   cause="cycle")
             cycle = steady_cycles(per_design(kin.arguments[k]), per_design(kin.time),
                                   Reduced(*(per_design(x) for x in (red.inertia,
                                                                     red.d_inertia,
