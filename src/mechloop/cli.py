@@ -325,7 +325,12 @@ def energy(model: ModelPath) -> None:
             dynamic.mechanism.drives[0].argument] == "angle"
         unit, speed, mass = ("N*m", "rad/s", "kg*m^2") if angle else ("N", "m/s", "kg")
         out.print(f"machine motion: mean speed {cycle.omega_mean:.6g} {speed}; constant "
-                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}; "
+                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}"
+                  + ("" if cycle.bare_constant_load is None else
+                     f" (with the flywheel; without it {cycle.bare_constant_load:.6g} {unit})")
+                  + ("" if not cycle.iterations else
+                     f" — the loads that depend on the speed taken at the cycle's own speed "
+                     f"({cycle.iterations} iterations)") + "; "
                   f"without a flywheel δ = {cycle.motion.delta:.4g} "
                   f"(speed {cycle.motion.omega_min:.6g} … {cycle.motion.omega_max:.6g} "
                   f"{speed})")

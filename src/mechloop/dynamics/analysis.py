@@ -264,6 +264,15 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
         check_machine(mechanism, red, time)
         k = mechanism.drives[0].argument
         spec = model.machine if flywheel else model.machine.model_copy(update={"delta": None})
+        state = None
+        if designs is None and any(load.depends is not None for load in
+                                   (*loads.forces, *loads.moments)):
+            # loads that depend on the speed: machine: takes them at the cycle's speed
+            from mechloop.dynamics.state_terms import StateTerms
+
+            at, loads_at = analog_cache[k]
+            state = StateTerms(np.asarray(kin.arguments[k], dtype=float), loads_at,
+                               mechanism, at, periodic=True)
         try:
             if designs is None and kin.breaks_between:
                 # every position assembles, but the machine cannot pass between two
@@ -277,7 +286,8 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
                                                                     red.load))),
                                   per_design(forces.friction_loss),
                                   per_design(_argument_rate(kin, k)), spec,
-                                  failures="raise" if designs is None else "nan")
+                                  failures="raise" if designs is None else "nan",
+                                  state=state or None)
         except SolveError as exc:
             raise _machine_error(exc, k) from None
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
@@ -311,6 +321,10 @@ _MACHINE_FIXES = {
     "unsteady": (
         "machine", "check the loads over the cycle: positions 0..N must be one whole cycle "
         "of the input"),
+    "settle": (
+        "machine", "the dampers or one-way loads change too much with the speed over the "
+        "cycle: raise the speed (time: {rpm: ...}), give a smaller delta (a larger "
+        "flywheel), or simulate the machine in time (simulate:)"),
 }
 
 
