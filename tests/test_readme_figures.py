@@ -425,6 +425,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"\d+ positions per design", "the benchmark's setting"),
     (R, r"position, over 16\)", "the error ratio of a fourth-order spline at half the step"),
     (R, r"`rtol` \(default 1e-8\), `atol` \(1e-9,", "simulate:'s default tolerances"),
+    (R, r"to 1e-11 of the mean speed", "a rule of the code (its constant, "
+        "mechloop.dynamics.machine.SETTLE_RTOL)"),
     (R, r"2,000 random designs|relative 1e-9[);]", "the synthesis benchmark's settings"),
     (R, r"evaluates 2,000 designs|`--designs 20000`", "the synthesis benchmark's settings"),
     (R, r"from 65,536 designs × positions", "a rule of the code (its constant, "
