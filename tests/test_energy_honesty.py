@@ -45,6 +45,8 @@ def test_a_chain_that_breaks_is_told_and_its_positions_named(tmp_path: Path):
 def test_a_whole_cycle_prints_no_warning_and_a_balance_at_rounding():
     # the compressor with friction: driving = resisting + friction + change of kinetic
     # energy, work by work as the table prints them
+    assert mechloop.solve_dynamics(mechloop.load_model(
+        EXAMPLES / "crank_slider_friction.yaml")).cycle_breaks is None
     result = _energy(EXAMPLES / "crank_slider_friction.yaml")
     assert result.exit_code == 0, result.output
     assert "warning" not in result.output
@@ -110,6 +112,8 @@ def test_a_break_between_positions_is_told_and_no_efficiency_is_claimed(tmp_path
     assert not kin.broken.any() and kin.breaks_between  # only the exact check sees it
     dyn = mechloop.solve_dynamics(mechloop.load_model(path))
     assert dyn.summary.efficiency == 1.0  # what the works alone would claim
+    assert dyn.cycle_breaks.between == ((36, 37),)  # and what the API says of them
+    assert dyn.cycle_breaks.positions.size == 0
     result = _energy(path)
     assert result.exit_code == 0, result.output
     assert "warning: the chain breaks between positions 36 and 37" in result.output

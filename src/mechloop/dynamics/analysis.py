@@ -49,7 +49,9 @@ class DynamicResults:
     and inertia moment about its centre of mass ``−Σ (J·ε + (S_i − S)×m_i·a_Si)`` (N·m);
     ``summary``: power and work over the cycle; ``cycle``: the machine
     motion and flywheel when the model asks for them (``machine:``).  Without model time
-    the analysis is static (no inertia loads).
+    the analysis is static (no inertia loads).  Where the chain breaks in the cycle
+    (:attr:`cycle_breaks` is not None) the summary's works, ψ and η are not the cycle's
+    (the positions next to the breaks are left out): read them only when it is None.
 
     For a population of ``D`` designs (``analyze(..., designs=D)``,
     :mod:`mechloop.dynamics.population`) the arrays run over designs × positions
@@ -73,6 +75,15 @@ class DynamicResults:
     static: bool
     inertia: dict[int, tuple[Array, Array]]
     cycle: Cycle | None = None
+
+    @property
+    def cycle_breaks(self):
+        """Where the chain breaks in the cycle (at positions, or between two by the exact
+        existence check): a :class:`~mechloop.dynamics.cycle_validity.CycleBreaks`, or
+        None when the cycle figures are the cycle's."""
+        from mechloop.dynamics.cycle_validity import cycle_breaks
+
+        return cycle_breaks(self)
 
     def balancing_name(self, argument: int) -> tuple[str, str]:
         """Column stem and unit of the balancing load of ``argument``."""
