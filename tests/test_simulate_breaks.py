@@ -130,3 +130,19 @@ def test_a_rocker_range_that_ends_is_a_plain_event():
     assert sim.end.kind == "range" and sim.end.at is None
     assert sim.end.q == pytest.approx(math.pi, abs=1e-9)
     assert "end of the model's range" in sim.end.describe()
+
+
+def test_the_example_runs_up_to_the_break():
+    # examples/four_bar_break_ahead.yaml: crank 100, coupler 140, rocker 250, frame 300
+    # mm; its header's figures: the break at 150.266 deg, positions 31 to 41 broken
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "four_bar_break_ahead.yaml"
+    model = mechloop.load_model(path)
+    broken = np.flatnonzero(mechloop.solve(model).broken)
+    assert broken.tolist() == list(range(31, 41 + 1))
+    sim = simulate(model)
+    assert sim.end.kind == "chain break ahead"
+    assert math.degrees(sim.end.at) == pytest.approx(150.266, abs=5e-4)
+    assert sim.end.at == pytest.approx(_limit(0.14), abs=1e-9)  # the same four-bar in m
+    assert sim.end.q == pytest.approx(math.radians(150), abs=1e-9)
