@@ -146,3 +146,15 @@ def test_the_example_runs_up_to_the_break():
     assert math.degrees(sim.end.at) == pytest.approx(150.266, abs=5e-4)
     assert sim.end.at == pytest.approx(_limit(0.14), abs=1e-9)  # the same four-bar in m
     assert sim.end.q == pytest.approx(math.radians(150), abs=1e-9)
+
+
+def test_a_start_between_positions_and_across_the_turn():
+    # started at -42.5 deg (a turn below 317.5, between positions 63 and 64): the stretch
+    # runs from 210 - 360 deg to 150 deg, positions 42..72 and 0..30
+    sim = simulate(_four_bar(0.14, start={"angle": -42.5, "rpm": 10}))
+    q = sim.machine.q
+    assert q[0] == pytest.approx(math.radians(-150), abs=1e-12)
+    assert q[-1] == pytest.approx(math.radians(150), abs=1e-12)
+    assert sim.q[0] == pytest.approx(math.radians(-42.5), abs=1e-12)
+    assert sim.end.kind == "chain break ahead"
+    assert sim.end.at == pytest.approx(_limit(0.14), abs=1e-9)

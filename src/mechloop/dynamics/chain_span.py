@@ -128,11 +128,8 @@ def unbroken_span(model, kin, k: int, singular: NDArray[np.bool_], q0: float, *,
                                   "start where the chain assembles (mechloop solve lists "
                                   "the broken positions)")])
     shift0 = q0 - start  # whole turns between the model's cycle and the start
-    lo = hi = seg  # the stretch holds the segments lo..hi-1 (positions lo..hi)
-    if at_position:
-        hi = seg
-    else:
-        hi = seg + 1
+    # the stretch holds the positions lo..hi (unrolled over turns when whole)
+    lo, hi = seg, seg if at_position else seg + 1
     limit = 2 * n
     while hi - lo < limit:  # upwards
         pos, _ = wrap(hi)
