@@ -1,0 +1,174 @@
+"""The smallest base radius: for a roller follower, the smallest ``R₀`` whose pressure
+angle stays within the allowed one over the whole turn; for a flat face, the smallest
+whose profile is convex (radius of curvature at least a given one).
+
+Decided over the continuous cam angle (:mod:`mechloop.cams.checks`):
+
+* translating roller: ``tan α = (s' − e)/(s₀ + s)``, so ``|α| ≤ α_allow`` everywhere is
+  ``s₀ ≥ max_φ (|s' − e| / tan α_allow − s)`` — a maximum over the continuous angle — and
+  ``R₀ = √(s₀² + e²)``;
+* oscillating roller: the largest ``|α|`` over the turn is a function of ``R₀``; the
+  smallest ``R₀`` where it is within the limit is bracketed on a grid of ``R₀`` over the
+  interval where the rocker can be placed and found by Brent's method
+  (:func:`scipy.optimize.brentq`), each value of the function a continuous maximum;
+* flat face: ``ρ = R₀ + s + s'' ≥ ρ_min`` everywhere is
+  ``R₀ ≥ ρ_min + max_φ (−s − s'')``; the face must also stay above the cam centre,
+  ``R₀ + s > 0``.
+
+The rise and the dwells are held to ``allowed``, the returns to ``allowed_return`` (the
+return of a force-closed cam is driven by the spring: a larger angle is usual).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.optimize import brentq
+
+from mechloop.cams.checks import max_pressure_angle, motion_max, segment_max
+from mechloop.cams.followers import (
+    Follower,
+    OscillatingRoller,
+    TranslatingFlat,
+    TranslatingRoller,
+    base_limits,
+)
+from mechloop.cams.profile import Cam
+from mechloop.cams.program import MotionProgram
+from mechloop.errors import HintedError
+
+#: Grid of base radii scanned for the oscillating follower before Brent's method.
+ROCKER_GRID = 64
+
+
+class CamDesignError(HintedError):
+    """A cam cannot be designed as asked (no base radius meets the conditions)."""
+
+
+def _allowed(program: MotionProgram, allowed: float, allowed_return: float | None
+             ) -> list[float]:
+    back = allowed if allowed_return is None else allowed_return
+    return [back if seg.kind == "return" else allowed for seg in program.segments]
+
+
+def max_pressure_ratio(cam: Cam, allowed: float, allowed_return: float | None = None
+                       ) -> float:
+    """Largest ``|α| / α_allow`` over the turn (each segment against its own limit):
+    at most 1 when the pressure angle stays within the limits."""
+    limits = _allowed(cam.program, allowed, allowed_return)
+    worst = 0.0
+    for k, limit in enumerate(limits):
+        worst = max(worst, max_pressure_angle_of(cam, k) / limit)
+    return worst
+
+
+def max_pressure_angle_of(cam: Cam, k: int) -> float:
+    """Largest ``|α|`` (rad) over segment ``k``."""
+    return segment_max(cam.program, lambda j, x: np.abs(cam.on_segment(j, x).pressure),
+                       [k]).value
+
+
+def minimum_base_radius(follower: Follower, program: MotionProgram, allowed: float, *,
+                        allowed_return: float | None = None) -> float:
+    """The smallest base radius (m) of a roller follower's pitch curve for which the
+    pressure angle stays within ``allowed`` (rad; ``allowed_return`` on the returns) over
+    the whole turn."""
+    if not 0 < allowed < math.pi / 2 or (allowed_return is not None
+                                         and not 0 < allowed_return < math.pi / 2):
+        raise CamDesignError("an allowed pressure angle must be between 0 and 90 deg",
+                             "e.g. 30 deg for a translating follower, 45 for a rocker")
+    limits = _allowed(program, allowed, allowed_return)
+    if isinstance(follower, TranslatingRoller):
+        e = follower.offset
+        need = segment_max(program, lambda k, x: _s0_needed(program, k, x, e, limits[k]))
+        lo, _ = base_limits(follower)
+        radius = math.hypot(max(need.value, 0.0), e)
+        if radius <= lo:  # the condition holds down to the offset: not a design limit
+            raise CamDesignError(
+                f"the pressure angle stays within the limit for any base radius above the "
+                f"offset {lo:.6g} m", "give the base radius itself (base_radius:)")
+        return radius
+    if isinstance(follower, OscillatingRoller):
+        return _rocker_minimum(follower, program, allowed, allowed_return)
+    raise CamDesignError("a flat face perpendicular to its axis has a pressure angle of 0",
+                         "use minimum_flat_base_radius (a convex profile) instead")
+
+
+def _s0_needed(program: MotionProgram, k: int, x, e: float, limit: float):
+    m = program.on_segment(k, x)
+    return np.abs(m.ds - e) / math.tan(limit) - m.s
+
+
+def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed: float,
+                    allowed_return: float | None) -> float:
+    lo, hi = base_limits(follower)
+    span = hi - lo
+
+    def excess(radius: float) -> float:
+        try:
+            cam = Cam(follower, program, radius)
+            geometry_ok = _rocker_fits(follower, program, radius)
+        except ValueError:
+            return math.inf
+        if not geometry_ok:
+            return math.inf
+        return max_pressure_ratio(cam, allowed, allowed_return) - 1.0
+
+    grid = lo + span * np.linspace(0.0, 1.0, ROCKER_GRID + 2)[1:-1]
+    values = [excess(float(r)) for r in grid]
+    first = next((i for i, v in enumerate(values) if v <= 0), None)
+    if first is None:
+        raise CamDesignError(
+            "no base radius keeps the pressure angle within the limit for this rocker",
+            "lengthen the arm, move the pivot, lower the swing or allow a larger angle")
+    if first == 0:
+        left = lo + span * 1e-9
+        if excess(left) <= 0:
+            return left
+    else:
+        left = float(grid[first - 1])
+    if not math.isfinite(excess(left)):  # the geometry ends inside the bracket: bisect it
+        right = float(grid[first])
+        for _ in range(60):
+            mid = 0.5 * (left + right)
+            if math.isfinite(excess(mid)):
+                right = mid
+            else:
+                left = mid
+        left = right
+        if excess(left) <= 0:
+            return left
+    return float(brentq(excess, left, float(grid[first]), xtol=1e-12 * span, rtol=1e-12))
+
+
+def _rocker_fits(follower: OscillatingRoller, program: MotionProgram, radius: float) -> bool:
+    """Whether the arm's angle ``β = ψ₀ + ψ`` stays in (0, π) over the turn."""
+    start = follower.start_angle(radius)
+    high = motion_max(program, lambda m: m.s).value
+    low = -motion_max(program, lambda m: -m.s).value
+    return 0 < start + low and start + high < math.pi
+
+
+def minimum_flat_base_radius(program: MotionProgram, min_radius: float = 0.0) -> float:
+    """The smallest base radius (m) of a flat-faced follower's cam whose profile has a
+    radius of curvature of at least ``min_radius`` (m) everywhere:
+    ``R₀ = ρ_min + max_φ(−s − s'')``, and above ``−min s`` (the face above the centre)."""
+    need = motion_max(program, lambda m: -m.s - m.dds).value + min_radius
+    above = motion_max(program, lambda m: -m.s).value
+    if need <= above:
+        raise CamDesignError(
+            f"the profile is convex for any base radius above {max(above, 0):.6g} m",
+            "give the base radius itself (base_radius:), or a larger min_curvature_radius")
+    return need
+
+
+def flat_is_convex(cam: Cam, min_radius: float = 0.0) -> bool:
+    """Whether ``R₀ + s + s'' ≥ min_radius`` over the whole turn (flat face)."""
+    assert isinstance(cam.follower, TranslatingFlat)
+    low = -motion_max(cam.program, lambda m: -(m.s + m.dds)).value + cam.base_radius
+    return low >= min_radius
+
+
+__all__ = ["CamDesignError", "flat_is_convex", "max_pressure_angle", "max_pressure_ratio",
+           "minimum_base_radius", "minimum_flat_base_radius"]
