@@ -73,9 +73,14 @@ def _header(path: Path) -> str:
     return "\n".join(lines)
 
 
+def _example_files() -> list[Path]:
+    """Every file of examples/, its subfolders' too (examples/cams/)."""
+    return sorted(p for p in EXAMPLES.rglob("*") if p.is_file())
+
+
 def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
     out = []
-    for path in sorted(EXAMPLES.iterdir()):
+    for path in _example_files():
         header = _header(path)
         for block in re.split(r"\n\s*\n", header):
             if block.strip():
@@ -88,7 +93,7 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 def _pool() -> set[float]:
     """Numbers of the examples' data (outside comments) and of the README's code blocks."""
-    texts = [line.split("#")[0] for p in EXAMPLES.iterdir()
+    texts = [line.split("#")[0] for p in _example_files()
              for line in p.read_text(encoding="utf-8").splitlines()]
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",

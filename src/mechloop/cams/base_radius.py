@@ -139,7 +139,11 @@ def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed
         left = right
         if excess(left) <= 0:
             return left
-    return float(brentq(excess, left, float(grid[first]), xtol=1e-12 * span, rtol=1e-12))
+    step = 1e-12 * span
+    radius = float(brentq(excess, left, float(grid[first]), xtol=step, rtol=1e-12))
+    while excess(radius) > 0:  # the root's feasible side, within Brent's tolerance
+        radius += step
+    return radius
 
 
 def _rocker_fits(follower: OscillatingRoller, program: MotionProgram, radius: float) -> bool:
