@@ -104,54 +104,56 @@ def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed
                     allowed_return: float | None) -> float:
     lo, hi = base_limits(follower)
     span = hi - lo
+    high = motion_max(program, lambda m: m.s).value
+    low = -motion_max(program, lambda m: -m.s).value
+    limits = np.array(_allowed(program, allowed, allowed_return))
+    phi = np.linspace(0.0, 2 * math.pi, 4 * 360 + 1)
+    segment = program.evaluate(phi).segment
 
-    def excess(radius: float) -> float:
-        try:
-            cam = Cam(follower, program, radius)
-            geometry_ok = _rocker_fits(follower, program, radius)
-        except ValueError:
+    def fits(radius: float) -> bool:  # the arm's angle β = ψ₀ + ψ stays in (0, π)
+        start = follower.start_angle(radius)
+        return 0 < start + low and start + high < math.pi
+
+    def sampled(radius: float) -> float:  # a lower bound of the excess: for the scan
+        if not fits(radius):
             return math.inf
-        if not geometry_ok:
+        ratio = np.abs(Cam(follower, program, radius).at(phi).pressure) / limits[segment]
+        return float(ratio.max()) - 1.0
+
+    def excess(radius: float) -> float:  # over the continuous turn
+        if not fits(radius):
             return math.inf
-        return max_pressure_ratio(cam, allowed, allowed_return) - 1.0
+        return max_pressure_ratio(Cam(follower, program, radius), allowed,
+                                  allowed_return) - 1.0
 
     grid = lo + span * np.linspace(0.0, 1.0, ROCKER_GRID + 2)[1:-1]
-    values = [excess(float(r)) for r in grid]
-    first = next((i for i, v in enumerate(values) if v <= 0), None)
+    scan = [sampled(float(r)) for r in grid]
+    first = next((i for i, v in enumerate(scan) if v <= 0), None)
+    while first is not None and excess(float(grid[first])) > 0:
+        first = first + 1 if first + 1 < len(grid) else None
     if first is None:
         raise CamDesignError(
             "no base radius keeps the pressure angle within the limit for this rocker",
             "lengthen the arm, move the pivot, lower the swing or allow a larger angle")
-    if first == 0:
-        left = lo + span * 1e-9
-        if excess(left) <= 0:
-            return left
-    else:
-        left = float(grid[first - 1])
+    right = float(grid[first])
+    left = float(grid[first - 1]) if first else lo + span * 1e-9
     if not math.isfinite(excess(left)):  # the geometry ends inside the bracket: bisect it
-        right = float(grid[first])
+        inner = right
         for _ in range(60):
-            mid = 0.5 * (left + right)
-            if math.isfinite(excess(mid)):
-                right = mid
+            mid = 0.5 * (left + inner)
+            if fits(mid):
+                inner = mid
             else:
                 left = mid
-        left = right
-        if excess(left) <= 0:
-            return left
-    step = 1e-12 * span
-    radius = float(brentq(excess, left, float(grid[first]), xtol=step, rtol=1e-12))
-    while excess(radius) > 0:  # the root's feasible side, within Brent's tolerance
-        radius += step
-    return radius
-
-
-def _rocker_fits(follower: OscillatingRoller, program: MotionProgram, radius: float) -> bool:
-    """Whether the arm's angle ``β = ψ₀ + ψ`` stays in (0, π) over the turn."""
-    start = follower.start_angle(radius)
-    high = motion_max(program, lambda m: m.s).value
-    low = -motion_max(program, lambda m: -m.s).value
-    return 0 < start + low and start + high < math.pi
+        left = inner
+    if excess(left) <= 0:  # feasible down to where the rocker can be placed at all
+        return left
+    tol = 1e-12 * span
+    root = float(brentq(excess, left, right, xtol=tol, rtol=4 * np.finfo(float).eps))
+    for nudge in (0.0, 2 * tol, 8 * tol):  # the feasible side, within Brent's tolerance
+        if excess(root + nudge) <= 0:
+            return root + nudge
+    return right
 
 
 def minimum_flat_base_radius(program: MotionProgram, min_radius: float = 0.0) -> float:
