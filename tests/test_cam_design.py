@@ -35,26 +35,37 @@ def program(rise: str = "cycloidal", back: str = "cycloidal", lift: float = 0.02
 
 
 # ------------------------------------------------------------------ laws and coefficients
-#: Peak coefficients C_v, C_a, C_j of the normalized laws: R. L. Norton, Cam Design and
-#: Manufacturing Handbook, 2nd ed. (Industrial Press, 2009), table 3-2 (printed to four or
-#: five figures), or their closed forms where they have one.
+#: Peak coefficients C_v, C_a, C_j of the normalized laws as printed in R. L. Norton, Cam
+#: Design and Manufacturing Handbook, 2nd ed. (Industrial Press, 2009), ch. 3 (to four or
+#: five figures) ...
 TEXTBOOK = {
     "constant_speed": (1.0, 0.0, 0.0),
-    "harmonic": (math.pi / 2, math.pi**2 / 2, math.pi**3 / 2),
-    "cycloidal": (2.0, 2 * math.pi, 4 * math.pi**2),
-    "poly345": (1.875, 10 / math.sqrt(3), 60.0),  # 15/8, 5.7735, 60
-    "poly4567": (2.1875, 7.5132, 52.5),  # 35/16
+    "harmonic": (1.5708, 4.9348, 15.503),
+    "cycloidal": (2.0, 6.2832, 39.478),
+    "poly345": (1.875, 5.7735, 60.0),
+    "poly4567": (2.1875, 7.5132, 52.5),
     "modified_trapezoidal": (2.0, 4.8881, 61.426),
     "modified_sine": (1.7596, 5.5280, 69.466),
+}
+#: ... and their closed forms where they have one: π/2, π²/2, π³/2; 2, 2π, 4π²;
+#: 15/8, 10/√3, 60; 35/16, —, 52.5.
+CLOSED = {
+    "harmonic": (math.pi / 2, math.pi**2 / 2, math.pi**3 / 2),
+    "cycloidal": (2.0, 2 * math.pi, 4 * math.pi**2),
+    "poly345": (15 / 8, 10 / math.sqrt(3), 60.0),
+    "poly4567": (35 / 16, None, 52.5),
 }
 
 
 @pytest.mark.parametrize("name", LAW_NAMES)
 def test_peak_coefficients_match_the_textbook(name):
     got = peak_coefficients(law(name))
-    for value, expected in zip((got.velocity, got.acceleration, got.jerk), TEXTBOOK[name],
-                               strict=True):
+    values = (got.velocity, got.acceleration, got.jerk)
+    for value, expected in zip(values, TEXTBOOK[name], strict=True):
         assert value == pytest.approx(expected, rel=1e-4, abs=1e-12)
+    for value, exact in zip(values, CLOSED.get(name, (None,) * 3), strict=True):
+        if exact is not None:
+            assert value == pytest.approx(exact, rel=1e-12)
 
 
 @pytest.mark.parametrize("name", LAW_NAMES)

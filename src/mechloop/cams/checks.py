@@ -4,7 +4,7 @@ Every quantity here is a smooth function of the cam angle inside each segment of
 motion program (the laws are), possibly jumping at a join.  So each extreme is found
 segment by segment over the closed segment, with that segment's law on both ends
 (:meth:`~mechloop.cams.profile.Cam.on_segment`), by
-:func:`~mechloop.cams.laws.continuous_max`: a sample, then Brent's method on the best
+:func:`~mechloop.cams.laws.continuous_max`: a sample, then a zoom on the best
 local maxima.  The results say where the extreme is (cam angle, rad).
 """
 

@@ -205,6 +205,7 @@ def _follower(spec: FollowerSpec, read: _Reader) -> Follower | None:
 
 def _segments(spec: CamSpec, read: _Reader, rocker: bool) -> MotionProgram | None:
     lift_kind = "angle" if rocker else "length"
+    known = len(read.problems)
     segments: list[Segment] = []
     for i, seg in enumerate(spec.segments):
         path = ("cam", "segments", i)
@@ -224,7 +225,7 @@ def _segments(spec: CamSpec, read: _Reader, rocker: bool) -> MotionProgram | Non
         angle = read.positive(seg.angle, "angle", (*path, "angle"), f"a {kind}'s angle")
         if lift is not None and angle is not None:
             segments.append(Segment(kind, angle, lift, law(seg.law)))  # type: ignore[arg-type]
-    if read.problems:
+    if len(read.problems) > known:
         return None
     total = sum(s.angle for s in segments)
     if abs(total - 2 * math.pi) > TURN_TOLERANCE * 2 * math.pi:
