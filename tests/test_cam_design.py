@@ -18,7 +18,12 @@ from mechloop.cams.base_radius import (
     minimum_flat_base_radius,
 )
 from mechloop.cams.checks import face_width, max_pressure_angle, min_curvature_radius
-from mechloop.cams.followers import OscillatingRoller, TranslatingFlat, TranslatingRoller
+from mechloop.cams.followers import (
+    OscillatingFlat,
+    OscillatingRoller,
+    TranslatingFlat,
+    TranslatingRoller,
+)
 from mechloop.cams.laws import LAW_NAMES, Law, law, peak_coefficients, table_law
 from mechloop.cams.profile import Cam
 from mechloop.cams.program import MotionProgram, Segment
@@ -246,7 +251,7 @@ def test_eccentric_circle_is_the_harmonic_cam_of_a_flat_follower():
     assert np.abs(g.motion.s - eps * (1 - np.cos(phi))).max() < 1e-15
     assert np.abs(np.hypot(g.profile[:, 0], g.profile[:, 1] + eps) - (r0 + eps)).max() < 1e-15
     assert np.abs(g.rho - (r0 + eps)).max() < 1e-15
-    width = face_width(prog)
+    width = face_width(cam)
     assert (width.low.value, width.high.value) == pytest.approx((-eps, eps), rel=1e-12)
 
 
@@ -256,6 +261,8 @@ FOLLOWERS = {
     "rocker": (OscillatingRoller(0.008, 0.1, 0.08), 0.036,
                program("poly345", "modified_sine", deg(20), (100, 80, 120, 60))),
     "flat": (TranslatingFlat(), 0.07, program("modified_trapezoidal", "poly4567", 0.015)),
+    "flat rocker": (OscillatingFlat(0.09, 0.004), 0.03,
+                    program("cycloidal", "poly345", deg(12), (120, 60, 120, 60))),
 }
 
 
@@ -290,7 +297,7 @@ def test_pressure_angle_and_curvature_by_finite_differences_of_the_profile(name)
         pressure = np.arctan2(np.sum(d1 * direction, axis=1),
                               d1[:, 0] * direction[:, 1] - d1[:, 1] * direction[:, 0])
         assert np.abs(pressure - g.pressure).max() < 1e-6
-        if name != "flat":
+        if not follower.flat:
             radial = g.pitch - g.profile
             assert np.abs(np.hypot(*radial.T) - follower.roller_radius).max() < 1e-15
             assert np.abs(np.sum(radial * d1, axis=1)).max() < 1e-6 * np.hypot(*d1.T).max() * \
@@ -308,6 +315,13 @@ def _point_with_s(cam: Cam, phi, s):
         a, arm = f.pivot_distance, f.arm
         beta = math.acos((a * a + arm * arm - cam.base_radius**2) / (2 * a * arm)) + s
         fixed = np.stack([a - arm * np.cos(beta), arm * np.sin(beta)], axis=1)
+    elif isinstance(f, OscillatingFlat):  # the contact point as a point of the rocker
+        a, off = f.pivot_distance, f.face_offset
+        beta = math.asin((cam.base_radius - off) / a) + s
+        u = cam.on_segment(cam.program.evaluate(phi).segment[len(phi) // 2], phi)\
+            .contact_along
+        fixed = np.stack([a - u * np.cos(beta) + off * np.sin(beta),
+                          u * np.sin(beta) + off * np.cos(beta)], axis=1)
     else:
         fixed = np.stack([np.zeros_like(s), cam.base_radius + s], axis=1)
     c, n = np.cos(phi), np.sin(phi)
@@ -357,17 +371,33 @@ def test_minimum_base_radius_with_a_larger_return_limit():
     assert max_pressure_ratio(cam, deg(30), deg(45)) == pytest.approx(1.0, rel=1e-9)
 
 
-def test_minimum_flat_base_radius_is_the_smallest_convex():
-    prog = program("modified_trapezoidal", "poly4567", 0.015)
+@pytest.mark.parametrize("follower, prog", [
+    (TranslatingFlat(), program("modified_trapezoidal", "poly4567", 0.015)),
+    (OscillatingFlat(0.09, 0.004), program("cycloidal", "poly345", deg(12),
+                                           (120, 60, 120, 60))),
+], ids=["translating", "rocker"])
+def test_minimum_flat_base_radius_is_the_smallest_convex(follower, prog):
     for rho_min in (0.0, 0.005):
-        radius = minimum_flat_base_radius(prog, rho_min)
-        assert min_curvature_radius(Cam(TranslatingFlat(), prog, radius)).value == \
-            pytest.approx(rho_min, abs=1e-12)
+        radius = minimum_flat_base_radius(prog, rho_min, follower=follower)
+        assert min_curvature_radius(Cam(follower, prog, radius)).value == \
+            pytest.approx(rho_min, abs=1e-11)
         phi = np.linspace(0, 2 * math.pi, 20001)
         step = 1e-4 * radius
-        below = Cam(TranslatingFlat(), prog, radius - step).at(phi).rho
-        above = Cam(TranslatingFlat(), prog, radius + step).at(phi).rho
+        below = Cam(follower, prog, radius - step).at(phi).rho
+        above = Cam(follower, prog, radius + step).at(phi).rho
         assert below.min() < rho_min < above.min()
+
+
+@pytest.mark.parametrize("name", ["flat", "flat rocker"])
+def test_a_flat_face_never_cuts_its_convex_cam(name):
+    """The face in every position is a supporting line of the produced profile: every
+    profile point lies on the cam's side of it (a check of the envelope that does not use
+    the synthesis' contact formula), and touches it at the contact point."""
+    follower, radius, prog = FOLLOWERS[name]
+    g = Cam(follower, prog, radius).cycle(720)
+    gap = np.einsum("ijk,ik->ij", g.profile[None, :, :] - g.profile[:, None, :], g.normal)
+    assert gap.max() <= 1e-12 * radius
+    assert np.abs(np.diagonal(gap)).max() == 0
 
 
 def test_undercut_is_found_where_the_roller_is_larger_than_the_pitch_curvature():

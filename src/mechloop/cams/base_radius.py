@@ -13,7 +13,9 @@ Decided over the continuous cam angle (:mod:`mechloop.cams.checks`):
   (:func:`scipy.optimize.brentq`), each value of the function a continuous maximum;
 * flat face: ``ρ = R₀ + s + s'' ≥ ρ_min`` everywhere is
   ``R₀ ≥ ρ_min + max_φ (−s − s'')``; the face must also stay above the cam centre,
-  ``R₀ + s > 0``.
+  ``R₀ + s > 0``;
+* a rocker's flat face: the smallest ``ρ`` over the turn against ``R₀``, bracketed and
+  solved like the oscillating roller's pressure angle.
 
 The rise and the dwells are held to ``allowed``, the returns to ``allowed_return`` (the
 return of a force-closed cam is driven by the spring: a larger angle is usual).
@@ -22,15 +24,21 @@ return of a force-closed cam is driven by the spring: a larger angle is usual).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 from scipy.optimize import brentq
 
-from mechloop.cams.checks import max_pressure_angle, motion_max, segment_max
+from mechloop.cams.checks import (
+    max_pressure_angle,
+    min_curvature_radius,
+    motion_max,
+    segment_max,
+)
 from mechloop.cams.followers import (
     Follower,
+    OscillatingFlat,
     OscillatingRoller,
-    TranslatingFlat,
     TranslatingRoller,
     base_limits,
 )
@@ -102,10 +110,7 @@ def _s0_needed(program: MotionProgram, k: int, x, e: float, limit: float):
 
 def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed: float,
                     allowed_return: float | None) -> float:
-    lo, hi = base_limits(follower)
-    span = hi - lo
-    high = motion_max(program, lambda m: m.s).value
-    low = -motion_max(program, lambda m: -m.s).value
+    high, low = _swing(program)
     limits = np.array(_allowed(program, allowed, allowed_return))
     phi = np.linspace(0.0, 2 * math.pi, 4 * 360 + 1)
     segment = program.evaluate(phi).segment
@@ -114,27 +119,47 @@ def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed
         start = follower.start_angle(radius)
         return 0 < start + low and start + high < math.pi
 
-    def sampled(radius: float) -> float:  # a lower bound of the excess: for the scan
-        if not fits(radius):
-            return math.inf
+    def sampled(radius: float) -> float:
         ratio = np.abs(Cam(follower, program, radius).at(phi).pressure) / limits[segment]
         return float(ratio.max()) - 1.0
 
-    def excess(radius: float) -> float:  # over the continuous turn
-        if not fits(radius):
-            return math.inf
+    def excess(radius: float) -> float:
         return max_pressure_ratio(Cam(follower, program, radius), allowed,
                                   allowed_return) - 1.0
 
+    return _smallest_radius(follower, fits, sampled, excess, CamDesignError(
+        "no base radius keeps the pressure angle within the limit for this rocker",
+        "lengthen the arm, move the pivot, lower the swing or allow a larger angle"))
+
+
+def _swing(program: MotionProgram) -> tuple[float, float]:
+    """Largest and smallest displacement over the turn."""
+    return (motion_max(program, lambda m: m.s).value,
+            -motion_max(program, lambda m: -m.s).value)
+
+
+def _smallest_radius(follower: Follower, fits: Callable[[float], bool],
+                     sampled: Callable[[float], float], excess: Callable[[float], float],
+                     failure: CamDesignError) -> float:
+    """The smallest base radius where ``excess`` (over the continuous turn) is at most 0,
+    among those that ``fits``: a scan of :data:`ROCKER_GRID` radii over the interval where
+    the follower can be placed by ``sampled`` (the excess on a dense sample: a lower
+    bound, cheap), then Brent's method on the continuous ``excess`` in the first bracket
+    (the excess falls with the radius there)."""
+    lo, hi = base_limits(follower)
+    span = hi - lo
+
+    def fitting(f: Callable[[float], float]) -> Callable[[float], float]:
+        return lambda r: f(r) if fits(r) else math.inf
+
+    sampled, excess = fitting(sampled), fitting(excess)
     grid = lo + span * np.linspace(0.0, 1.0, ROCKER_GRID + 2)[1:-1]
     scan = [sampled(float(r)) for r in grid]
     first = next((i for i, v in enumerate(scan) if v <= 0), None)
     while first is not None and excess(float(grid[first])) > 0:
         first = first + 1 if first + 1 < len(grid) else None
     if first is None:
-        raise CamDesignError(
-            "no base radius keeps the pressure angle within the limit for this rocker",
-            "lengthen the arm, move the pivot, lower the swing or allow a larger angle")
+        raise failure
     right = float(grid[first])
     left = float(grid[first - 1]) if first else lo + span * 1e-9
     if not math.isfinite(excess(left)):  # the geometry ends inside the bracket: bisect it
@@ -146,7 +171,7 @@ def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed
             else:
                 left = mid
         left = inner
-    if excess(left) <= 0:  # feasible down to where the rocker can be placed at all
+    if excess(left) <= 0:  # feasible down to where the follower can be placed at all
         return left
     tol = 1e-12 * span
     root = float(brentq(excess, left, right, xtol=tol, rtol=4 * np.finfo(float).eps))
@@ -156,10 +181,15 @@ def _rocker_minimum(follower: OscillatingRoller, program: MotionProgram, allowed
     return right
 
 
-def minimum_flat_base_radius(program: MotionProgram, min_radius: float = 0.0) -> float:
+def minimum_flat_base_radius(program: MotionProgram, min_radius: float = 0.0, *,
+                             follower: Follower | None = None) -> float:
     """The smallest base radius (m) of a flat-faced follower's cam whose profile has a
-    radius of curvature of at least ``min_radius`` (m) everywhere:
-    ``R₀ = ρ_min + max_φ(−s − s'')``, and above ``−min s`` (the face above the centre)."""
+    radius of curvature of at least ``min_radius`` (m) everywhere.  A translating face
+    (the default): ``R₀ = ρ_min + max_φ(−s − s'')``, and above ``−min s`` (the face above
+    the centre); a rocker's face (:class:`OscillatingFlat`): the smallest radius by
+    :func:`_smallest_radius`, its face kept at ``0 < β < 90°``."""
+    if isinstance(follower, OscillatingFlat):
+        return _oscillating_flat_minimum(follower, program, min_radius)
     need = motion_max(program, lambda m: -m.s - m.dds).value + min_radius
     above = motion_max(program, lambda m: -m.s).value
     if need <= above:
@@ -169,12 +199,26 @@ def minimum_flat_base_radius(program: MotionProgram, min_radius: float = 0.0) ->
     return need
 
 
-def flat_is_convex(cam: Cam, min_radius: float = 0.0) -> bool:
-    """Whether ``R₀ + s + s'' ≥ min_radius`` over the whole turn (flat face)."""
-    assert isinstance(cam.follower, TranslatingFlat)
-    low = -motion_max(cam.program, lambda m: -(m.s + m.dds)).value + cam.base_radius
-    return low >= min_radius
+def _oscillating_flat_minimum(follower: OscillatingFlat, program: MotionProgram,
+                              min_radius: float) -> float:
+    high, low = _swing(program)
+    phi = np.linspace(0.0, 2 * math.pi, 4 * 360 + 1)
+    scale = follower.pivot_distance
+
+    def fits(radius: float) -> bool:
+        start = follower.start_angle(radius)
+        return 0 < start + low and start + high < math.pi / 2
+
+    def sampled(radius: float) -> float:
+        return (min_radius - float(Cam(follower, program, radius).at(phi).rho.min())) / scale
+
+    def excess(radius: float) -> float:
+        return (min_radius - min_curvature_radius(Cam(follower, program, radius)).value) / scale
+
+    return _smallest_radius(follower, fits, sampled, excess, CamDesignError(
+        "no base radius gives this rocker's face a convex profile",
+        "move the pivot farther, lower the swing or use slower laws"))
 
 
-__all__ = ["CamDesignError", "flat_is_convex", "max_pressure_angle", "max_pressure_ratio",
+__all__ = ["CamDesignError", "max_pressure_angle", "max_pressure_ratio",
            "minimum_base_radius", "minimum_flat_base_radius"]

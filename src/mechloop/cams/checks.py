@@ -17,7 +17,6 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.cams.followers import TranslatingFlat
 from mechloop.cams.laws import continuous_max
 from mechloop.cams.profile import Cam, Geometry
 from mechloop.cams.program import Motion, MotionProgram
@@ -70,7 +69,7 @@ def min_curvature_radius(cam: Cam) -> Extreme:
     """Smallest radius of curvature of the working profile where it is convex (m), found
     as the largest convex curvature ``1/ρ`` (a profile that is concave everywhere has no
     convex part: +∞); for a flat face the smallest ``R₀ + s + s''`` (negative: a cusp)."""
-    if isinstance(cam.follower, TranslatingFlat):
+    if cam.follower.flat:
         low = cam_max(cam, lambda g: -g.rho)
         return Extreme(-low.value, low.phi)
     curvature = cam_max(cam, convex_curvature)
@@ -89,8 +88,9 @@ def convex_curvature(g: Geometry) -> Array:
 
 @dataclass(frozen=True)
 class FaceWidth:
-    """The contact point's travel along a flat face (m, from the axis): ``low`` and
-    ``high`` (the extremes of ``s'`` per rad), the width ``high − low``."""
+    """The contact point's travel along a flat face (m, from the axis, or from the foot of
+    the pivot's perpendicular on a rocker's face): ``low`` and ``high``, the width
+    ``high − low`` (a translating face: the extremes of ``s'`` per rad)."""
 
     low: Extreme
     high: Extreme
@@ -100,8 +100,8 @@ class FaceWidth:
         return self.high.value - self.low.value
 
 
-def face_width(program: MotionProgram) -> FaceWidth:
-    """Where a flat face touches over the turn: the extremes of ``s'`` (m per rad)."""
-    high = motion_max(program, lambda m: m.ds)
-    low = motion_max(program, lambda m: -m.ds)
+def face_width(cam: Cam) -> FaceWidth:
+    """Where a flat face touches over the turn."""
+    high = cam_max(cam, lambda g: g.contact_along)
+    low = cam_max(cam, lambda g: -g.contact_along)
     return FaceWidth(Extreme(-low.value, low.phi), high)

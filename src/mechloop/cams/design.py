@@ -22,7 +22,7 @@ from mechloop.cams.checks import (
     min_curvature_radius,
     motion_max,
 )
-from mechloop.cams.followers import Follower, OscillatingRoller, TranslatingFlat
+from mechloop.cams.followers import Follower, TranslatingFlat
 from mechloop.cams.laws import PeakCoefficients
 from mechloop.cams.profile import Cam, Geometry
 from mechloop.cams.program import MotionProgram
@@ -56,8 +56,8 @@ class CamDesign:
         """The design with ``base_radius`` (m), or with the smallest one allowed when it
         is None (raises :class:`~mechloop.cams.base_radius.CamDesignError` when there is
         none)."""
-        if isinstance(follower, TranslatingFlat):
-            minimum = (minimum_flat_base_radius(program, min_curvature)
+        if follower.flat:
+            minimum = (minimum_flat_base_radius(program, min_curvature, follower=follower)
                        if base_radius is None else None)
         elif allowed is not None:
             try:
@@ -90,19 +90,20 @@ class CamDesign:
         """The figures of the design, each decided over the continuous cam angle."""
         program = self.program
         rho = min_curvature_radius(self.cam)
-        flat = isinstance(self.follower, TranslatingFlat)
+        flat = self.follower.flat
         if flat:
             undercut = rho.value < self.min_curvature
         else:
             undercut = rho.value <= 0
-        pressure = None if flat else max_pressure_angle(self.cam)
+        pressure = (None if isinstance(self.follower, TranslatingFlat)
+                    else max_pressure_angle(self.cam))
         ratio = (None if flat or self.allowed is None
                  else max_pressure_ratio(self.cam, self.allowed, self.allowed_return))
         return Summary(
             base_radius=self.cam.base_radius, minimum=self.minimum,
             stroke=program.stroke, pressure=pressure, pressure_ratio=ratio,
             rho=rho, undercut=undercut,
-            face=face_width(program) if flat else None,
+            face=face_width(self.cam) if flat else None,
             peaks=program.peaks(),
             extremes={name: (motion_max(program, lambda m, k=k: getattr(m, k)),
                              motion_max(program, lambda m, k=k: -getattr(m, k)))
@@ -114,7 +115,7 @@ class CamDesign:
         pressure angle (deg) and the radii of curvature (m)."""
         g = self.cycle()
         m = g.motion
-        rocker = isinstance(self.follower, OscillatingRoller)
+        rocker = self.follower.oscillating
         unit = "rad" if rocker else "m"
         cols: dict[str, np.ndarray] = {
             "phi [deg]": np.degrees(m.phi), f"s [{unit}]": m.s,
@@ -129,6 +130,8 @@ class CamDesign:
                      "pressure angle [deg]": np.degrees(g.pressure)})
         if g.pitch_rho is not None:
             cols["rho_pitch [m]"] = g.pitch_rho
+        if g.contact_along is not None:
+            cols["contact on the face [m]"] = g.contact_along
         cols["rho_profile [m]"] = g.rho
         return pd.DataFrame(cols)
 

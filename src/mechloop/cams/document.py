@@ -35,6 +35,7 @@ from mechloop.cams.base_radius import CamDesignError
 from mechloop.cams.design import CamDesign
 from mechloop.cams.followers import (
     Follower,
+    OscillatingFlat,
     OscillatingRoller,
     TranslatingFlat,
     TranslatingRoller,
@@ -63,9 +64,11 @@ class CamUnits(_Frozen):
 class FollowerSpec(_Frozen):
     """The follower: its type and dimensions (length units)."""
 
-    type: Literal["translating_roller", "oscillating_roller", "translating_flat"] = Field(
-        description="translating_roller, oscillating_roller (a rocker) or translating_flat "
-        "(a flat face perpendicular to its axis through the cam centre)")
+    type: Literal["translating_roller", "oscillating_roller", "translating_flat",
+                  "oscillating_flat"] = Field(
+        description="translating_roller, oscillating_roller (a rocker), translating_flat "
+        "(a flat face perpendicular to its axis through the cam centre) or "
+        "oscillating_flat (a flat face on a rocker)")
     roller_radius: Scalar | None = Field(None, description="roller radius (roller "
                                          "followers)")
     offset: Scalar = Field(0.0, description="translating roller: offset e of the axis "
@@ -74,6 +77,8 @@ class FollowerSpec(_Frozen):
     pivot_distance: Scalar | None = Field(None, description="rocker: distance from the "
                                           "cam centre to the rocker's pivot")
     arm: Scalar | None = Field(None, description="rocker: pivot to roller centre")
+    face_offset: Scalar = Field(0.0, description="oscillating_flat: distance of the face "
+                                "from the pivot (positive: away from the cam)")
 
 
 class SpeedSpec(_Frozen):
@@ -182,6 +187,15 @@ def _follower(spec: FollowerSpec, read: _Reader) -> Follower | None:
     base = ("cam", "follower")
     if spec.type == "translating_flat":
         return TranslatingFlat()
+    if spec.type == "oscillating_flat":
+        if spec.pivot_distance is None:
+            read.problem(base, "a rocker needs pivot_distance", "add pivot_distance: (a "
+                         "length)")
+            return None
+        pivot = read.positive(spec.pivot_distance, "length", (*base, "pivot_distance"),
+                              "the pivot distance")
+        offset = read.si(spec.face_offset, "length", (*base, "face_offset"))
+        return None if pivot is None or offset is None else OscillatingFlat(pivot, offset)
     if spec.roller_radius is None:
         read.problem(base, "a roller follower needs roller_radius", "add roller_radius: 10")
         return None
@@ -280,8 +294,7 @@ def cam_from_data(data: Any, *, file: str | None = None, lines=None) -> CamDesig
     if read.problems:
         raise located_error(read.problems, file, lines)
     follower = _follower(spec.follower, read)
-    program = _segments(spec, read, isinstance(follower, OscillatingRoller)
-                        or spec.follower.type == "oscillating_roller")
+    program = _segments(spec, read, spec.follower.type.startswith("oscillating"))
     allowed = allowed_return = base = None
     if spec.pressure_angle is not None:
         allowed = read.positive(spec.pressure_angle, "angle", ("cam", "pressure_angle"),
@@ -299,22 +312,24 @@ def cam_from_data(data: Any, *, file: str | None = None, lines=None) -> CamDesig
         base = read.positive(spec.base_radius, "length", ("cam", "base_radius"),
                              "the base radius")
     min_rho = read.si(spec.min_curvature_radius, "length", ("cam", "min_curvature_radius"))
-    flat = spec.follower.type == "translating_flat"
+    flat = spec.follower.type.endswith("flat")
     if not flat and base is None and spec.pressure_angle is None:
         read.problem(("cam",), "give the base radius or the allowed pressure angle",
                      "add base_radius: 40, or pressure_angle: 30 for the smallest base "
                      "radius")
     if flat and spec.pressure_angle is not None:
-        read.problem(("cam", "pressure_angle"), "a flat face perpendicular to its axis "
-                     "has a pressure angle of 0", "remove pressure_angle (the base radius "
-                     "follows from min_curvature_radius)")
+        read.problem(("cam", "pressure_angle"), "a flat face's base radius follows from "
+                     "its convexity, not from a pressure angle", "remove pressure_angle "
+                     "(the base radius follows from min_curvature_radius)")
     if follower is not None and base is not None:
         lo, hi = base_limits(follower)
         if not lo < base < hi:
             read.problem(("cam", "base_radius"), f"the base radius must lie between "
                          f"{lo:.6g} and {hi:.6g} m for this follower",
                          "a roller's base radius exceeds the offset; a rocker's lies "
-                         "between |pivot_distance − arm| and pivot_distance + arm")
+                         "between |pivot_distance − arm| and pivot_distance + arm, a "
+                         "rocker face's between face_offset and face_offset + "
+                         "pivot_distance")
     if read.problems or follower is None or program is None:
         raise located_error(read.problems, file, lines)
     omega = None if spec.speed is None else spec.speed.rpm * math.pi / 30

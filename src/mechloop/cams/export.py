@@ -16,7 +16,6 @@ from pathlib import Path
 import numpy as np
 
 from mechloop.cams.design import CamDesign
-from mechloop.cams.followers import TranslatingFlat
 from mechloop.output.atomic import atomic_write_bytes, atomic_write_text
 from mechloop.output.tables import write_frame
 
@@ -33,7 +32,7 @@ def _curves(design: CamDesign) -> tuple[np.ndarray, np.ndarray | None, float]:
     radius of the profile (mm)."""
     g = design.cycle()
     profile = g.profile[:-1] * MM
-    flat = isinstance(design.follower, TranslatingFlat)
+    flat = design.follower.flat
     pitch = None if flat else g.pitch[:-1] * MM
     base = design.cam.base_radius * MM
     if not flat:

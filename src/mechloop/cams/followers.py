@@ -11,7 +11,13 @@ Conventions (the cam rotates counter-clockwise about the origin ``O``; the fixed
   the roller centre is at ``A + l(−cos β, sin β)``; ``ψ₀`` puts the roller centre at
   distance ``R₀`` from ``O`` when ``ψ = 0``;
 * :class:`TranslatingFlat` — the face is perpendicular to the ``y`` axis at
-  ``y = R₀ + s`` (``R₀`` the base radius of the profile itself).
+  ``y = R₀ + s`` (``R₀`` the base radius of the profile itself);
+* :class:`OscillatingFlat` — a flat face on a rocker pivoted at ``A = (a, 0)``: the face
+  is the line ``A + u·t + f·n`` with ``t = (−cos β, sin β)``, ``n = (sin β, cos β)``,
+  ``β = ψ₀ + ψ`` its angle from ``AO``, ``f`` the face's offset from the pivot
+  (``face_offset``); its distance from ``O`` is ``a sin β + f``, which is ``R₀`` at
+  ``ψ = 0``, so ``ψ₀ = asin((R₀ − f)/a)`` (the face stays on the near side of the
+  perpendicular to ``AO``: ``β < 90°``).
 
 :func:`follower_point` gives the follower's reference point ``B`` (the roller centre; the
 face's foot on the axis) and its first two analogs, and the unit direction ``d`` in which
@@ -38,6 +44,8 @@ class TranslatingRoller:
     roller_radius: float
     offset: float = 0.0
     kind: str = "translating_roller"
+    flat = False
+    oscillating = False
 
 
 @dataclass(frozen=True)
@@ -50,6 +58,8 @@ class OscillatingRoller:
     pivot_distance: float
     arm: float
     kind: str = "oscillating_roller"
+    flat = False
+    oscillating = True
 
     def start_angle(self, base_radius: float) -> float:
         """``ψ₀`` (rad): the arm's angle from ``AO`` that puts the roller centre at the
@@ -64,9 +74,30 @@ class TranslatingFlat:
     cam centre."""
 
     kind: str = "translating_flat"
+    flat = True
+    oscillating = False
 
 
-Follower = TranslatingRoller | OscillatingRoller | TranslatingFlat
+@dataclass(frozen=True)
+class OscillatingFlat:
+    """An oscillating flat-faced follower: the distance ``a`` from the cam centre to the
+    pivot and the face's offset ``f`` from the pivot (m: the face is the line at the distance
+    ``f`` from the pivot, on the far side from the cam when ``f > 0``); its
+    motion program is in radians of the rocker."""
+
+    pivot_distance: float
+    face_offset: float = 0.0
+    kind: str = "oscillating_flat"
+    flat = True
+    oscillating = True
+
+    def start_angle(self, base_radius: float) -> float:
+        """``ψ₀`` (rad): the face's angle from ``AO`` that puts it at the distance
+        ``base_radius`` from the cam centre."""
+        return math.asin((base_radius - self.face_offset) / self.pivot_distance)
+
+
+Follower = TranslatingRoller | OscillatingRoller | TranslatingFlat | OscillatingFlat
 
 
 def base_limits(follower: Follower) -> tuple[float, float]:
@@ -76,6 +107,8 @@ def base_limits(follower: Follower) -> tuple[float, float]:
     if isinstance(follower, OscillatingRoller):
         a, arm = follower.pivot_distance, follower.arm
         return abs(a - arm), a + arm
+    if isinstance(follower, OscillatingFlat):
+        return max(follower.face_offset, 0.0), follower.face_offset + follower.pivot_distance
     return 0.0, math.inf
 
 
@@ -102,6 +135,16 @@ def follower_point(follower: Follower, base_radius: float, s: Array, ds: Array, 
         ddb = arm * (np.stack([c, -n], axis=-1) * (ds * ds)[..., None]
                      + d * dds[..., None])
         return b, db, ddb, d
+    if isinstance(follower, OscillatingFlat):  # the face's foot from the pivot, A + f·n
+        a, f = follower.pivot_distance, follower.face_offset
+        beta = follower.start_angle(base_radius) + s
+        c, n = np.cos(beta), np.sin(beta)
+        normal = np.stack([n, c], axis=-1)
+        along = np.stack([-c, n], axis=-1)
+        b = np.stack([zero + a, zero], axis=-1) + f * normal
+        db = -f * along * ds[..., None]
+        ddb = -f * (normal * (ds * ds)[..., None] + along * dds[..., None])
+        return b, db, ddb, normal
     b = np.stack([zero, base_radius + s], axis=-1)
     return (b, np.stack([zero, ds], axis=-1), np.stack([zero, dds], axis=-1),
             np.stack([zero, zero + 1.0], axis=-1))

@@ -20,6 +20,7 @@ from matplotlib.figure import Figure
 
 from mechloop.cams.design import CamDesign
 from mechloop.cams.followers import (
+    OscillatingFlat,
     OscillatingRoller,
     TranslatingFlat,
     TranslatingRoller,
@@ -47,7 +48,7 @@ def plot_program(design: CamDesign) -> Figure:
     when the design has one, else the analogs per radian; segment joins marked."""
     g = design.cycle()
     m = g.motion
-    rocker = isinstance(design.follower, OscillatingRoller)
+    rocker = design.follower.oscillating
     scale, unit = (1.0, "deg") if rocker else _length(design)
     conv = (180 / math.pi) if rocker else 1.0 / scale
     w = design.omega
@@ -79,7 +80,7 @@ def plot_profile(design: CamDesign, *, rollers: int = 12) -> Figure:
     figure = new_figure(7.0, 7.0)
     ax = figure.add_subplot()
     ax.plot(*(g.profile / scale).T, color="black", linewidth=1.6, label="working profile")
-    flat = isinstance(design.follower, TranslatingFlat)
+    flat = design.follower.flat
     base = design.cam.base_radius
     t = np.linspace(0, 2 * math.pi, 361)
     if not flat:
@@ -99,12 +100,12 @@ def plot_profile(design: CamDesign, *, rollers: int = 12) -> Figure:
                 linewidth=0.7, linestyle=":", label=f"base circle R0 = {base / scale:.4g} "
                 f"{unit}")
         step = max(1, design.positions // rollers)
-        half = max(abs(g.motion.ds).max() * 1.2, base * 0.2)
+        low, high = _face_span(design, g)
         for k in range(0, design.positions, step):
-            along = _rotate(np.array([[-half, base + g.motion.s[k]],
-                                      [half, base + g.motion.s[k]]]),
-                            np.full(2, g.motion.phi[k]))
-            ax.plot(*(along / scale).T, color="0.6", linewidth=0.5,
+            tangent = _face_tangent(design, g.normal[k])
+            foot = g.profile[k] - g.contact_along[k] * tangent
+            ends = np.stack([foot + low * tangent, foot + high * tangent])
+            ax.plot(*(ends / scale).T, color="0.6", linewidth=0.5,
                     label="face" if k == 0 else None)
     ax.plot([0], [0], marker="+", color="black", markersize=10, linestyle="none")
     ax.set_aspect("equal")
@@ -115,6 +116,21 @@ def plot_profile(design: CamDesign, *, rollers: int = 12) -> Figure:
     ax.grid(True, linewidth=0.3)
     ax.legend(loc="upper right", fontsize="small")
     return figure
+
+
+def _face_tangent(design: CamDesign, normal: np.ndarray) -> np.ndarray:
+    """Unit vector along a flat face, the way its contact coordinate grows."""
+    turned = np.stack([-normal[..., 1], normal[..., 0]], axis=-1)
+    return turned if design.follower.oscillating else -turned
+
+
+def _face_span(design: CamDesign, g, *, to_pivot: bool = False) -> tuple[float, float]:
+    """The stretch of the face to draw (m along it from its foot): the contact's travel
+    with a margin (``to_pivot``: from the foot at a rocker's pivot)."""
+    along = g.contact_along
+    margin = 0.15 * max(float(np.ptp(along)), 0.2 * design.cam.base_radius)
+    low = min(float(along.min()), 0.0) if to_pivot else float(along.min()) - margin
+    return low, float(along.max()) + margin
 
 
 def plot_pressure(design: CamDesign) -> Figure:
@@ -157,7 +173,7 @@ def plot_curvature(design: CamDesign) -> Figure:
         ax.plot(phi, clip(g.pitch_rho), color="tab:red", linestyle="--", linewidth=0.9,
                 label="pitch curve ρ")
     ax.axhline(0, color="0.3", linewidth=0.6)
-    if isinstance(design.follower, TranslatingFlat):
+    if design.follower.flat:
         if design.min_curvature > 0:
             ax.axhline(design.min_curvature / scale, color="tab:green", linestyle=":",
                        label="allowed ρ")
@@ -182,9 +198,9 @@ def _plan_limits(design: CamDesign) -> tuple[float, float, float, float]:
     f = design.follower
     top = 1.6 * reach
     lo_x, hi_x, lo_y, hi_y = -reach, reach, -reach, top
-    if isinstance(f, OscillatingRoller):
+    if isinstance(f, OscillatingRoller | OscillatingFlat):
         hi_x = max(hi_x, f.pivot_distance + 0.15 * reach)
-        hi_y = max(hi_y, f.arm + 0.1 * reach)
+        hi_y = max(hi_y, getattr(f, "arm", 0.0) + 0.1 * reach)
     pad = 0.08 * reach
     return lo_x - pad, hi_x + pad, lo_y - pad, hi_y + pad
 
@@ -207,10 +223,18 @@ def draw_plan(ax: Axes, design: CamDesign, phi: float) -> None:
     f = design.follower
     t = np.linspace(0, 2 * math.pi, 121)
     reach = float(np.max(np.hypot(*cam.T)))
-    if isinstance(f, TranslatingFlat):
-        half = max(abs(g.motion.ds).max() * 1.2, design.cam.base_radius * 0.2) / scale
-        ax.plot([-half, half], [b[1], b[1]], color="tab:blue", linewidth=2.5)
-        ax.plot([0, 0], [b[1], b[1] + 0.5 * reach], color="tab:blue", linewidth=2.5)
+    if f.flat:
+        low, high = _face_span(design, g, to_pivot=f.oscillating)
+        tangent = _face_tangent(design, normal)
+        foot = contact - float(here.contact_along[0]) / scale * tangent
+        face = np.stack([foot + low / scale * tangent, foot + high / scale * tangent])
+        ax.plot(*face.T, color="tab:blue", linewidth=2.5)
+        if isinstance(f, TranslatingFlat):
+            ax.plot([0, 0], [foot[1], foot[1] + 0.5 * reach], color="tab:blue", linewidth=2.5)
+        else:
+            pivot = np.array([f.pivot_distance, 0.0]) / scale
+            ax.plot([pivot[0], foot[0]], [pivot[1], foot[1]], color="tab:blue", linewidth=2.5)
+            ax.plot(*pivot, marker="o", color="tab:blue", markersize=6)
     else:
         r = f.roller_radius / scale
         ax.fill(b[0] + r * np.cos(t), b[1] + r * np.sin(t), facecolor="white",
@@ -234,7 +258,7 @@ def draw_plan(ax: Axes, design: CamDesign, phi: float) -> None:
 
 
 def _s_text(design: CamDesign, s: float) -> str:
-    if isinstance(design.follower, OscillatingRoller):
+    if design.follower.oscillating:
         return f"{math.degrees(s):.3f} deg"
     scale, unit = _length(design)
     return f"{s / scale:.4g} {unit}"
@@ -260,7 +284,7 @@ def plot_cam(design: CamDesign, view: str, *, phi: float = 0.0) -> Figure:
     if view == "profile":
         return plot_profile(design)
     if view == "pressure":
-        if isinstance(design.follower, TranslatingFlat):
+        if isinstance(design.follower, TranslatingFlat):  # a rocker's face has one
             raise ViewError("a flat face perpendicular to its axis has a pressure angle of "
                             "0", "draw the program, profile, curvature or plan instead")
         return plot_pressure(design)

@@ -13,12 +13,18 @@ normal towards the cam, ``W = P − r J P'/|P'|`` (the inner envelope of the rol
 circles); the radius of curvature of the pitch curve is ``ρ = −|P'|³ / (P' × P'')``
 (positive where the cam is convex) and the profile's is ``ρ − r``.  A flat face touches
 the cam at the distance ``s'`` from the axis along the face: ``W = R(−φ)(s', R₀ + s)``,
-with the radius of curvature ``ρ = R₀ + s + s''``.
+with the radius of curvature ``ρ = R₀ + s + s''``.  A rocker's flat face (the line
+``A + u·t + f·n``, :mod:`mechloop.cams.followers`) touches where
+``u = a cos β / (1 + ψ')`` (the envelope condition of the lines in the cam's frame), and
+the profile's radius of curvature is ``ρ = (a sin β + f(1 + ψ') − u')/(1 + ψ')`` (the
+rate of the arc along the face over the rate of the face's turn in the cam's frame).
 
 The pressure angle is the angle between the contact normal (the normal of the pitch curve)
 and the direction ``d`` in which the follower's point moves,
 ``α = atan2(P'·d, P'×d)`` in the fixed frame's terms (positive when the normal leans to
-the side the cam surface moves away from); a flat face perpendicular to the axis has 0.
+the side the cam surface moves away from), ``tan α = (s' − e)/(s₀ + s)`` for a translating
+roller; a flat face perpendicular to the axis has 0, a rocker's face
+``α = atan2(f, u)`` (0 when the face passes through the pivot).
 """
 
 from __future__ import annotations
@@ -31,6 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from mechloop.cams.followers import (
     Follower,
+    OscillatingFlat,
     TranslatingFlat,
     base_limits,
     follower_point,
@@ -69,7 +76,9 @@ class Geometry:
     profile (the contact point); ``normal``: unit contact normal pointing out of the cam;
     ``pressure``: pressure angle (rad); ``pitch_rho``: radius of curvature of the pitch
     curve (m; +∞ where straight; None for a flat face); ``rho``: radius of curvature of
-    the working profile (m, positive where convex).
+    the working profile (m, positive where convex); ``contact_along``: a flat face's
+    contact point along the face (m, from the axis; from the pivot's foot for a rocker),
+    None for a roller.
     """
 
     motion: Motion
@@ -81,6 +90,7 @@ class Geometry:
     pressure: Array
     pitch_rho: Array | None
     rho: Array
+    contact_along: Array | None = None
 
 
 def geometry(follower: Follower, base_radius: float, motion: Motion) -> Geometry:
@@ -96,7 +106,20 @@ def geometry(follower: Follower, base_radius: float, motion: Motion) -> Geometry
         rho = base_radius + motion.s + motion.dds
         contact = _rotate(np.stack([motion.ds, base_radius + motion.s], axis=-1), phi)
         normal = _rotate(np.stack([np.zeros_like(phi), np.ones_like(phi)], axis=-1), phi)
-        return Geometry(motion, p, p1, p2, contact, normal, np.zeros_like(phi), None, rho)
+        return Geometry(motion, p, p1, p2, contact, normal, np.zeros_like(phi), None, rho,
+                        motion.ds)
+    if isinstance(follower, OscillatingFlat):
+        a, f = follower.pivot_distance, follower.face_offset
+        beta = follower.start_angle(base_radius) + motion.s
+        c, n = np.cos(beta), np.sin(beta)
+        turn = 1.0 + motion.ds
+        u = a * c / turn
+        du = (-a * n * motion.ds * turn - a * c * motion.dds) / turn**2
+        rho = (a * n + f * turn - du) / turn
+        normal_fixed = np.stack([n, c], axis=-1)
+        contact = np.stack([a - u * c, u * n], axis=-1) + f * normal_fixed
+        return Geometry(motion, p, p1, p2, _rotate(contact, phi), _rotate(normal_fixed, phi),
+                        np.arctan2(f, u), None, rho, u)
     speed = np.hypot(p1[..., 0], p1[..., 1])
     outward = _quarter(p1) / speed[..., None]  # clockwise path: J·tangent points out
     cross = _cross(p1, p2)

@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 
 from mechloop.cams.design import CamDesign
-from mechloop.cams.followers import OscillatingRoller, TranslatingFlat
 from mechloop.model.units import unit_factor
 
 Row = tuple[str, str, str]
@@ -23,8 +22,8 @@ def summary_rows(design: CamDesign) -> tuple[list[Row], list[Row], list[str]]:
     s = design.summary()
     length = design.units[0]
     to = 1.0 / unit_factor(length, "length")
-    rocker = isinstance(design.follower, OscillatingRoller)
-    flat = isinstance(design.follower, TranslatingFlat)
+    rocker = design.follower.oscillating
+    flat = design.follower.flat
     lift_unit = "deg" if rocker else length
     lift = (180 / math.pi) if rocker else to
     rows: list[Row] = []
@@ -45,7 +44,8 @@ def summary_rows(design: CamDesign) -> tuple[list[Row], list[Row], list[str]]:
                  "∞ (nowhere convex)" if math.isinf(s.rho.value) else
                  f"{s.rho.value * to:.6g}", length))
     if s.face is not None:
-        rows.append(("contact on the face, from the axis", f"{s.face.low.value * to:.6g} to "
+        origin = "the pivot's foot" if rocker else "the axis"
+        rows.append((f"contact on the face, from {origin}", f"{s.face.low.value * to:.6g} to "
                      f"{s.face.high.value * to:.6g}", length))
         rows.append(("smallest face width", f"{s.face.width * to:.6g}", length))
     w = design.omega
@@ -72,9 +72,9 @@ def summary_rows(design: CamDesign) -> tuple[list[Row], list[Row], list[str]]:
                                                         f": raise the base radius to at least "
                                                         f"{s.minimum * to:.6g} {length}"))
     if flat:
-        verdicts.append("profile convex (ρ = R0 + s + s'' at least the allowed)" if not
-                        s.undercut else "profile not convex: ρ = R0 + s + s'' falls below "
-                        "the allowed; raise the base radius")
+        verdicts.append("profile convex (its radius of curvature at least the allowed)"
+                        if not s.undercut else "profile not convex: its radius of curvature "
+                        "falls below the allowed; raise the base radius")
     else:
         verdicts.append("no undercut: the pitch curve's radius exceeds the roller's where "
                         "convex" if not s.undercut else "undercut / pointed profile: the "
