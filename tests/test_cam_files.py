@@ -172,3 +172,17 @@ def test_the_shipped_schema_is_the_generated_one_and_the_docstrings_run():
     shipped = Path(mechloop.cams.__file__).parents[1] / "schema" / "cam.schema.json"
     assert json.loads(shipped.read_text(encoding="utf-8")) == cam_json_schema()
     assert doctest.testmod(mechloop.cams, raise_on_error=True).attempted > 0
+
+
+def test_a_follower_pushed_past_its_geometry_is_an_error_at_the_base_radius():
+    """A program that starts with a return takes a translating roller below its start:
+    with too small a base radius its centre would pass the cam centre."""
+    data = _data(ROLLER)
+    cam = data["cam"]
+    cam["segments"] = [{"return": 30, "angle": 120, "law": "cycloidal"}, {"dwell": 60},
+                       {"rise": 30, "angle": 120, "law": "cycloidal"}, {"dwell": 60}]
+    cam["base_radius"] = 30
+    with pytest.raises(ModelError) as info:
+        cam_from_data(data)
+    assert info.value.problems[0].path == ("cam", "base_radius")
+    assert "leaves its geometry" in info.value.problems[0].message

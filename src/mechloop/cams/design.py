@@ -3,6 +3,7 @@ chosen, the limits it is held to, its speed, and the figures that describe it.""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,7 +23,12 @@ from mechloop.cams.checks import (
     min_curvature_radius,
     motion_max,
 )
-from mechloop.cams.followers import Follower, TranslatingFlat
+from mechloop.cams.followers import (
+    Follower,
+    OscillatingRoller,
+    TranslatingFlat,
+    TranslatingRoller,
+)
 from mechloop.cams.laws import PeakCoefficients
 from mechloop.cams.profile import Cam, Geometry
 from mechloop.cams.program import MotionProgram
@@ -71,6 +77,7 @@ class CamDesign:
             minimum = None
         radius = base_radius if base_radius is not None else minimum
         assert radius is not None
+        check_placement(follower, program, radius)
         return cls(Cam(follower, program, radius), minimum, allowed, allowed_return,
                    min_curvature, omega, name, positions, units)
 
@@ -160,3 +167,25 @@ class Summary:
         """Largest ``|value|`` of ``s``, ``v``, ``a`` or ``j`` (analog per rad^k)."""
         high, low = self.extremes[name]
         return max(high.value, low.value)
+
+
+def check_placement(follower: Follower, program: MotionProgram, radius: float) -> None:
+    """Raise :class:`~mechloop.cams.base_radius.CamDesignError` unless the follower stays
+    where its geometry holds over the whole (continuous) turn: a translating roller's
+    centre and a flat face above the cam centre (``s₀ + s > 0``, ``R₀ + s > 0``), a
+    rocker's arm at ``0 < β < 180°``, a rocker's face at ``0 < β < 90°``."""
+    high = motion_max(program, lambda m: m.s).value
+    low = -motion_max(program, lambda m: -m.s).value
+    if isinstance(follower, TranslatingRoller):
+        ok = math.sqrt(radius**2 - follower.offset**2) + low > 0
+    elif isinstance(follower, TranslatingFlat):
+        ok = radius + low > 0
+    else:
+        start = follower.start_angle(radius)
+        ok = 0 < start + low and start + high < (math.pi if isinstance(
+            follower, OscillatingRoller) else math.pi / 2)
+    if not ok:
+        raise CamDesignError(
+            f"with the base radius {radius:.6g} m the follower leaves its geometry over the "
+            "turn (it passes the cam centre, or the rocker swings past its limit)",
+            "raise the base radius, or start the program at its lowest displacement")
