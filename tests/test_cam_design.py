@@ -430,3 +430,27 @@ def test_profile_matches_the_vector_model_with_intermediate_arguments():
     res = solve_intermediate(mechloop.load_model(EXAMPLES / "cam_flat_follower.yaml"))
     x, y = res.envelopes["profile"].curve(-1)
     assert np.abs(np.stack([x, y], axis=1) - flat.cycle(360).profile).max() < 1e-12
+
+
+@pytest.mark.parametrize("follower, radius", [(TranslatingRoller(0.009, -0.008), 0.045),
+                                              (TranslatingFlat(), 0.05)],
+                         ids=["roller", "flat"])
+def test_the_vector_model_written_from_a_design_gives_its_profile(follower, radius, tmp_path):
+    """`mechloop cam --model`: the design written as the seed's vector model (other laws,
+    the offset on the other side) and solved by the intermediate-argument solver gives
+    the same profile at every degree, the acceleration jumps of the harmonic law
+    included."""
+    import mechloop
+    from mechloop.cams.design import CamDesign
+    from mechloop.cams.vector_model import write_vector_model
+    from mechloop.solve.intermediate import solve_intermediate
+
+    prog = MotionProgram((Segment("rise", deg(90), 0.018, law("harmonic")),
+                          Segment("dwell", deg(30)),
+                          Segment("return", deg(150), 0.018, law("poly345")),
+                          Segment("dwell", deg(90))))
+    design = CamDesign.build(follower, prog, base_radius=radius)
+    path = write_vector_model(design, tmp_path / "cam.yaml")
+    x, y = solve_intermediate(mechloop.load_model(path)).envelopes["profile"].curve(-1)
+    assert np.isfinite(x).all()
+    assert np.abs(np.stack([x, y], axis=1) - design.cam.cycle(360).profile).max() < 1e-12

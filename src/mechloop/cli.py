@@ -1050,6 +1050,9 @@ def cam_command(
                    "default: none")] = None,
     svg: Annotated[Path | None, typer.Option(help="the profile as an SVG drawing (mm); "
                    "default: none")] = None,
+    vector_model: Annotated[Path | None, typer.Option("--model", help="the same cam as a "
+                            "vector model with intermediate arguments (.yaml or .json; "
+                            "translating followers; default: none)")] = None,
     force: Force = False,
 ) -> None:
     """Design a disc cam by inverted motion (course sheet 4): translating or oscillating
@@ -1077,7 +1080,7 @@ def cam_command(
                "curvature": curvature, "plan": plan}
     _outputs(model, force, *((p, FIGURE_SUFFIXES) for p in figures.values()),
              (animation, ANIMATION_SUFFIXES), (table, SUFFIXES), (dxf, (".dxf",)),
-             (svg, (".svg",)))
+             (svg, (".svg",)), (vector_model, (".yaml", ".yml", ".json")))
     design = load_cam(model)
     rows, segments, verdicts = summary_rows(design)
     shown = _table(f"Cam — {design.name or model}", ["quantity", "value", "unit"])
@@ -1103,6 +1106,11 @@ def cam_command(
     for path, writer in ((table, write_table), (dxf, write_dxf), (svg, write_svg)):
         if path is not None:
             out.print(f"wrote {writer(design, path)}")
+    if vector_model is not None:
+        from mechloop.cams.vector_model import write_vector_model
+
+        out.print(f"wrote {write_vector_model(design, vector_model)} (mechloop plot "
+                  f"{vector_model} envelope draws its profile)")
 
 
 if __name__ == "__main__":  # pragma: no cover
