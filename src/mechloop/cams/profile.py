@@ -21,9 +21,10 @@ rate of the arc along the face over the rate of the face's turn in the cam's fra
 
 The pressure angle is the angle between the contact normal (the normal of the pitch curve)
 and the direction ``d`` in which the follower's point moves,
-``α = atan2(P'·d, P'×d)`` in the fixed frame's terms (positive when the normal leans to
-the side the cam surface moves away from), ``tan α = (s' − e)/(s₀ + s)`` for a translating
-roller; a flat face perpendicular to the axis has 0, a rocker's face
+``α = atan2(T·d, T×d)`` with ``T`` the tangent of the profile as the cam angle grows
+(``B' − J B`` for a roller, in the fixed frame's terms): its sign says to which side of
+the follower's direction the normal leans; ``tan α = (s' − e)/(s₀ + s)`` for a
+translating roller (so a positive offset lowers the pressure angle on the rise); a flat face perpendicular to the axis has 0, a rocker's face
 ``α = atan2(f, u)`` (0 when the face passes through the pivot).
 """
 
