@@ -1076,6 +1076,8 @@ def cam_command(
     from mechloop.views.animation import ANIMATION_SUFFIXES
     from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
 
+    if not math.isfinite(at):
+        raise typer.BadParameter(f"{at}: give a cam angle in degrees", param_hint="--at")
     figures = {"program": program, "profile": profile, "pressure": pressure,
                "curvature": curvature, "plan": plan}
     _outputs(model, force, *((p, FIGURE_SUFFIXES) for p in figures.values()),

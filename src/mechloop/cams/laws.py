@@ -207,14 +207,15 @@ def continuous_max(func: Callable[[Array], Array], lo: float, hi: float, *,
     located to that, its value to rounding).  The ends count."""
     x = np.linspace(lo, hi, samples)
     y = func(x)
-    inner = np.r_[False, (y[1:-1] >= y[:-2]) & (y[1:-1] >= y[2:]), False]
-    found = np.flatnonzero(inner)
+    # local maxima of the samples, the ends included: a peak between an end and its
+    # neighbour leaves the end the larger of the two
+    peak = np.r_[y[0] >= y[1], (y[1:-1] >= y[:-2]) & (y[1:-1] >= y[2:]), y[-1] >= y[-2]]
+    found = np.flatnonzero(peak)
     found = found[np.argsort(-y[found], kind="stable")][:refine]
     best = int(np.argmax(y))
     value, where = float(y[best]), float(x[best])
-    if found.size == 0:
-        return value, where
-    left, right = x[found - 1], x[found + 1]
+    left = x[np.maximum(found - 1, 0)]
+    right = x[np.minimum(found + 1, samples - 1)]
     steps = np.linspace(0.0, 1.0, zoom)
     while True:
         points = left[:, None] + (right - left)[:, None] * steps

@@ -24,8 +24,9 @@ and the direction ``d`` in which the follower's point moves,
 ``α = atan2(T·d, T×d)`` with ``T`` the tangent of the profile as the cam angle grows
 (``B' − J B`` for a roller, in the fixed frame's terms): its sign says to which side of
 the follower's direction the normal leans; ``tan α = (s' − e)/(s₀ + s)`` for a
-translating roller (so a positive offset lowers the pressure angle on the rise); a flat face perpendicular to the axis has 0, a rocker's face
-``α = atan2(f, u)`` (0 when the face passes through the pivot).
+translating roller (so a positive offset lowers the pressure angle on the rise); a flat
+face perpendicular to the axis has 0, a rocker's face ``α = atan2(f, u)`` (0 when the
+face passes through the pivot).
 """
 
 from __future__ import annotations
