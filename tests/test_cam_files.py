@@ -186,3 +186,11 @@ def test_a_follower_pushed_past_its_geometry_is_an_error_at_the_base_radius():
         cam_from_data(data)
     assert info.value.problems[0].path == ("cam", "base_radius")
     assert "leaves its geometry" in info.value.problems[0].message
+
+
+def test_a_rocker_face_returning_as_fast_as_the_cam_is_an_error():
+    data = _data(ROLLER.parent / "flat_rocker.yaml")
+    data["cam"]["segments"] = [{"rise": 40, "angle": 120, "law": "cycloidal"},
+                               {"dwell": 200}, {"return": 40, "angle": 40, "law": "cycloidal"}]
+    with pytest.raises(ModelError, match="turns back as fast as the cam"):
+        cam_from_data(data)

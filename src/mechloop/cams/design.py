@@ -62,6 +62,7 @@ class CamDesign:
         """The design with ``base_radius`` (m), or with the smallest one allowed when it
         is None (raises :class:`~mechloop.cams.base_radius.CamDesignError` when there is
         none)."""
+        check_face_turn(follower, program)
         if follower.flat:
             minimum = (minimum_flat_base_radius(program, min_curvature, follower=follower)
                        if base_radius is None else None)
@@ -173,7 +174,9 @@ def check_placement(follower: Follower, program: MotionProgram, radius: float) -
     """Raise :class:`~mechloop.cams.base_radius.CamDesignError` unless the follower stays
     where its geometry holds over the whole (continuous) turn: a translating roller's
     centre and a flat face above the cam centre (``s₀ + s > 0``, ``R₀ + s > 0``), a
-    rocker's arm at ``0 < β < 180°``, a rocker's face at ``0 < β < 90°``."""
+    rocker's arm at ``0 < β < 180°``, a rocker's face at ``0 < β < 90°`` and turning
+    slower than the cam the other way (``ψ' > −1``: the contact ``u = a cos β/(1 + ψ')``
+    stays finite)."""
     high = motion_max(program, lambda m: m.s).value
     low = -motion_max(program, lambda m: -m.s).value
     if isinstance(follower, TranslatingRoller):
@@ -189,3 +192,14 @@ def check_placement(follower: Follower, program: MotionProgram, radius: float) -
             f"with the base radius {radius:.6g} m the follower leaves its geometry over the "
             "turn (it passes the cam centre, or the rocker swings past its limit)",
             "raise the base radius, or start the program at its lowest displacement")
+    check_face_turn(follower, program)
+
+
+def check_face_turn(follower: Follower, program: MotionProgram) -> None:
+    """A rocker's face must turn back slower than the cam (``ψ' > −1``)."""
+    if follower.flat and follower.oscillating and \
+            motion_max(program, lambda m: -m.ds).value >= 1:
+        raise CamDesignError(
+            "the rocker's face turns back as fast as the cam turns (dψ/dφ reaches −1): its "
+            "contact runs off to infinity", "return over a larger cam angle, or by a law "
+            "with a smaller peak velocity")
