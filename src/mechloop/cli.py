@@ -397,6 +397,12 @@ def _print_simulation(sim) -> None:
     import numpy as np
 
     from mechloop.dynamics.motors import RPM
+    from mechloop.dynamics.simulate_inputs import InputsSimulation, summary_lines
+
+    if isinstance(sim, InputsSimulation):  # several inputs: Lagrange's equations
+        for line in summary_lines(sim):
+            out.print(line)
+        return
 
     machine = sim.machine
     accuracy = machine.interpolation

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.dynamics.loads import build_loads
+from mechloop.dynamics.loads import _moving, build_loads
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Placement
 from mechloop.dynamics.state_kinematics import StateKinematics
@@ -70,6 +70,12 @@ class LagrangeMachine:
         self.inputs = tuple(inputs)
         self.n = len(self.inputs)
         self.kinematics = StateKinematics(model, self.inputs)
+        #: whether a load reads the rates or the time (dampers, when:, expressions of
+        #: rates or t): only then are the loads built on a second placement of the true
+        #: state repeated over the analog columns
+        self.reads_rates = bool(model.dampers) or any(
+            load.when is not None or _moving(load.value)
+            for load in (*model.forces, *model.moments))
 
     def terms(self, t: Array | float, q: Array, qdot: Array) -> Terms:
         """The terms at times ``t`` (s, ``(S,)`` or a float) and states ``q``, ``qdot``
@@ -80,7 +86,8 @@ class LagrangeMachine:
         res = states.results
         motion = Placement(res)
         first = np.arange(n_states) * width
-        state = Placement(_columns(res, np.repeat(first, width)))
+        state = Placement(_columns(res, np.repeat(first, width))) if self.reads_rates \
+            else motion
         with np.errstate(invalid="ignore", over="ignore"):
             mass = np.zeros((n_states, n, n))
             bias = np.zeros((n_states, n))

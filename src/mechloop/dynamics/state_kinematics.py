@@ -127,9 +127,9 @@ class StateKinematics:
         shape = (columns,)
         values, rates, accels = {}, {}, {}
         for name, p in block.params.items():
-            values[name] = np.broadcast_to(np.asarray(p.value, dtype=float), shape)
-            rates[name] = np.broadcast_to(np.asarray(p.rate, dtype=float), shape)
-            accels[name] = np.broadcast_to(np.asarray(p.accel, dtype=float), shape)
+            values[name] = _column(p.value, shape)
+            rates[name] = _column(p.rate, shape)
+            accels[name] = _column(p.accel, shape)
         broken = np.zeros(shape, dtype=bool)
         for mask in block.broken.values():
             broken |= mask
@@ -170,3 +170,10 @@ class StateKinematics:
         which = np.argmin(table, axis=0)
         margin = np.where(broken, -1.0, table[which, np.arange(n_states)])
         return margin, np.asarray(numbers, dtype=np.int64)[which]
+
+
+def _column(x, shape: tuple[int]) -> Array:
+    """``x`` (a solved array, or a constant's scalar) as an array of ``shape``."""
+    if isinstance(x, np.ndarray) and x.shape == shape:
+        return x
+    return np.full(shape, x, dtype=float)
