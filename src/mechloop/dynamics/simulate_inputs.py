@@ -195,14 +195,14 @@ def integrate_inputs(machine: LagrangeMachine, motors: dict[int, MotorCurve], q0
     n = machine.n
     q0, omega0 = np.asarray(q0, dtype=float), np.asarray(omega0, dtype=float)
     rotors = np.array([motors[i].inertia if i in motors else 0.0 for i in range(n)])
+    machine.kinematics.orient(machine.kinematics.at(q0, omega0))  # the margins' signs
+    start = machine.kinematics.at(q0, omega0)  # on the start's branch
+    if start.broken[0] or not start.margin[0] > settings.near_break:
+        raise SolveError(f"the chain does not assemble at the start (contour "
+                         f"{int(start.contour[0])} breaks or is at a dead point)",
+                         "start the inputs where the mechanism assembles")
     cached = _Cached(machine)
     first = cached(0.0, q0, omega0)
-    if first.broken[0] or not first.margin[0] > settings.near_break:
-        raise SolveError(f"the chain does not assemble at the start (contour "
-                         f"{int(first.contour[0])} breaks or is at a dead point)",
-                         "start the inputs where the mechanism assembles")
-    machine.kinematics.orient(machine.kinematics.at(q0, omega0))
-    first = machine.terms(0.0, q0, omega0)
     mass0 = first.mass[0] + np.diag(rotors)
     if not np.all(np.linalg.eigvalsh(mass0) > 1e-12 * max(np.abs(mass0).max(), 1e-300)):
         raise SolveError("the mass matrix at the start is not positive definite: some "
@@ -216,7 +216,7 @@ def integrate_inputs(machine: LagrangeMachine, motors: dict[int, MotorCurve], q0
         return np.array([float(motors[i].torque(np.asarray(w[i])))
                          if i in motors and running[i] else 0.0 for i in range(n)])
 
-    offs = sorted({m.off_at for m in motors.values() if m.off_at < settings.duration})
+    offs = sorted({m.off_at for m in motors.values() if 0 < m.off_at < settings.duration})
     stops = [*offs, settings.duration]
     events = [InputsEvent("start", 0.0, q0.copy(), omega0.copy())]
     segments: list[tuple[float, float, Callable[[Array], Array]]] = []
