@@ -407,6 +407,12 @@ FIGURES: list[tuple[str, str, tuple]] = [
     ("six_bar_groups.yaml", r"the (?P<fig>47) deg swing of the bell", ("computed", "bell")),
     ("six_bar_groups.yaml", r"a (?P<fig>155) mm stroke", ("computed", "ram mm")),
     ("hydraulic_rocker.yaml", r"about (?P<fig>81) deg", ("computed", "leg swing")),
+    ("four_bar_break_ahead.yaml", r"θ = (?P<fig>150\.266) deg",
+     ("test", "tests/test_simulate_breaks.py::test_the_example_runs_up_to_the_break")),
+    ("four_bar_break_ahead.yaml", r"positions (?P<fig>31) to 41",
+     ("test", "tests/test_simulate_breaks.py::test_the_example_runs_up_to_the_break")),
+    ("four_bar_break_ahead.yaml", r"positions 31 to (?P<fig>41)",
+     ("test", "tests/test_simulate_breaks.py::test_the_example_runs_up_to_the_break")),
     ("sparse_argument.yaml", r"(?P<fig>0\.1667) 0\.2133", ("computed", "sparse 4")),
     ("sparse_argument.yaml", r"0\.1667 (?P<fig>0\.2133)", ("computed", "sparse 5")),
     ("sparse_argument.yaml", r"0\.26 (?P<fig>0\.24) 0\.22", ("computed", "sparse 7")),
@@ -425,6 +431,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"\d+ positions per design", "the benchmark's setting"),
     (R, r"position, over 16\)", "the error ratio of a fourth-order spline at half the step"),
     (R, r"`rtol` \(default 1e-8\), `atol` \(1e-9,", "simulate:'s default tolerances"),
+    (R, r"to 1e-11 of the mean speed", "a rule of the code (its constant, "
+        "mechloop.dynamics.machine.SETTLE_RTOL)"),
     (R, r"2,000 random designs|relative 1e-9[);]", "the synthesis benchmark's settings"),
     (R, r"evaluates 2,000 designs|`--designs 20000`", "the synthesis benchmark's settings"),
     (R, r"from 65,536 designs × positions", "a rule of the code (its constant, "
@@ -473,6 +481,7 @@ INPUTS: list[tuple[str | None, str, str]] = [
      r"0\.11 MPa from 540 deg", "the assumed indicator diagram behind the gas-force table"),
     ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
+    ("four_bar_break_ahead.yaml", r"390 mm", "coupler + rocker, 140 + 250 mm"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
 ]
 

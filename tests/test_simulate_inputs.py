@@ -190,15 +190,16 @@ def test_a_conservative_five_bar_keeps_its_energy_for_many_seconds():
 def test_the_run_ends_before_the_chain_breaks():
     # links of 0.25 m between cranks of 0.1 m on pivots 0.15 m apart: released at
     # 60/120 deg under gravity, the cranks open until A, B, E line up (|AE| = b + c) and
-    # the chain would break.  The run ends there with a 'break' event, at an assembled
-    # state whose links' sine is 1e-3 (sin² = NEAR_BREAK), from the closed-form geometry
+    # the chain would break.  The run ends there with a 'chain break ahead' event, at an
+    # assembled state whose links' sine is 1e-3 (sin² = NEAR_BREAK), from the
+    # closed-form geometry
     lengths = (0.1, 0.25, 0.25, 0.1, 0.15)
     model = five_bar(spring=False, lengths=lengths, extra={
         "arguments": {1: {"table": {0: 60, 12: 420}}, 2: {"table": {0: 120, 12: 480}}}},
         simulate={"duration": 1.0, "friction": False})
     sim = mechloop.simulate(model)
     end = sim.end
-    assert end.kind == "break" and end.detail == "contour 1"
+    assert end.kind == "chain break ahead" and end.detail == "contour 1"
     assert 0.05 < end.t < 0.2
     a, b, c, d, g = lengths
     pa = a * np.exp(1j * end.q[0])

@@ -308,8 +308,12 @@ def energy(model: ModelPath) -> None:
               f"change of kinetic energy leave {residual:.3g} J"
               + (f" ({abs(residual) / largest:.2g} of the largest work; the trapezoidal "
                  "rule over the positions)" if largest > 0 else "")
-              + (" — positions with a break are left out" if broken.any() else ""))
-    if np.isnan(summary.efficiency):
+              + (" — positions with a break are left out"
+                 if broken is not None and broken.positions.size else ""))
+    if broken is not None:
+        out.print("mechanical loss coefficient and efficiency: not given — the chain "
+                  "breaks in the cycle (see the warning)")
+    elif np.isnan(summary.efficiency):
         out.print("no load does net positive work over the cycle: loss coefficient and "
                   "efficiency are undefined")
     else:
@@ -321,7 +325,12 @@ def energy(model: ModelPath) -> None:
             dynamic.mechanism.drives[0].argument] == "angle"
         unit, speed, mass = ("N*m", "rad/s", "kg*m^2") if angle else ("N", "m/s", "kg")
         out.print(f"machine motion: mean speed {cycle.omega_mean:.6g} {speed}; constant "
-                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}; "
+                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}"
+                  + ("" if cycle.bare_constant_load is None else
+                     f" (with the flywheel; without it {cycle.bare_constant_load:.6g} {unit})")
+                  + ("" if not cycle.iterations else
+                     f" — the loads that depend on the speed taken at the cycle's own speed "
+                     f"({cycle.iterations} iterations)") + "; "
                   f"without a flywheel δ = {cycle.motion.delta:.4g} "
                   f"(speed {cycle.motion.omega_min:.6g} … {cycle.motion.omega_max:.6g} "
                   f"{speed})")
@@ -412,8 +421,12 @@ def _print_simulation(sim) -> None:
               f"within about {accuracy.inertia_error:.2g} kg*m^2, slope within "
               f"{accuracy.slope_error:.2g} kg*m^2/rad of dJ/dq)")
     for event in sim.events[1:]:
-        out.print(f"{event.kind}: t = {event.t:.6g} s, angle {np.degrees(event.q):.6g} deg, "
-                  f"speed {event.omega / RPM:.6g} rpm")
+        out.print(event.describe())
+    for end in sim.machine.breaks:
+        if end is not None:
+            err.print(f"[bold yellow]warning:[/] {end.describe()}: the machine is the "
+                      "stretch of positions between the breaks, not a cycle — no cycle, "
+                      "steady state or δ")
     count = sim.cycle_time.size
     if count:
         _, _, omega = sim.cycle_profile()
@@ -433,21 +446,31 @@ def _print_simulation(sim) -> None:
 
 
 def _warn_cycle_breaks(dynamic: DynamicResults, where: str):
-    """Warn that the cycle's works (and ψ, η) leave out the positions where the chain
-    breaks or the force analysis is singular; the mask of those positions."""
-    import numpy as np
+    """Warn that the cycle's works (and ψ, η, δ, the flywheel) are not the cycle's where
+    the chain breaks or the force analysis is singular at positions, or the chain breaks
+    between two positions (the exact existence check); the
+    :class:`~mechloop.dynamics.cycle_validity.CycleBreaks` or None."""
+    from mechloop.dynamics.cycle_validity import cycle_breaks
+    from mechloop.solve.results import compress_positions
 
-    broken = dynamic.kinematics.broken | dynamic.forces.singular
-    if broken.any():
-        from mechloop.solve.results import compress_positions
-
-        err.print(f"[bold yellow]warning:[/] the chain breaks (or the force analysis is "
-                  f"singular) at {int(broken.sum())} of {broken.size} positions "
-                  f"({compress_positions(np.flatnonzero(broken))}): the works {where} leave "
-                  "out the steps next to them, so they, the loss coefficient and the "
-                  "efficiency are not the cycle's — remove the break (dimensions, variant, "
-                  "argument range) before reading them")
-    return broken
+    found = cycle_breaks(dynamic)
+    if found is None:
+        return None
+    parts = []
+    if found.positions.size:
+        parts.append(f"the chain breaks (or the force analysis is singular) at "
+                     f"{found.positions.size} of {found.count} positions "
+                     f"({compress_positions(found.positions)}): the works {where} leave "
+                     "out the steps next to them")
+    if found.between:
+        parts.append("the chain breaks " + ", ".join(
+            f"between positions {i} and {j}" for i, j in found.between)
+            + " (the existence check over the continuous range; mechloop solve describes "
+            "it): the machine cannot pass there")
+    err.print(f"[bold yellow]warning:[/] {'; '.join(parts)} — so the work over the cycle, "
+              "the loss coefficient and the efficiency are not the cycle's and are not "
+              "given; remove the break (dimensions, variant, argument range) first")
+    return found
 
 
 PLOTS = ("plan", "overlay", "trajectories", "parameters", "combination", "angle",
@@ -671,7 +694,9 @@ def report(
             task = bar.add_task("pages", total=None)
             path = write_report(m, output, lang=lang, output=parameter,
                                 progress=lambda done, total: bar.update(
-                                    task, completed=done, total=total))
+                                    task, completed=done, total=total),
+                                warn=lambda text: err.print(f"[bold yellow]warning:[/] "
+                                                            f"{text}"))
     except ModelError as exc:
         raise locate(exc, model) from None
     out.print(f"wrote {path}")

@@ -13,8 +13,9 @@ between positions: the model's positions only give the default start (position 0
 :func:`scipy.integrate.solve_ivp` integrates the state ``(q, q̇, W_motor, W_loads)`` with
 dense output, in pieces split at each motor's switch-off.  Events end the run:
 
-* ``"break"`` — the chain is about to break: the least existence margin of the contours
-  at the state (``sin²`` of the angle between a contour's Jacobian columns, ...; see
+* ``"chain break ahead"`` (``detail`` names the contour) — the chain is about to break:
+  the least existence margin of the contours at the state (``sin²`` of the angle
+  between a contour's Jacobian columns, ...; see
   :mod:`mechloop.dynamics.state_kinematics`) falls to :data:`NEAR_BREAK` — within about
   1e-3 rad of a dead point or of where the contour stops closing.  Closer in, the
   velocity terms grow like ``1/sin³`` and no step size follows them to the break itself
@@ -59,7 +60,7 @@ NEAR_BREAK = 1e-6
 @dataclass(frozen=True)
 class InputsEvent:
     """Something that happened: ``kind`` one of ``"start"``, ``"motor off"`` (``detail``
-    names the input), ``"break"`` (``detail`` names the contour), ``"angle"``
+    names the input), ``"chain break ahead"`` (``detail`` names the contour), ``"angle"``
     (``detail`` names the input), ``"stopped"``, ``"duration"``; at time ``t`` (s), the
     inputs' angles ``q`` (rad) and speeds ``omega`` (rad/s), shape (n,)."""
 
@@ -237,7 +238,8 @@ def integrate_inputs(machine: LagrangeMachine, motors: dict[int, MotorCurve], q0
         def broken_ahead(time: float, s: Array) -> float:
             return float(cached(time, s[:n], s[n:2 * n]).margin[0]) - settings.near_break
 
-        checks: dict[str, Callable[[float, Array], float]] = {"break": broken_ahead}
+        checks: dict[str, Callable[[float, Array], float]] = {
+            "chain break ahead": broken_ahead}
         broken_ahead.terminal, broken_ahead.direction = True, -1.0  # type: ignore[attr-defined]
         for i, target in settings.stop_at.items():
             checks[f"angle {i}"] = _crossing(i, target, 1.0 if target > q0[i] else -1.0)
@@ -257,9 +259,9 @@ def integrate_inputs(machine: LagrangeMachine, motors: dict[int, MotorCurve], q0
                       enumerate(zip(checks, sol.t_events, strict=True)) if te.size)
         if hits:
             kind = hits[0][2]
-            if kind == "break":
+            if kind == "chain break ahead":
                 contour = int(cached(t, y[:n], y[n:2 * n]).contour[0])
-                events.append(InputsEvent("break", t, y[:n], y[n:2 * n],
+                events.append(InputsEvent(kind, t, y[:n], y[n:2 * n],
                                           f"contour {contour}"))
             elif kind.startswith("angle"):
                 i = int(kind.split()[1])
