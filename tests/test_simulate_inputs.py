@@ -226,13 +226,14 @@ def test_stop_at_an_angle_and_rest():
     dampers = [{"bodies": [0, 1], "coefficient": 2.0}, {"bodies": [0, 4], "coefficient": 2.0}]
     model = five_bar(extra={"dampers": dampers},
                      simulate={"duration": 10.0, "friction": False, "rest_rpm": 5.0,
-                               "rtol": 1e-7})
+                               "rtol": 1e-6, "atol": 1e-8})
     sim = mechloop.simulate(model)
     assert sim.end.kind == "stopped" and sim.end.t < 10.0
     assert np.abs(sim.end.omega).max() == pytest.approx(5.0 * RPM, rel=1e-6)
     assert np.all(np.abs(sim.omega[:, :-1]).max(axis=0)[sim.time[:-1] > 0.1] > 5.0 * RPM)
     # the dampers' work took the energy: T - T0 = W_loads (no motor)
-    assert sim.load_work[-1] == pytest.approx(sim.kinetic_energy[-1], abs=1e-6)
+    assert sim.load_work[-1] == pytest.approx(sim.kinetic_energy[-1],
+                                              abs=1e-4 * np.abs(sim.load_work).max())
 
 
 # ------------------------------------------------------------------ settings and errors
@@ -312,7 +313,8 @@ def test_the_view_and_the_table():
 def test_cli_runs_the_example(tmp_path: Path):
     table, figure = tmp_path / "run.csv", tmp_path / "run.png"
     result = CliRunner().invoke(app, ["simulate", str(EXAMPLES / "two_input_five_bar.yaml"),
-                                      "-o", str(table), "--plot", str(figure)])
+                                      "-o", str(table), "--plot", str(figure),
+                                      "--duration", "0.8"])  # past the motor's switch-off
     assert result.exit_code == 0, result.output
     assert "2 inputs" in result.output and "motor off (input 2)" in result.output
     import pandas as pd
