@@ -453,6 +453,10 @@ INPUTS: list[tuple[str | None, str, str]] = [
         "--positions 100000 (position, time, argument 1, 9 per four-bar, chain_break)"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
+    (R, r"Jacobian columns\) falls to 1e-6", "a rule of the code (its constant, "
+        "mechloop.dynamics.simulate_inputs.NEAR_BREAK)"),
+    (R, r"a spring\) over 2 s", "the run's duration in tests/test_simulate_inputs.py::"
+        "test_a_conservative_five_bar_keeps_its_energy_for_many_seconds"),
     (R, r"2\.5243549e-29|1\.9239227e-06|1\.2162122e\+00|best design\s+\(1\.2162122\)",
      "the source's recorded best (Records_HCDJ_Case*.txt, quoted in benchmarks/README.md)"),
     (R, r"<= (1e-10|7\.5e-07|1\.21621)\)", "the success bars: issue 11's acceptance "

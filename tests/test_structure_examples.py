@@ -31,6 +31,10 @@ HAND = {
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "compressor_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "spring_release.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    # five-bar: cranks 1 and 4 each pinned to the frame (two input groups), links 2 and 3
+    # pinned to the cranks and to each other: n = 4, p5 = 5, W = 12 − 10 = 2 (two
+    # inputs); links 2 + 3 are an RRR dyad (L1).
+    "two_input_five_bar.yaml": (4, 5, 0, 2, "L0(1) → L0(4) → L1(2,3)", 2),
     # shaper: crank 1 (R to the frame), block 2 (R on the crank pin, P along the lever),
     # lever 3 (R to the frame), rod 4 (R to the lever and to the ram), ram 5 (P on the
     # guide): n = 5, p5 = 7, W = 15 − 14 = 1.  Block + lever with pins at both ends and the
@@ -93,7 +97,7 @@ def test_every_example_is_in_one_list():
 def test_structure_matches_the_hand_analysis(name: str):
     mob, dec = analyze(mechloop.load_model(EXAMPLES / name))
     n, p5, p4, w, formula, klass = HAND[name]
-    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (n, p5, p4, w, 1)
+    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (n, p5, p4, w, w)  # W inputs
     assert mob.W == 3 * mob.n - 2 * mob.p5 - mob.p4
     assert dec.formula == formula
     assert dec.mechanism_class == klass

@@ -359,7 +359,8 @@ def simulate(
 ) -> None:
     """Simulate the machine's motion in time (start-up, run-down, the approach to the
     steady cycle) from the model's simulate: section: a motor on the input, the start
-    state, the loads over the positions.
+    state, the loads over the positions.  A model with several inputs moves by
+    Lagrange's equations (motors, start and stop_at per input).
 
     Prints how the run ended, the cycles, the time to steady state and the energy balance.
     Example:
@@ -406,6 +407,12 @@ def _print_simulation(sim) -> None:
     import numpy as np
 
     from mechloop.dynamics.motors import RPM
+    from mechloop.dynamics.simulate_inputs import InputsSimulation, summary_lines
+
+    if isinstance(sim, InputsSimulation):  # several inputs: Lagrange's equations
+        for line in summary_lines(sim):
+            out.print(line)
+        return
 
     machine = sim.machine
     accuracy = machine.interpolation
