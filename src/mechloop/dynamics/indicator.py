@@ -11,12 +11,15 @@ as they take a table.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Placement
-from mechloop.engines.cycle import EngineCycle
+from mechloop.engines.cycle import CompressorCycle, EngineCycle
+from mechloop.engines.diagram import loop_work
 from mechloop.engines.gas_force import GasForce, gas_force
 from mechloop.errors import HintedError, ModelError, Problem
 from mechloop.model.indicator import IndicatorValue, compile_cycle, si
@@ -113,3 +116,58 @@ def check_direction(value: IndicatorValue, direction: Complex, point, placement:
                                 "positive value must push the piston away from it)",
                                 "turn the force by 180 deg (angle:), or set head: to the "
                                 "other end (max/min of the piston's parameter)"))
+
+
+@dataclass(frozen=True)
+class Indicator:
+    """One indicator load of a solved model, over its positions.
+
+    Attributes
+    ----------
+    name : the force's name; index : its place in ``forces``.
+    cycle : the engine's or compressor's cycle (SI).
+    angle : array (P,), rad — the crank's angle at the positions.
+    gas : :class:`~mechloop.engines.gas_force.GasForce` with arrays (P,) and floats.
+    loop_work : float, J — ``∮p dV`` of the diagram, closed form.
+    sampled_work : float, J — ``∮p dV`` over the positions by the trapezoidal rule in V
+        (the positions' reading of the same area).
+    """
+
+    name: str
+    index: int
+    cycle: EngineCycle | CompressorCycle
+    angle: Array
+    gas: GasForce
+    loop_work: float
+    sampled_work: float
+
+
+def model_indicators(model: Model) -> list[Indicator]:
+    """Every force of ``model`` whose value is an indicator diagram, evaluated over the
+    model's positions (SI).  Raises :class:`~mechloop.errors.ModelError` (located) when
+    the model has none or one cannot be evaluated."""
+    from mechloop.dynamics.analysis import compile_mechanism
+
+    found = [(i, f) for i, f in enumerate(model.forces) if isinstance(f.value, IndicatorValue)]
+    if not found:
+        raise ModelError([Problem(("forces",), "the model has no indicator load",
+                                  "give a force a value {piston: rK, bore: ..., "
+                                  "crankcase: ..., engine: {...}} (examples/"
+                                  "engine_indicator.yaml)")])
+    _, placement, mechanism = compile_mechanism(model)
+    out = []
+    for i, force in found:
+        path = ("forces", i, "value")
+        gas = indicator_gas(model, force.value, mechanism, placement, path=path)
+        flat = GasForce(*(np.asarray(v)[0] if np.ndim(v) else v for v in (
+            gas.volume, gas.pressure, gas.force, gas.stroke, gas.swept, gas.clearance,
+            gas.top, gas.bottom)), gas.area)
+        k, _ = _crank(model, mechanism, force.value, path)
+        p, v = flat.pressure, flat.volume
+        ok = np.isfinite(p) & np.isfinite(v)
+        sampled = float(np.sum(0.5 * (p[ok][1:] + p[ok][:-1]) * np.diff(v[ok])))
+        out.append(Indicator(force.name or f"F{i + 1}", i, compile_cycle(force.value, path),
+                             np.asarray(placement.results.arguments[k], dtype=float), flat,
+                             loop_work(compile_cycle(force.value, path), float(flat.swept)),
+                             sampled))
+    return out
