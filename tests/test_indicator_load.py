@@ -155,3 +155,22 @@ def test_problems_are_located():
         _engine(grid, value={"piston": "r3", "bore": BORE, "crankcase": 0.1,
                              "engine": dict(MIXED, pre_expansion=20)})
     assert info.value.problems[0].path == ("forces", 0, "value", "engine")
+
+
+def test_the_indicator_examples_figures():
+    # the figures README.md "Engine and compressor indicator diagrams" quotes
+    from mechloop.dynamics.indicator import model_indicators
+
+    (engine,) = model_indicators(mechloop.load_model(EXAMPLES / "engine_indicator.yaml"))
+    assert round(engine.loop_work, 1) == 332.5
+    assert round(engine.sampled_work, 1) == 331.3
+    (compressor,) = model_indicators(
+        mechloop.load_model(EXAMPLES / "compressor_indicator.yaml"))
+    assert round(-compressor.loop_work, 1) == 147.5
+    from mechloop.engines import volumetric_efficiency
+
+    assert round(volumetric_efficiency(compressor.cycle), 3) == 0.840
+    # the closed form is the quadrature of the diagram (tests/test_engines.py) and the
+    # positions' reading is within the grid's accuracy of it
+    assert abs(engine.sampled_work / engine.loop_work - 1) < 5e-3
+    assert abs(compressor.sampled_work / compressor.loop_work - 1) < 5e-3
