@@ -238,3 +238,20 @@ def test_the_command_prints_writes_and_draws(tmp_path: Path):
     assert figure.stat().st_size > 10_000
     bad = CliRunner().invoke(app, ["indicator", str(EXAMPLES / "four_bar.yaml")])
     assert bad.exit_code == 2 and "no indicator load" in bad.output
+
+
+def test_a_design_whose_chain_breaks_does_not_stop_the_population():
+    # a crank of 0.3 m against the 0.14 m rod breaks at most positions: its gas force is
+    # zero where it breaks, the other designs' are their own, and nothing warns
+    from mechloop.dynamics.population import solve_population
+
+    model = _engine(np.linspace(0, 720, 145), time={"rpm": 3000, "turns": 2})
+    ref = mechloop.solve_dynamics(model)
+    batch = solve_population(model, {"r1": np.array([0.04, 0.3])}, ref.kinematics,
+                             ref.mechanism)
+    gas = next(f for f in batch.loads.forces if f.name == "gas").force.reshape(2, -1)
+    broken = batch.kinematics.broken.reshape(2, -1)
+    assert broken[1].any() and not broken[0].any()
+    assert np.all(gas[1][broken[1]] == 0) and np.all(np.isfinite(gas))
+    single = next(f for f in ref.loads.forces if f.name == "gas").force
+    np.testing.assert_allclose(gas[0], single, rtol=1e-12, atol=1e-9)

@@ -109,7 +109,7 @@ def check_direction(value: IndicatorValue, direction: Complex, point, placement:
     with np.errstate(invalid="ignore"):
         away = -head * res.rate(value.piston)
         power = (np.conj(direction) * point.v).real
-        fast = np.abs(away) > 0.1 * np.nanmax(np.abs(away), initial=0.0)
+        fast = np.abs(away) > 0.1 * np.fmax.reduce(np.abs(away), initial=0.0)
     fast &= ~res.broken & np.isfinite(power)
     if fast.any() and np.mean(np.sign(power[fast]) == np.sign(away[fast])) < 0.5:
         problems.append(Problem(path, "the gas force points towards the cylinder head (a "

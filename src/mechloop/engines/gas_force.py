@@ -59,8 +59,10 @@ def _hermite_extremes(phi: Array, x: Array, dx: Array) -> tuple[Array, Array]:
         value = ((2 * t**3 - 3 * t**2 + 1) * p0 + (t**3 - 2 * t**2 + t) * m0
                  + (-2 * t**3 + 3 * t**2) * p1 + (t**3 - t**2) * m1)
         candidates.append(value)
-    top = np.max([np.nanmax(v, axis=-1) for v in candidates], axis=0)
-    bottom = np.min([np.nanmin(v, axis=-1) for v in candidates], axis=0)
+    # fmax/fmin leave NaN (positions where the chain breaks) out without a warning; a
+    # row of NaN only gives NaN
+    top = np.fmax.reduce([np.fmax.reduce(v, axis=-1) for v in candidates], axis=0)
+    bottom = np.fmin.reduce([np.fmin.reduce(v, axis=-1) for v in candidates], axis=0)
     return top, bottom
 
 
@@ -91,11 +93,12 @@ def stroke_of(cycle: EngineCycle | CompressorCycle, phi: ArrayLike, x: ArrayLike
     top, bottom = np.asarray(top, dtype=float)[..., None], np.asarray(bottom, dtype=float)[
         ..., None]
     head_x = top if head > 0 else bottom
-    tol = 1e-9 * np.nanmax(np.abs(dx), axis=-1, keepdims=True)
+    tol = 1e-9 * np.fmax.reduce(np.abs(dx), axis=-1, keepdims=True)
     moving = head * dx
     at_head = np.abs(x - head_x) < 0.5 * (top - bottom)
     # away from the head (True) or towards it; at a dead centre: the stroke that starts
-    away = np.where(np.abs(dx) <= tol, at_head, moving < 0)
+    with np.errstate(invalid="ignore"):  # NaN where the chain breaks: any stroke
+        away = np.where(np.abs(dx) <= tol, at_head, moving < 0)
     if isinstance(cycle, CompressorCycle) or cycle.strokes == 2:
         return np.where(away, 0, 1).astype(np.int64)
     psi = np.mod(phi - firing, 2 * TWO_PI)
@@ -155,7 +158,7 @@ def gas_force(cycle: EngineCycle | CompressorCycle, phi: ArrayLike, x: ArrayLike
     top, bottom = piston_extremes(phi, x, dx)
     area = np.pi * bore * bore / 4.0
     swept = area * (top - bottom)
-    if not np.all(swept > 0):
+    if np.any(swept <= 0):  # NaN: a design whose chain breaks everywhere
         raise HintedError("the piston does not move: its stroke is zero",
                           "name the parameter that places the piston (piston: rK)")
     head_x = top if head > 0 else bottom
