@@ -255,3 +255,43 @@ def test_a_design_whose_chain_breaks_does_not_stop_the_population():
     assert np.all(gas[1][broken[1]] == 0) and np.all(np.isfinite(gas))
     single = next(f for f in ref.loads.forces if f.name == "gas").force
     np.testing.assert_allclose(gas[0], single, rtol=1e-12, atol=1e-9)
+
+
+@pytest.mark.parametrize("offset", [0.0, 0.012])
+def test_a_two_stroke_port_given_by_its_timing(offset):
+    # exhaust_opens: 110 deg after top dead centre; the port is where the piston is then
+    # (closed-form slider, offset or not: its own top dead centre), and it closes there
+    # again on the way up; the model's cycle is the one with that port share
+    from scipy.optimize import brentq
+
+    from mechloop.dynamics.indicator import model_indicators
+
+    def x(p):
+        lateral = offset - R * np.sin(p)
+        return R * np.cos(p) + np.sqrt(ROD**2 - lateral**2)
+
+    def dx(p):
+        lateral = offset - R * np.sin(p)
+        return -R * np.sin(p) + lateral * R * np.cos(p) / np.sqrt(ROD**2 - lateral**2)
+
+    tdc, bdc = brentq(dx, -1, 1), brentq(dx, 2, 4)
+    share = (x(tdc + np.radians(110)) - x(bdc)) / (x(tdc) - x(bdc))
+    engine = {"strokes": 2, "compression_ratio": 8, "pressure_ratio": 3,
+              "pre_expansion": 1, "compression_exponent": 1.33, "expansion_exponent": 1.25,
+              "scavenge": 0.12, "exhaust_opens": 110}
+    model = _engine(np.linspace(0, 360, 721), time={"rpm": 3000},
+                    value={"piston": "r3", "bore": BORE, "crankcase": 0.1, "engine": engine})
+    if offset:
+        data = model.model_dump(mode="json", exclude_defaults=True)
+        data["vectors"]["4"] = {"r": offset, "a": 270}  # the cylinder's axis at y = offset
+        data["contours"][0]["vectors"] = [1, 2, 3, 4]
+        model = mechloop.Model.from_dict(data)
+    (item,) = model_indicators(model)
+    # (read between the 0.5-deg positions by the cubic Hermite interpolant: error ~h^4)
+    assert item.cycle.exhaust_port == pytest.approx(share, rel=1e-7)
+    # the pressure drops to the scavenging pressure where the piston passes the port
+    v_port = item.gas.clearance + item.gas.swept * (1 - share)
+    port = item.gas.volume >= v_port
+    assert np.all(item.gas.pressure[port] == pytest.approx(0.12e6))
+    assert np.all(item.gas.pressure[~port] > 0.12e6)
+

@@ -20,7 +20,7 @@ from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Placement
 from mechloop.engines.cycle import CompressorCycle, EngineCycle
 from mechloop.engines.diagram import loop_work
-from mechloop.engines.gas_force import GasForce, gas_force
+from mechloop.engines.gas_force import GasForce, gas_force, port_share
 from mechloop.errors import HintedError, ModelError, Problem
 from mechloop.model.indicator import IndicatorValue, compile_cycle, si
 from mechloop.model.schema import Model
@@ -51,10 +51,12 @@ def _crank(model: Model, mechanism: Mechanism, value: IndicatorValue, path: tupl
 
 
 def indicator_gas(model: Model, value: IndicatorValue, mechanism: Mechanism,
-                  state: Placement, *, designs: int = 1, path: tuple = ()) -> GasForce:
-    """The gas force (:class:`~mechloop.engines.gas_force.GasForce`, arrays ``(D, P)``)
-    at the state's positions.  Raises :class:`~mechloop.errors.ModelError` located at
-    ``path`` and below."""
+                  state: Placement, *, designs: int = 1, path: tuple = ()
+                  ) -> tuple[list[EngineCycle | CompressorCycle], GasForce]:
+    """The cycle of each design (one for all, or a two-stroke's with its port from its
+    own kinematics) and the gas force (:class:`~mechloop.engines.gas_force.GasForce`,
+    arrays ``(D, P)``) at the state's positions.  Raises
+    :class:`~mechloop.errors.ModelError` located at ``path`` and below."""
     res = state.results
     cycle = compile_cycle(value, path)
     bore = si(value.bore, "length", model.units.length, (*path, "bore"))
@@ -77,11 +79,34 @@ def indicator_gas(model: Model, value: IndicatorValue, mechanism: Mechanism,
         dx = (res.rate(value.piston) / res.rate(f"a{crank}")).reshape(shape)
     broken = res.broken.reshape(shape)
     x, dx = np.where(broken, np.nan, x), np.where(broken, np.nan, dx)
+    head = 1 if value.head == "max" else -1
     try:
-        return gas_force(cycle, phi, x, dx, bore=bore, crankcase=crankcase,
-                         head=1 if value.head == "max" else -1, firing=firing)
+        if isinstance(cycle, EngineCycle) and value.engine.exhaust_opens is not None:
+            return _ported(model, value, phi, x, dx, bore, crankcase, head, path)
+        return [cycle], gas_force(cycle, phi, x, dx, bore=bore, crankcase=crankcase,
+                                  head=head, firing=firing)
     except HintedError as exc:
         raise _located(path, exc.message, exc.hint) from None
+
+
+def _ported(model: Model, value: IndicatorValue, phi, x, dx, bore: float,
+            crankcase: float, head: int, path: tuple
+            ) -> tuple[list[EngineCycle | CompressorCycle], GasForce]:
+    """The gas force of a two-stroke whose port is given by its timing: the port's share
+    of the stroke from each design's kinematics, the cycle per share (one for a single
+    design: designs whose shares differ are computed one by one)."""
+    opens = si(value.engine.exhaust_opens, "angle", model.units.angle,
+               (*path, "engine", "exhaust_opens"))
+    shares = port_share(phi, x, dx, opens, head=head)
+    parts, cycles = [], []
+    for row in range(phi.shape[0]):
+        cycle = compile_cycle(value, path, port=float(shares[row]))
+        cycles.append(cycle)
+        parts.append(gas_force(cycle, phi[row:row + 1], x[row:row + 1], dx[row:row + 1],
+                               bore=bore, crankcase=crankcase, head=head))
+    return cycles, GasForce(*(np.concatenate([getattr(p, f) for p in parts]) for f in (
+        "volume", "pressure", "force", "stroke", "swept", "clearance", "top", "bottom")),
+        parts[0].area)
 
 
 def indicator_force(model: Model, value: IndicatorValue, mechanism: Mechanism,
@@ -90,7 +115,7 @@ def indicator_force(model: Model, value: IndicatorValue, mechanism: Mechanism,
     """The force's magnitude (N) at every position ``(D·P,)``, positive away from the
     head; None (with a problem) when it cannot be computed."""
     try:
-        gas = indicator_gas(model, value, mechanism, state, designs=designs, path=path)
+        _, gas = indicator_gas(model, value, mechanism, state, designs=designs, path=path)
     except ModelError as exc:
         problems.extend(exc.problems)
         return None
@@ -158,7 +183,7 @@ def model_indicators(model: Model) -> list[Indicator]:
     out = []
     for i, force in found:
         path = ("forces", i, "value")
-        gas = indicator_gas(model, force.value, mechanism, placement, path=path)
+        (cycle,), gas = indicator_gas(model, force.value, mechanism, placement, path=path)
         flat = GasForce(*(np.asarray(v)[0] if np.ndim(v) else v for v in (
             gas.volume, gas.pressure, gas.force, gas.stroke, gas.swept, gas.clearance,
             gas.top, gas.bottom)), gas.area)
@@ -166,8 +191,7 @@ def model_indicators(model: Model) -> list[Indicator]:
         p, v = flat.pressure, flat.volume
         ok = np.isfinite(p) & np.isfinite(v)
         sampled = float(np.sum(0.5 * (p[ok][1:] + p[ok][:-1]) * np.diff(v[ok])))
-        out.append(Indicator(force.name or f"F{i + 1}", i, compile_cycle(force.value, path),
+        out.append(Indicator(force.name or f"F{i + 1}", i, cycle,
                              np.asarray(placement.results.arguments[k], dtype=float), flat,
-                             loop_work(compile_cycle(force.value, path), float(flat.swept)),
-                             sampled))
+                             loop_work(cycle, float(flat.swept)), sampled))
     return out

@@ -66,6 +66,58 @@ def _hermite_extremes(phi: Array, x: Array, dx: Array) -> tuple[Array, Array]:
     return top, bottom
 
 
+def _hermite_pieces(phi: Array, x: Array, dx: Array):
+    """``(h, p0, p1, m0, m1)`` of the cubic Hermite pieces between the positions."""
+    h = np.diff(phi, axis=-1)
+    return h, x[..., :-1], x[..., 1:], dx[..., :-1] * h, dx[..., 1:] * h
+
+
+def _hermite_at(t: Array, p0, p1, m0, m1) -> Array:
+    return ((2 * t**3 - 3 * t**2 + 1) * p0 + (t**3 - 2 * t**2 + t) * m0
+            + (-2 * t**3 + 3 * t**2) * p1 + (t**3 - t**2) * m1)
+
+
+def port_share(phi: ArrayLike, x: ArrayLike, dx: ArrayLike, opens: float, *,
+               head: int = 1) -> Array:
+    """The share of the stroke above bottom dead centre that a two-stroke's exhaust port
+    takes, shape (...,), when it opens ``opens`` (rad, 0 < opens < π) after top dead
+    centre: the piston's position there, read from the cubic Hermite interpolant of
+    ``x`` and ``dx/dφ`` (top dead centre located on it, the angle taken a turn back when
+    it falls beyond the last position)."""
+    if not 0 < opens < np.pi:
+        raise HintedError(f"the exhaust port opens {np.degrees(opens):.6g} deg after top "
+                          "dead centre", "give an angle between 0 and 180 deg (typical: "
+                          "100 to 120)")
+    phi, x, dx = (np.asarray(v, dtype=float) for v in (phi, x, dx))
+    top, bottom = piston_extremes(phi, x, dx)
+    h, p0, p1, m0, m1 = _hermite_pieces(phi, x, dx)
+    # the head's extreme: the best of the pieces' ends and inner stationary points
+    a = 6 * p0 + 3 * m0 - 6 * p1 + 3 * m1
+    b = -6 * p0 - 4 * m0 + 6 * p1 - 2 * m1
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        disc = np.sqrt(np.maximum(b * b - 4 * a * m0, 0.0))
+        q = -0.5 * (b + np.where(b >= 0, disc, -disc))
+        ts = [np.zeros_like(h), np.ones_like(h), q / a, m0 / q]
+    ts = [np.clip(np.nan_to_num(t, nan=0.0, posinf=0.0, neginf=0.0), 0.0, 1.0) for t in ts]
+    lead = h.shape[:-1]
+    values = np.stack([head * _hermite_at(t, p0, p1, m0, m1) for t in ts], axis=-1)
+    values = np.nan_to_num(values, nan=-np.inf).reshape(*lead, -1)  # (..., (P-1)·4)
+    best = np.argmax(values, axis=-1)[..., None]
+    t_top = np.take_along_axis(np.stack(ts, axis=-1).reshape(*lead, -1), best, axis=-1)
+    piece = best // len(ts)
+    phi_top = (np.take_along_axis(phi[..., :-1], piece, axis=-1)
+               + t_top * np.take_along_axis(h, piece, axis=-1))[..., 0]
+    target = phi_top + opens
+    end = phi[..., -1]
+    target = np.where(target > end, target - TWO_PI, target)
+    k = np.clip(np.sum(phi <= target[..., None], axis=-1) - 1, 0, h.shape[-1] - 1)[..., None]
+    hk = np.take_along_axis(h, k, axis=-1)[..., 0]
+    t = (target - np.take_along_axis(phi, k, axis=-1)[..., 0]) / hk
+    x_port = _hermite_at(t, *(np.take_along_axis(v, k, axis=-1)[..., 0]
+                              for v in (p0, p1, m0, m1)))
+    return (x_port - bottom) / (top - bottom) if head > 0 else (top - x_port) / (top - bottom)
+
+
 def piston_extremes(phi: ArrayLike, x: ArrayLike, dx: ArrayLike) -> tuple[Array, Array]:
     """The largest and the smallest value of the piston's parameter over the positions
     (m), shape (...,): at the samples or between them (cubic Hermite interpolant of ``x``

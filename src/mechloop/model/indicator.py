@@ -61,12 +61,19 @@ class EngineParameters(_Frozen):
     exhaust_port: Number | None = Field(None, ge=0, lt=1, description="two-stroke: the "
                                         "share of the stroke above bottom dead centre "
                                         "that the exhaust port takes")
+    exhaust_opens: Scalar | None = Field(None, description="two-stroke, instead of "
+                                         "exhaust_port: the crank's angle after top dead "
+                                         "centre at which the piston uncovers the exhaust "
+                                         "port (angle units; it covers it again at the "
+                                         "same piston position)")
 
     @model_validator(mode="after")
     def _stroke_keys(self) -> EngineParameters:
+        port = "exhaust_opens" if self.exhaust_opens is not None else "exhaust_port"
         own = ({"firing", "intake", "exhaust"} if self.strokes == 4
-               else {"scavenge", "exhaust_port"})
-        other = {"firing", "intake", "exhaust", "scavenge", "exhaust_port"} - own
+               else {"scavenge", port})
+        other = {"firing", "intake", "exhaust", "scavenge", "exhaust_port",
+                 "exhaust_opens"} - own
         missing = sorted(k for k in own if getattr(self, k) is None)
         extra = sorted(k for k in other if getattr(self, k) is not None)
         if missing or extra:
@@ -121,10 +128,13 @@ def si(value: float | str, kind: Kind, unit: str, path: tuple) -> float:
         raise ModelError([Problem(path, exc.message, exc.hint)]) from None
 
 
-def compile_cycle(value: IndicatorValue, path: tuple = ()) -> EngineCycle | CompressorCycle:
+def compile_cycle(value: IndicatorValue, path: tuple = (), *, port: float | None = None
+                  ) -> EngineCycle | CompressorCycle:
     """The cycle of ``value`` in SI (:mod:`mechloop.engines.cycle`); raises
     :class:`~mechloop.errors.ModelError` located below ``path`` (the value's place in the
-    model)."""
+    model).  ``port``: a two-stroke's exhaust port share found from ``exhaust_opens``
+    and the kinematics (without it such a cycle is checked with the port at bottom dead
+    centre)."""
     unit = value.unit
     if value.compressor is not None:
         c = value.compressor
@@ -142,7 +152,8 @@ def compile_cycle(value: IndicatorValue, path: tuple = ()) -> EngineCycle | Comp
         exhaust = si(e.exhaust, "pressure", unit, (*where, "exhaust")) if four else None
         args = (e.strokes, e.compression_ratio, e.pressure_ratio, e.pre_expansion,
                 e.compression_exponent, e.expansion_exponent, intake, exhaust,
-                0.0 if four else float(e.exhaust_port))
+                0.0 if four else float(e.exhaust_port if e.exhaust_port is not None
+                                       else port or 0.0))
         make = EngineCycle
     try:
         return make(*args)
@@ -157,9 +168,10 @@ def indicator_problems(value: IndicatorValue, units, path: tuple) -> list[Proble
     checks = [lambda: compile_cycle(value, path),
               lambda: si(value.bore, "length", units.length, (*path, "bore")),
               lambda: si(value.crankcase, "pressure", value.unit, (*path, "crankcase"))]
-    if value.engine is not None and value.engine.firing is not None:
-        checks.append(lambda: si(value.engine.firing, "angle", units.angle,
-                                 (*path, "engine", "firing")))
+    for key in ("firing", "exhaust_opens"):
+        if value.engine is not None and getattr(value.engine, key) is not None:
+            checks.append(lambda key=key: si(getattr(value.engine, key), "angle",
+                                             units.angle, (*path, "engine", key)))
     for check in checks:
         try:
             check()
