@@ -170,3 +170,11 @@ def test_the_strokes_of_a_four_stroke_follow_the_firing_angle():
         again = gas_force(cycle, phi, x, dx, bore=0.08, crankcase=1e5,
                           firing=np.radians(firing))
         assert np.array_equal(again.stroke, expected)
+
+
+def test_the_doctests():
+    import doctest
+
+    from mechloop.engines import diagram
+
+    assert doctest.testmod(diagram, raise_on_error=True).attempted > 0

@@ -12,14 +12,22 @@ solved position (:mod:`.gas_force`).  Pure functions over NumPy arrays, SI throu
 from mechloop.engines.cycle import CompressorCycle, EngineCycle
 from mechloop.engines.diagram import (
     clearance_volume,
+    curve,
     loop_work,
     mean_pressure,
+    points,
     pressure,
     stroke_names,
     volumetric_efficiency,
 )
-from mechloop.engines.gas_force import GasForce, gas_force, piston_extremes, stroke_of
+from mechloop.engines.gas_force import (
+    GasForce,
+    gas_force,
+    piston_extremes,
+    port_share,
+    stroke_of,
+)
 
-__all__ = ["CompressorCycle", "EngineCycle", "GasForce", "clearance_volume", "gas_force",
-           "loop_work", "mean_pressure", "piston_extremes", "pressure", "stroke_names",
-           "stroke_of", "volumetric_efficiency"]
+__all__ = ["CompressorCycle", "EngineCycle", "GasForce", "clearance_volume", "curve",
+           "gas_force", "loop_work", "mean_pressure", "piston_extremes", "points",
+           "port_share", "pressure", "stroke_names", "stroke_of", "volumetric_efficiency"]

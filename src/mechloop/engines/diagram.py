@@ -97,7 +97,18 @@ def pressure(cycle: Cycle, volume: ArrayLike, stroke: ArrayLike, swept: float) -
 def loop_work(cycle: Cycle, swept: float) -> float:
     """``∮ p dV`` over the cycle (J), closed form: the sum of the works of its polytropes,
     isobars and isochores.  Positive for an engine (the indicated work), negative for a
-    compressor (minus the work it takes)."""
+    compressor (minus the work it takes).
+
+    The ideal Otto cycle (one exponent, no pumping loop) against its textbook form
+    ``p_a·V_a/(n − 1)·(λ − 1)·(ε^(n−1) − 1)``:
+
+    >>> from mechloop.engines import EngineCycle
+    >>> otto = EngineCycle(4, 9.0, 3.0, 1.0, 1.3, 1.3, 1e5, 1e5)
+    >>> swept = 4e-4
+    >>> textbook = 1e5 * swept * 9 / 8 / 0.3 * 2 * (9**0.3 - 1)
+    >>> abs(loop_work(otto, swept) / textbook - 1) < 1e-12
+    True
+    """
     p = points(cycle, swept)
     if isinstance(cycle, CompressorCycle):
         (v1, ps), (v2, pd), (v3, _), (v4, _) = p["1"], p["2"], p["3"], p["4"]
@@ -119,7 +130,12 @@ def mean_pressure(cycle: Cycle) -> float:
 
 
 def volumetric_efficiency(cycle: CompressorCycle) -> float:
-    """``λ_V = 1 − c·(π^(1/n_e) − 1)``: the share of the stroke that draws in gas."""
+    """``λ_V = 1 − c·(π^(1/n_e) − 1)``: the share of the stroke that draws in gas.
+
+    >>> from mechloop.engines import CompressorCycle
+    >>> round(volumetric_efficiency(CompressorCycle(1e5, 6e5, 0.05, 1.3, 1.25)), 4)
+    0.8404
+    """
     return 1.0 - cycle.clearance * (cycle.pressure_ratio ** (1.0 / cycle.expansion_exponent)
                                     - 1.0)
 
