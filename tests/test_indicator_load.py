@@ -141,8 +141,14 @@ def test_problems_are_located():
                                                      "crankcase": 0.1, "engine": MIXED}))
     assert info.value.problems[0].path == ("forces", 0, "value", "piston")
     with pytest.raises(ModelError) as info:  # half a turn: the stroke is not known
-        mechloop.solve_dynamics(_engine(np.linspace(0, 180, 19)))
+        mechloop.solve_dynamics(_engine(np.linspace(0, 180, 19), value={
+            "piston": "r3", "bore": BORE, "crankcase": 0.1, "engine": dict(
+                MIXED, strokes=2, firing=None, intake=None, exhaust=None, scavenge=0.1,
+                exhaust_port=0.2)}))
     assert "whole stroke" in str(info.value)
+    with pytest.raises(ModelError) as info:  # a four-stroke over one turn only
+        mechloop.solve_dynamics(_engine(np.linspace(0, 360, 37)))
+    assert "two turns" in str(info.value)
     with pytest.raises(ModelError) as info:  # checked on loading: a pressure's unit
         _engine(grid, value={"piston": "r3", "bore": BORE, "crankcase": "1 kg",
                              "engine": MIXED})

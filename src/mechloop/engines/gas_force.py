@@ -207,6 +207,13 @@ def gas_force(cycle: EngineCycle | CompressorCycle, phi: ArrayLike, x: ArrayLike
         raise HintedError(f"the bore must be positive, got {bore!r}", "give the cylinder's "
                           "diameter")
     phi, x, dx = (np.asarray(v, dtype=float) for v in (phi, x, dx))
+    if isinstance(cycle, EngineCycle) and cycle.strokes == 4:
+        span = np.max(phi, axis=-1) - np.min(phi, axis=-1)
+        if np.any(span < 2 * TWO_PI * (1 - 1e-9)):
+            raise HintedError("a four-stroke cycle takes two turns of the crank, but its "
+                              f"angle spans {np.degrees(np.min(span)):.6g} deg over the "
+                              "positions", "let the crank's argument cover 720 deg (and "
+                              "time: {rpm: ..., turns: 2})")
     top, bottom = piston_extremes(phi, x, dx)
     area = np.pi * bore * bore / 4.0
     swept = area * (top - bottom)
