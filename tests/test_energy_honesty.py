@@ -7,6 +7,7 @@ import re
 from pathlib import Path
 
 import numpy as np
+import pytest
 import yaml
 from typer.testing import CliRunner
 
@@ -44,6 +45,8 @@ def test_a_chain_that_breaks_is_told_and_its_positions_named(tmp_path: Path):
 def test_a_whole_cycle_prints_no_warning_and_a_balance_at_rounding():
     # the compressor with friction: driving = resisting + friction + change of kinetic
     # energy, work by work as the table prints them
+    assert mechloop.solve_dynamics(mechloop.load_model(
+        EXAMPLES / "crank_slider_friction.yaml")).cycle_breaks is None
     result = _energy(EXAMPLES / "crank_slider_friction.yaml")
     assert result.exit_code == 0, result.output
     assert "warning" not in result.output
@@ -58,3 +61,127 @@ def test_a_whole_cycle_prints_no_warning_and_a_balance_at_rounding():
     # the rows hold the drive, the gas force, gravity and friction: the balance is not
     # empty (friction takes a real share)
     assert s.friction_work > 0.1 * s.driving_work and np.isfinite(s.efficiency)
+
+
+# ------------------------------------------- every cycle figure: report, machine:, views
+
+
+def _long_crank(tmp_path: Path, **extra) -> Path:
+    """The slider-crank of crank_slider_dynamics.yaml with a crank (0.25 m) longer than
+    the rod (0.2 m): the chain breaks at positions around 90 and 270 deg."""
+    data = yaml.safe_load((EXAMPLES / "crank_slider_dynamics.yaml").read_text())
+    data["vectors"][1]["r"] = 0.25
+    data.update(extra)
+    path = tmp_path / "long_crank.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+def _four_bar_between(tmp_path: Path, **extra) -> Path:
+    """A four-bar whose crank (0.1 m; coupler 0.149999, rocker 0.25, frame 0.3 m) loses
+    its turn for 0.6 deg around 180 deg, between positions 36 and 37 of 73: every position
+    assembles, no friction — the works alone would claim an efficiency of 100 %."""
+    data = {"name": "four-bar, break between positions", "units": {"length": "m",
+                                                                      "angle": "deg"},
+            "positions": 73, "time": {"rpm": 60},
+            "arguments": {1: {"table": {0: 0, 73: 360}}},
+            "vectors": {1: {"r": 0.1, "a": {"argument": 1}},
+                        2: {"r": 0.149999, "a": "function"},
+                        3: {"r": 0.25, "a": "function"}, 4: {"r": 0.3, "a": 180}},
+            "contours": [{"vectors": [1, 2, 3, 4], "variant": 1}],
+            "bodies": {1: {"vectors": [1], "mass": 1, "inertia": 0.001,
+                           "center": {"vector": 1, "share": 0.5}},
+                       2: {"vectors": [2], "mass": 0.5, "inertia": "rod",
+                           "center": {"vector": 2, "share": 0.5}},
+                       3: {"vectors": [3], "mass": 0.8, "inertia": "rod",
+                           "center": {"vector": 3, "share": 0.5}}},
+            "moments": [{"name": "resistance", "body": 3, "value": -2.0}], **extra}
+    path = tmp_path / "four_bar_between.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+def _no_efficiency_claimed(text: str) -> None:
+    assert "efficiency 100 %" not in text and "efficiency: 100" not in text
+    assert not re.search(r"efficiency\s+\S*\s*100\b", text)
+
+
+def test_a_break_between_positions_is_told_and_no_efficiency_is_claimed(tmp_path: Path):
+    path = _four_bar_between(tmp_path)
+    kin = mechloop.solve(mechloop.load_model(path))
+    assert not kin.broken.any() and kin.breaks_between  # only the exact check sees it
+    dyn = mechloop.solve_dynamics(mechloop.load_model(path))
+    assert dyn.summary.efficiency == 1.0  # what the works alone would claim
+    assert dyn.cycle_breaks.between == ((36, 37),)  # and what the API says of them
+    assert dyn.cycle_breaks.positions.size == 0
+    result = _energy(path)
+    assert result.exit_code == 0, result.output
+    assert "warning: the chain breaks between positions 36 and 37" in result.output
+    assert "efficiency: not given" in result.output
+    _no_efficiency_claimed(result.output)
+    from mechloop.views.dynamics import summary_rows
+
+    _, _, totals = summary_rows(dyn)
+    figures = dict(totals)
+    assert figures["efficiency η"].startswith("not given: the chain breaks")
+    assert "between positions 36 and 37" in figures["loss coefficient ψ"]
+
+
+def test_machine_refuses_a_cycle_the_chain_cannot_pass(tmp_path: Path):
+    # positions that all assemble, a break between two of them: machine: has no cycle
+    path = _four_bar_between(tmp_path, machine={"delta": 0.05})
+    with pytest.raises(mechloop.ModelError) as info:
+        mechloop.solve_dynamics(mechloop.load_model(path))
+    assert info.value.problems[0].path == ("machine",)
+    assert "between positions 36 and 37" in str(info.value)
+    # and a break at positions, as before
+    with pytest.raises(mechloop.ModelError) as info:
+        mechloop.solve_dynamics(mechloop.load_model(_long_crank(tmp_path,
+                                                                machine={"delta": 0.05})))
+    assert "needs the whole cycle" in str(info.value)
+
+
+@pytest.mark.parametrize("lang, words", [
+    ("en", ("WARNING: the chain breaks in the cycle", "are not valid",
+            "efficiency η")),
+    ("ru", ("ВНИМАНИЕ: кинематическая цепь разрывается в цикле", "недостоверны",
+            "КПД η"))])
+def test_the_report_says_its_cycle_figures_are_not_valid(tmp_path: Path, monkeypatch, lang,
+                                                       words):
+    import pypdf
+
+    from mechloop.views import report
+
+    # the report's own conclusion page only (a whole report takes half a minute to draw;
+    # tests/test_report_and_cli_views.py draws whole ones)
+    def conclusion_only(model, results, dyn, name, text):
+        yield lambda: report._text_page(text["conclusion"],
+                                        report._conclusion(results, dyn, name, text))
+
+    monkeypatch.setattr(report, "_pages", conclusion_only)
+    path = _long_crank(tmp_path)
+    pdf = tmp_path / f"report_{lang}.pdf"
+    result = CliRunner().invoke(app, ["report", str(path), "-o", str(pdf), "--lang", lang])
+    assert result.exit_code == 0, result.output
+    assert "warning: WARNING: the chain breaks in the cycle" in result.output
+    assert "are not valid" in result.output
+    text = " ".join(" ".join(page.extract_text().split())
+                    for page in pypdf.PdfReader(pdf).pages)
+    for word in words:
+        assert word in text, word
+    broken = mechloop.solve(mechloop.load_model(path)).broken
+    from mechloop.solve.results import compress_positions
+
+    assert compress_positions(np.flatnonzero(broken)) in text
+    # the conclusion gives no efficiency, in either language
+    assert "Mechanical efficiency over the cycle" not in text
+    assert "Механический КПД за цикл" not in text
+
+
+def test_a_whole_cycle_report_keeps_its_efficiency(tmp_path: Path):
+    from mechloop.views.report import TEXT, _conclusion
+
+    dyn = mechloop.solve_dynamics(mechloop.load_model(EXAMPLES / "crank_slider_friction.yaml"))
+    lines = _conclusion(dyn.kinematics, dyn, "r3", TEXT["en"])
+    assert any(line.startswith("Mechanical efficiency over the cycle:") for line in lines)
+    assert not any("WARNING" in line for line in lines)

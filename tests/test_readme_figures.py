@@ -73,9 +73,14 @@ def _header(path: Path) -> str:
     return "\n".join(lines)
 
 
+def _example_files() -> list[Path]:
+    """Every file of examples/, its subfolders' too (examples/cams/)."""
+    return sorted(p for p in EXAMPLES.rglob("*") if p.is_file())
+
+
 def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
     out = []
-    for path in sorted(EXAMPLES.iterdir()):
+    for path in _example_files():
         header = _header(path)
         for block in re.split(r"\n\s*\n", header):
             if block.strip():
@@ -88,7 +93,7 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 def _pool() -> set[float]:
     """Numbers of the examples' data (outside comments) and of the README's code blocks."""
-    texts = [line.split("#")[0] for p in EXAMPLES.iterdir()
+    texts = [line.split("#")[0] for p in _example_files()
              for line in p.read_text(encoding="utf-8").splitlines()]
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
@@ -420,6 +425,12 @@ FIGURES: list[tuple[str, str, tuple]] = [
     ("six_bar_groups.yaml", r"the (?P<fig>47) deg swing of the bell", ("computed", "bell")),
     ("six_bar_groups.yaml", r"a (?P<fig>155) mm stroke", ("computed", "ram mm")),
     ("hydraulic_rocker.yaml", r"about (?P<fig>81) deg", ("computed", "leg swing")),
+    ("four_bar_break_ahead.yaml", r"θ = (?P<fig>150\.266) deg",
+     ("test", "tests/test_simulate_breaks.py::test_the_example_runs_up_to_the_break")),
+    ("four_bar_break_ahead.yaml", r"positions (?P<fig>31) to 41",
+     ("test", "tests/test_simulate_breaks.py::test_the_example_runs_up_to_the_break")),
+    ("four_bar_break_ahead.yaml", r"positions 31 to (?P<fig>41)",
+     ("test", "tests/test_simulate_breaks.py::test_the_example_runs_up_to_the_break")),
     ("sparse_argument.yaml", r"(?P<fig>0\.1667) 0\.2133", ("computed", "sparse 4")),
     ("sparse_argument.yaml", r"0\.1667 (?P<fig>0\.2133)", ("computed", "sparse 5")),
     ("sparse_argument.yaml", r"0\.26 (?P<fig>0\.24) 0\.22", ("computed", "sparse 7")),
@@ -428,16 +439,25 @@ FIGURES: list[tuple[str, str, tuple]] = [
     ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
 ]
+# the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
+_CELL = r"[^|]*\|"  # one cell of a table row
+FIGURES += [(R, f"`{law}` \\|" + _CELL * column + r" (?P<fig>[\d.]+) \|",
+             ("test", "tests/test_cam_design.py::test_peak_coefficients_match_the_textbook"))
+            for law in ("harmonic", "cycloidal", "poly345", "poly4567", "modified_trapezoidal",
+                        "modified_sine") for column in range(3)]
 
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
            r"|part \d|table [\d.]+))*", "a section of the course's seed documents"),
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
+    (R, r"seed 000 sec\. 2\.3–2\.6", "the seed's sections on cams"),
     (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
     (R, r"\d+ positions per design", "the benchmark's setting"),
     (R, r"position, over 16\)", "the error ratio of a fourth-order spline at half the step"),
     (R, r"`rtol` \(default 1e-8\), `atol` \(1e-9,", "simulate:'s default tolerances"),
+    (R, r"to 1e-11 of the mean speed", "a rule of the code (its constant, "
+        "mechloop.dynamics.machine.SETTLE_RTOL)"),
     (R, r"2,000 random designs|relative 1e-9[);]", "the synthesis benchmark's settings"),
     (R, r"evaluates 2,000 designs|`--designs 20000`", "the synthesis benchmark's settings"),
     (R, r"from 65,536 designs × positions", "a rule of the code (its constant, "
@@ -484,6 +504,7 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("engine_startup.yaml", r"released at 1\.5 s", "the starter's input off_at: 1.5"),
     ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
+    ("four_bar_break_ahead.yaml", r"390 mm", "coupler + rocker, 140 + 250 mm"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
 ]
 

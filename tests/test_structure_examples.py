@@ -68,6 +68,8 @@ HAND = {
     # pinion 1 and wheel 2 pinned to the frame, their mesh a higher pair: n = 2, p5 = 2,
     # p4 = 1, W = 6 − 4 − 1 = 1; the mesh replaced by a link 3 with two pins, an RRR dyad
     "gear_pair_dynamics.yaml": (2, 2, 1, 1, "L0(1) → L1(2,3)", 2),
+    # crank 1, coupler 2, rocker 3, four pins: W = 9 − 8 = 1; an RRR dyad (L1)
+    "four_bar_break_ahead.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
 }
 
 WITHOUT_BODIES = {

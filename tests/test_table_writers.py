@@ -120,6 +120,19 @@ def test_an_infinity_reads_back_in_csv(tmp_path):
     assert (tmp_path / "t.csv").read_text() == "x\n1.0\ninf\n-inf\n\n"
 
 
+def test_a_chunk_with_an_infinity_formats_its_numbers_as_every_other_chunk(tmp_path):
+    values = [1e-05, 1.5e300, 0.1, 2.0, -3.25e-12]
+    plain = pd.DataFrame({"x": values, "y": values})
+    mixed = pd.DataFrame({"x": [*values, np.inf], "y": [*values, 1.0]})
+    write_frame(plain, tmp_path / "plain.csv")
+    write_frame(mixed, tmp_path / "mixed.csv")
+    plain_rows = (tmp_path / "plain.csv").read_text().splitlines()
+    mixed_rows = (tmp_path / "mixed.csv").read_text().splitlines()
+    assert mixed_rows[:-1] == plain_rows
+    assert mixed_rows[-1] == "inf,1.0"
+    assert [float(v) for v in mixed_rows[1].split(",")] == [1e-05, 1e-05]
+
+
 @pytest.mark.parametrize("suffix", [".csv", ".json", ".parquet", ".xlsx"])
 def test_empty_tables(tmp_path, suffix):
     frame = pd.DataFrame({"position": np.arange(0), "x": np.zeros(0)})

@@ -308,8 +308,12 @@ def energy(model: ModelPath) -> None:
               f"change of kinetic energy leave {residual:.3g} J"
               + (f" ({abs(residual) / largest:.2g} of the largest work; the trapezoidal "
                  "rule over the positions)" if largest > 0 else "")
-              + (" — positions with a break are left out" if broken.any() else ""))
-    if np.isnan(summary.efficiency):
+              + (" — positions with a break are left out"
+                 if broken is not None and broken.positions.size else ""))
+    if broken is not None:
+        out.print("mechanical loss coefficient and efficiency: not given — the chain "
+                  "breaks in the cycle (see the warning)")
+    elif np.isnan(summary.efficiency):
         out.print("no load does net positive work over the cycle: loss coefficient and "
                   "efficiency are undefined")
     else:
@@ -321,7 +325,12 @@ def energy(model: ModelPath) -> None:
             dynamic.mechanism.drives[0].argument] == "angle"
         unit, speed, mass = ("N*m", "rad/s", "kg*m^2") if angle else ("N", "m/s", "kg")
         out.print(f"machine motion: mean speed {cycle.omega_mean:.6g} {speed}; constant "
-                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}; "
+                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}"
+                  + ("" if cycle.bare_constant_load is None else
+                     f" (with the flywheel; without it {cycle.bare_constant_load:.6g} {unit})")
+                  + ("" if not cycle.iterations else
+                     f" — the loads that depend on the speed taken at the cycle's own speed "
+                     f"({cycle.iterations} iterations)") + "; "
                   f"without a flywheel δ = {cycle.motion.delta:.4g} "
                   f"(speed {cycle.motion.omega_min:.6g} … {cycle.motion.omega_max:.6g} "
                   f"{speed})")
@@ -406,8 +415,12 @@ def _print_simulation(sim) -> None:
               f"within about {accuracy.inertia_error:.2g} kg*m^2, slope within "
               f"{accuracy.slope_error:.2g} kg*m^2/rad of dJ/dq)")
     for event in sim.events[1:]:
-        out.print(f"{event.kind}: t = {event.t:.6g} s, angle {np.degrees(event.q):.6g} deg, "
-                  f"speed {event.omega / RPM:.6g} rpm")
+        out.print(event.describe())
+    for end in sim.machine.breaks:
+        if end is not None:
+            err.print(f"[bold yellow]warning:[/] {end.describe()}: the machine is the "
+                      "stretch of positions between the breaks, not a cycle — no cycle, "
+                      "steady state or δ")
     count = sim.cycle_time.size
     if count:
         _, _, omega = sim.cycle_profile()
@@ -427,21 +440,31 @@ def _print_simulation(sim) -> None:
 
 
 def _warn_cycle_breaks(dynamic: DynamicResults, where: str):
-    """Warn that the cycle's works (and ψ, η) leave out the positions where the chain
-    breaks or the force analysis is singular; the mask of those positions."""
-    import numpy as np
+    """Warn that the cycle's works (and ψ, η, δ, the flywheel) are not the cycle's where
+    the chain breaks or the force analysis is singular at positions, or the chain breaks
+    between two positions (the exact existence check); the
+    :class:`~mechloop.dynamics.cycle_validity.CycleBreaks` or None."""
+    from mechloop.dynamics.cycle_validity import cycle_breaks
+    from mechloop.solve.results import compress_positions
 
-    broken = dynamic.kinematics.broken | dynamic.forces.singular
-    if broken.any():
-        from mechloop.solve.results import compress_positions
-
-        err.print(f"[bold yellow]warning:[/] the chain breaks (or the force analysis is "
-                  f"singular) at {int(broken.sum())} of {broken.size} positions "
-                  f"({compress_positions(np.flatnonzero(broken))}): the works {where} leave "
-                  "out the steps next to them, so they, the loss coefficient and the "
-                  "efficiency are not the cycle's — remove the break (dimensions, variant, "
-                  "argument range) before reading them")
-    return broken
+    found = cycle_breaks(dynamic)
+    if found is None:
+        return None
+    parts = []
+    if found.positions.size:
+        parts.append(f"the chain breaks (or the force analysis is singular) at "
+                     f"{found.positions.size} of {found.count} positions "
+                     f"({compress_positions(found.positions)}): the works {where} leave "
+                     "out the steps next to them")
+    if found.between:
+        parts.append("the chain breaks " + ", ".join(
+            f"between positions {i} and {j}" for i, j in found.between)
+            + " (the existence check over the continuous range; mechloop solve describes "
+            "it): the machine cannot pass there")
+    err.print(f"[bold yellow]warning:[/] {'; '.join(parts)} — so the work over the cycle, "
+              "the loss coefficient and the efficiency are not the cycle's and are not "
+              "given; remove the break (dimensions, variant, argument range) first")
+    return found
 
 
 PLOTS = ("plan", "overlay", "trajectories", "parameters", "combination", "angle",
@@ -665,7 +688,9 @@ def report(
             task = bar.add_task("pages", total=None)
             path = write_report(m, output, lang=lang, output=parameter,
                                 progress=lambda done, total: bar.update(
-                                    task, completed=done, total=total))
+                                    task, completed=done, total=total),
+                                warn=lambda text: err.print(f"[bold yellow]warning:[/] "
+                                                            f"{text}"))
     except ModelError as exc:
         raise locate(exc, model) from None
     out.print(f"wrote {path}")
@@ -723,9 +748,11 @@ def schema(
     force: Annotated[bool, typer.Option("--force", help="replace the output file even when "
                                         "it holds something other than a schema (a model)")
                      ] = False,
+    cam: Annotated[bool, typer.Option("--cam", help="the schema of cam designs (cam:, "
+                                      "mechloop cam) instead")] = False,
 ) -> None:
     """Print the JSON Schema of model files (generated from the code): vector models, or
-    with --groups models built from an input and Assur groups.
+    with --groups models built from an input and Assur groups, or with --cam cam designs.
 
     Example:
 
@@ -743,6 +770,10 @@ def schema(
         from mechloop.model.groups import group_json_schema
 
         found = group_json_schema()
+    elif cam:
+        from mechloop.cams.document import cam_json_schema
+
+        found = cam_json_schema()
     else:
         from mechloop.model.schema import model_json_schema
 
@@ -1015,6 +1046,98 @@ def synthesize(
         out.print(f"wrote {save_figure(plot_convergence(result), plot)}")
     if fit is not None:
         out.print(f"wrote {save_figure(plot_fit(result), fit)}")
+
+
+@app.command(name="cam", cls=_Command)
+@user_errors
+def cam_command(
+    model: Annotated[Path, typer.Argument(help="cam design file (.yaml, .yml or .json) "
+                                          "holding cam:", show_default=False)],
+    program: Annotated[Path | None, typer.Option(help="plot s, v, a, j over the cam angle "
+                       "(.png, .svg, .pdf); default: none")] = None,
+    profile: Annotated[Path | None, typer.Option(help="plot the profile, pitch curve, base "
+                       "circle and rollers; default: none")] = None,
+    pressure: Annotated[Path | None, typer.Option(help="plot the pressure angle; default: "
+                        "none")] = None,
+    curvature: Annotated[Path | None, typer.Option(help="plot the radius of curvature; "
+                         "default: none")] = None,
+    plan: Annotated[Path | None, typer.Option(help="draw cam and follower at --at; "
+                    "default: none")] = None,
+    at: Annotated[float, typer.Option(help="cam angle of the plan, deg")] = 0.0,
+    animation: Annotated[Path | None, typer.Option("--animate", help="the plan over one "
+                         "turn (.gif, .mp4, .html); default: none")] = None,
+    frames: Annotated[int, typer.Option(min=2, max=3600, help="frames of the animation "
+                      "over one turn")] = 72,
+    table: Annotated[Path | None, typer.Option("--table", help="the cam over the turn: "
+                     ".csv, .json, .parquet or .xlsx (SI units, angles in deg); default: "
+                     "none")] = None,
+    dxf: Annotated[Path | None, typer.Option(help="the profile as a DXF drawing (mm); "
+                   "default: none")] = None,
+    svg: Annotated[Path | None, typer.Option(help="the profile as an SVG drawing (mm); "
+                   "default: none")] = None,
+    vector_model: Annotated[Path | None, typer.Option("--model", help="the same cam as a "
+                            "vector model with intermediate arguments (.yaml or .json; "
+                            "translating followers; default: none)")] = None,
+    force: Force = False,
+) -> None:
+    """Design a disc cam by inverted motion (course sheet 4): translating or oscillating
+    roller follower, or flat-faced follower; the follower's motion by segments and laws.
+    Prints the base radius (given, or the smallest for the allowed pressure angle or a
+    convex profile), the largest pressure angle, the smallest radius of curvature with the
+    undercut check, the face width, the peak coefficients, and writes figures and files.
+
+    Example:
+
+    ```
+    mechloop cam examples/cams/roller.yaml --profile cam.png --dxf cam.dxf
+    ```
+    """
+    import math
+
+    from mechloop.cams.document import load_cam
+    from mechloop.cams.export import write_dxf, write_svg, write_table
+    from mechloop.cams.plots import animate_cam, plot_cam
+    from mechloop.cams.summary import summary_rows
+    from mechloop.views.animation import ANIMATION_SUFFIXES
+    from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
+
+    if not math.isfinite(at):
+        raise typer.BadParameter(f"{at}: give a cam angle in degrees", param_hint="--at")
+    figures = {"program": program, "profile": profile, "pressure": pressure,
+               "curvature": curvature, "plan": plan}
+    _outputs(model, force, *((p, FIGURE_SUFFIXES) for p in figures.values()),
+             (animation, ANIMATION_SUFFIXES), (table, SUFFIXES), (dxf, (".dxf",)),
+             (svg, (".svg",)), (vector_model, (".yaml", ".yml", ".json")))
+    design = load_cam(model)
+    rows, segments, verdicts = summary_rows(design)
+    shown = _table(f"Cam — {design.name or model}", ["quantity", "value", "unit"])
+    for row in rows:
+        shown.add_row(*row)
+    out.print(shown)
+    laws = _table("Segments and peak coefficients", ["segment", "law", "Cv, Ca, Cj"])
+    for row in segments:
+        laws.add_row(*row)
+    out.print(laws)
+    for line in verdicts:
+        out.print(line)
+    for view, path in figures.items():
+        if path is not None:
+            save_figure(plot_cam(design, view, phi=math.radians(at)), path)
+            out.print(f"wrote {path}")
+    if animation is not None:
+        with _progress("frames") as bar:
+            task = bar.add_task("frames", total=frames)
+            animate_cam(design, animation, frames=frames,
+                        progress=lambda done, total: bar.update(task, completed=done))
+        out.print(f"wrote {animation}")
+    for path, writer in ((table, write_table), (dxf, write_dxf), (svg, write_svg)):
+        if path is not None:
+            out.print(f"wrote {writer(design, path)}")
+    if vector_model is not None:
+        from mechloop.cams.vector_model import write_vector_model
+
+        out.print(f"wrote {write_vector_model(design, vector_model)} (mechloop plot "
+                  f"{vector_model} envelope draws its profile)")
 
 
 @app.command(cls=_Command)

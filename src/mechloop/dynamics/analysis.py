@@ -49,7 +49,9 @@ class DynamicResults:
     and inertia moment about its centre of mass ``−Σ (J·ε + (S_i − S)×m_i·a_Si)`` (N·m);
     ``summary``: power and work over the cycle; ``cycle``: the machine
     motion and flywheel when the model asks for them (``machine:``).  Without model time
-    the analysis is static (no inertia loads).
+    the analysis is static (no inertia loads).  Where the chain breaks in the cycle
+    (:attr:`cycle_breaks` is not None) the summary's works, ψ and η are not the cycle's
+    (the positions next to the breaks are left out): read them only when it is None.
 
     For a population of ``D`` designs (``analyze(..., designs=D)``,
     :mod:`mechloop.dynamics.population`) the arrays run over designs × positions
@@ -73,6 +75,15 @@ class DynamicResults:
     static: bool
     inertia: dict[int, tuple[Array, Array]]
     cycle: Cycle | None = None
+
+    @property
+    def cycle_breaks(self):
+        """Where the chain breaks in the cycle (at positions, or between two by the exact
+        existence check): a :class:`~mechloop.dynamics.cycle_validity.CycleBreaks`, or
+        None when the cycle figures are the cycle's."""
+        from mechloop.dynamics.cycle_validity import cycle_breaks
+
+        return cycle_breaks(self)
 
     def balancing_name(self, argument: int) -> tuple[str, str]:
         """Column stem and unit of the balancing load of ``argument``."""
@@ -264,14 +275,30 @@ def analyze(model: Model, kin: Results, mechanism: Mechanism,
         check_machine(mechanism, red, time)
         k = mechanism.drives[0].argument
         spec = model.machine if flywheel else model.machine.model_copy(update={"delta": None})
+        state = None
+        if designs is None and any(load.depends is not None for load in
+                                   (*loads.forces, *loads.moments)):
+            # loads that depend on the speed: machine: takes them at the cycle's speed
+            from mechloop.dynamics.state_terms import StateTerms
+
+            at, loads_at = analog_cache[k]
+            state = StateTerms(np.asarray(kin.arguments[k], dtype=float), loads_at,
+                               mechanism, at, periodic=True)
         try:
+            if designs is None and kin.breaks_between:
+                # every position assembles, but the machine cannot pass between two
+                raise MachineError("machine motion needs the whole cycle, but the chain "
+                                   f"breaks between positions: "
+                                   f"{kin.breaks_between[0].describe()}",
+                                   cause="cycle")
             cycle = steady_cycles(per_design(kin.arguments[k]), per_design(kin.time),
                                   Reduced(*(per_design(x) for x in (red.inertia,
                                                                     red.d_inertia,
                                                                     red.load))),
                                   per_design(forces.friction_loss),
                                   per_design(_argument_rate(kin, k)), spec,
-                                  failures="raise" if designs is None else "nan")
+                                  failures="raise" if designs is None else "nan",
+                                  state=state or None)
         except SolveError as exc:
             raise _machine_error(exc, k) from None
     return DynamicResults(kin, placement, mechanism, loads, forces, balancing_vp, red,
@@ -305,6 +332,10 @@ _MACHINE_FIXES = {
     "unsteady": (
         "machine", "check the loads over the cycle: positions 0..N must be one whole cycle "
         "of the input"),
+    "settle": (
+        "machine", "the dampers or one-way loads change too much with the speed over the "
+        "cycle: raise the speed (time: {rpm: ...}), give a smaller delta (a larger "
+        "flywheel), or simulate the machine in time (simulate:)"),
 }
 
 

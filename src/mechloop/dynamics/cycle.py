@@ -9,7 +9,7 @@ cycle, the coefficient of speed fluctuation and the flywheel for a wanted one.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -27,11 +27,20 @@ class Cycle:
     shaped (..., P), numbers a float or an array shaped (...)).
 
     ``constant_load``: the constant moment (force) on the input that balances the cycle's
-    work; ``motion``: the motion without a flywheel; ``flywheel``/``flywheel_approx``: the
-    flywheel moment of inertia for ``delta`` (exact root of δ(J_f) = δ, and the textbook
-    approximation), None without ``delta``; ``with_flywheel``: the motion with it.
+    work (of the machine with its flywheel when ``delta`` is given; see
+    ``bare_constant_load``); ``motion``: the motion without a flywheel;
+    ``flywheel``/``flywheel_approx``: the flywheel moment of inertia for ``delta`` (exact
+    root of δ(J_f) = δ, and the textbook approximation), None without ``delta``;
+    ``with_flywheel``: the motion with it.
     ``computed``: where the cycle could be computed (:func:`steady_cycles`); every number
     and array of a cycle where it is False is NaN (its own :func:`steady_cycle` raises).
+
+    With loads that depend on the speed (dampers, one-way loads: ``state``) the loads are
+    taken at the cycle's own speed ω(q), not the nominal one (:func:`_settled`):
+    ``reduced_load`` holds them at the speed of the machine with its flywheel (without,
+    when no ``delta``); the motion without a flywheel is its own steady cycle, balanced
+    by ``bare_constant_load`` (None when it equals ``constant_load``);
+    ``iterations`` the fixed point's iterations (0 without such loads).
     """
 
     q: Array
@@ -44,22 +53,28 @@ class Cycle:
     flywheel_approx: Array | float | None
     with_flywheel: machine.MachineMotion | None
     computed: NDArray[np.bool_] | bool = True
+    bare_constant_load: float | None = None
+    iterations: int = 0
 
 
 def steady_cycle(q: Array, time: Array, red: Reduced, friction_loss: Array, rate: Array,
-                 spec: Machine) -> Cycle:
+                 spec: Machine, *, state=None) -> Cycle:
     """Machine motion of a solved one-input model.
 
     ``q`` (rad or m) and ``time`` (s) over positions, ``red`` the reduced characteristics,
     ``friction_loss`` (W) and ``rate`` (the input's speed) from the force analysis at the
-    nominal speed; arrays shaped (P,).  Raises :class:`SolveError` when the cycle cannot
-    be computed (the chain breaks, the input does not advance, the machine stops).
+    nominal speed; arrays shaped (P,).  ``state``
+    (:class:`~mechloop.dynamics.state_terms.StateTerms`, optional): the loads that depend
+    on the speed, taken at the cycle's own speed.  Raises :class:`SolveError` when the
+    cycle cannot be computed (the chain breaks, the input does not advance, the machine
+    stops, the loads that depend on the speed do not settle).
     """
-    return steady_cycles(q, time, red, friction_loss, rate, spec, failures="raise")
+    return steady_cycles(q, time, red, friction_loss, rate, spec, failures="raise",
+                         state=state)
 
 
 def steady_cycles(q: Array, time: Array, red: Reduced, friction_loss: Array, rate: Array,
-                  spec: Machine, *, failures: str = "nan") -> Cycle:
+                  spec: Machine, *, failures: str = "nan", state=None) -> Cycle:
     """Machine motion of a stack of solved one-input models (e.g. candidate designs).
 
     ``red`` (its arrays), ``friction_loss`` and ``rate`` shaped (..., P); ``q`` and
@@ -68,7 +83,9 @@ def steady_cycles(q: Array, time: Array, red: Reduced, friction_loss: Array, rat
     what :func:`steady_cycle` raises as :class:`SolveError` — is NaN with False in
     ``computed``, or (``"raise"``) raises that error.  Cases that share one ``q`` are
     solved together; each case's numbers are those of its own :func:`steady_cycle` (to
-    rounding: the stack's linear solves and bisection stops).
+    rounding: the stack's linear solves and bisection stops).  ``state`` (one case only,
+    with ``failures="raise"``): see :func:`steady_cycle`; a stack takes the loads that
+    depend on the speed at the nominal speed, as its reduced loads hold them.
     """
     if failures not in ("raise", "nan"):
         raise ValueError(f"failures must be 'raise' or 'nan', got {failures!r}")
@@ -96,6 +113,9 @@ def steady_cycles(q: Array, time: Array, red: Reduced, friction_loss: Array, rat
     if spec.friction:
         with np.errstate(divide="ignore", invalid="ignore"):
             load -= np.where(rate != 0, friction_loss / rate, 0.0)
+    if raising and state is not None and lead == ():
+        return _settled(q, inertia, d_inertia, load - state.static, float(omega_mean),
+                        spec, state)
     if raising:  # machine.py raises for the rest
         return _on_one_q(q, inertia, d_inertia, load, omega_mean, spec, "raise")
     # what machine.py would raise for: every case that fails becomes a placeholder
@@ -164,6 +184,27 @@ def _on_one_q(q: Array, inertia: Array, d_inertia: Array, load: Array,
         runs = runs & np.asarray(with_flywheel.runs)
     return Cycle(q, omega_mean, load, constant, motion, spec.delta, flywheel, approx,
                  with_flywheel, bool(runs) if single else runs)
+
+
+def _settled(q: Array, inertia: Array, d_inertia: Array, load: Array, omega_mean: float,
+             spec: Machine, state) -> Cycle:
+    """The cycle of one case whose loads depend on the speed: ``load`` (P,) without them,
+    ``state`` their reduced moment ``M_s(q, ω, t)``, taken at the speed of the cycle that
+    runs (with the flywheel when ``spec.delta``), by :func:`machine.settle_speed`."""
+
+    def cycle_at(omega: Array, time: Array):
+        cycle = _on_one_q(q, inertia, d_inertia, load + state.moment(q, omega, time),
+                          omega_mean, spec, "raise")
+        return cycle, cycle.with_flywheel if cycle.with_flywheel is not None \
+            else cycle.motion
+
+    cycle, _, count = machine.settle_speed(cycle_at, omega_mean, q)
+    if spec.delta is None:
+        return replace(cycle, iterations=count)
+    bare = _settled(q, inertia, d_inertia, load, omega_mean,
+                    spec.model_copy(update={"delta": None}), state)
+    return replace(cycle, motion=bare.motion, bare_constant_load=bare.constant_load,
+                   iterations=count)
 
 
 def _number(x: Array | float) -> Array | float:

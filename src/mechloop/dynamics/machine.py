@@ -47,6 +47,11 @@ Array = NDArray[np.float64]
 PERIODIC_RTOL = 1e-9
 #: Largest net work over the cycle, relative to ``max|A|``, that still counts as steady.
 STEADY_RTOL = 1e-6
+#: The fixed point over the speed of loads that depend on it (:func:`settle_speed`) has
+#: converged when ``max|ω_{k+1}(q) − ω_k(q)|`` falls to this times the mean speed.
+SETTLE_RTOL = 1e-11
+#: The most iterations :func:`settle_speed` takes before it gives up.
+SETTLE_ITERATIONS = 200
 
 
 class MachineError(SolveError):
@@ -54,7 +59,8 @@ class MachineError(SolveError):
     chain breaks or the force analysis is singular somewhere in the cycle),
     ``"advance"`` (the input does not advance), ``"stops"`` (the machine stops),
     ``"inertia"`` (no reduced inertia somewhere), ``"unsteady"`` (the loads leave net
-    work over the cycle).  What to change in a model for each cause:
+    work over the cycle), ``"settle"`` (loads that depend on the speed: the steady cycle
+    was not found, :func:`settle_speed`).  What to change in a model for each cause:
     :mod:`mechloop.dynamics.analysis`."""
 
     def __init__(self, message: str, hint: str = "", cause: str = ""):
@@ -245,6 +251,39 @@ def flywheel_inertia_approx(
     group_one = a - 0.5 * j * w_mean[..., None] ** 2
     j_f = np.ptp(group_one, axis=-1) / (target * w_mean**2) - j.min(axis=-1)
     return _out(np.maximum(j_f, 0.0))
+
+
+def settle_speed(cycle_at, omega_mean: float, q: Array, *, rtol: float = SETTLE_RTOL,
+                 iterations: int | None = None):
+    """The steady cycle of a machine whose loads depend on the speed: the fixed point of
+    ``ω_{k+1}(q) = ω(cycle_at(ω_k, t_k))`` from the constant ``omega_mean`` (rad/s).
+
+    ``cycle_at(omega, time)`` (``omega`` rad/s and ``time`` s over the positions ``q``,
+    shapes (P,)) evaluates the loads at that motion, balances the cycle and returns
+    ``(result, motion)``: anything, and the :class:`MachineMotion` that runs.  Returns
+    ``(result, motion, iterations)`` once ``max|ω_{k+1} − ω_k| ≤ rtol·omega_mean``.
+
+    Raises :class:`MachineError` (cause ``"settle"``) when that does not happen within
+    ``iterations`` (default :data:`SETTLE_ITERATIONS`; the loads change too much with the
+    speed for the steady cycle at this mean speed to be found by substitution).
+    """
+    iterations = SETTLE_ITERATIONS if iterations is None else iterations
+    omega = np.full(q.shape, float(omega_mean))
+    time = (q - q[0]) / float(omega_mean)
+    change = np.inf
+    for count in range(1, iterations + 1):
+        result, motion = cycle_at(omega, time)
+        change = float(np.max(np.abs(motion.omega - omega))) / float(omega_mean)
+        omega, time = motion.omega, motion.time
+        if change <= rtol:
+            return result, motion, count
+    raise MachineError(
+        f"the steady cycle with the loads that depend on the speed did not settle: after "
+        f"{iterations} iterations the speed over the cycle still changed by {change:.3g} "
+        f"of the mean speed (wanted {rtol:.3g})",
+        "the dampers or one-way loads change too much with the speed over the cycle: "
+        "raise the mean speed, add inertia (a flywheel: delta smaller), or simulate the "
+        "machine in time instead", cause="settle")
 
 
 def _flywheel_case(a: Array, j: Array, w_mean: float, target: float) -> float:

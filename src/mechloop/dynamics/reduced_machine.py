@@ -57,11 +57,15 @@ class ReducedMachine:
     state : :class:`~mechloop.dynamics.state_terms.StateTerms`, optional — the reduced
         moment ``M_s(q, ω)`` of the loads that depend on the speed (dampers, loads with
         ``when``), beside ``M_q(q)`` (which must leave them out).
+    breaks : (lower, upper), optional — where the chain breaks beyond the first and the
+        last sample (:class:`~mechloop.dynamics.chain_span.ChainEnd`, None where the
+        model's range simply ends): the samples are then the stretch of positions between
+        two breaks, not a cycle (``periodic`` must not be True).
     """
 
     def __init__(self, q: ArrayLike, inertia: ArrayLike, load: ArrayLike,
                  d_inertia: ArrayLike | None = None, *, periodic: bool | None = None,
-                 state=None):
+                 state=None, breaks: tuple = (None, None)):
         q = np.asarray(q, dtype=float)
         j = np.asarray(inertia, dtype=float)
         m = np.asarray(load, dtype=float)
@@ -78,7 +82,8 @@ class ReducedMachine:
         self.q, self.inertia, self.load = q, j, m
         self.state = state if state else None
         self.start, self.period = float(q[0]), float(q[-1] - q[0])
-        self.periodic = _returns(j) and periodic is not False
+        self.breaks = tuple(breaks)
+        self.periodic = _returns(j) and periodic is not False and not any(self.breaks)
         self._j = _spline(q, j, self.periodic)
         self._dj = self._j.derivative()
         self._m = _spline(q, m, self.periodic and _returns(m))
@@ -97,7 +102,7 @@ class ReducedMachine:
     def with_inertia(self, extra: float) -> ReducedMachine:
         """The same machine with a constant inertia added (a flywheel, a rotor), kg·m²."""
         return ReducedMachine(self.q, self.inertia + extra, self.load, self.d_inertia,
-                              periodic=self.periodic, state=self.state)
+                              periodic=self.periodic, state=self.state, breaks=self.breaks)
 
     def wrap(self, q: ArrayLike) -> tuple[Array, Array]:
         """``(turns, q_in)``: ``q = q_in + turns·L`` with ``q_in`` in the model's range

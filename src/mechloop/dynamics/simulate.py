@@ -26,7 +26,11 @@ by ``e``; through all of them the error is about ``e/16``, fourth order) and che
 (``Interpolation.slope_error``: the spline's slope against the analogs' ``dJ/dq`` at the
 positions); refine ``positions`` for a smaller one.  A machine whose ``J`` is periodic runs
 through any number of cycles; one whose ``J`` is not (a rocker's range) stops where it
-leaves the modelled range.
+leaves the modelled range (event ``"range"``).  A chain that breaks somewhere in the range
+(at positions, or between two by the exact existence check) is simulated over the
+stretch of positions around the start that it passes through
+(:mod:`mechloop.dynamics.chain_span`): the run stops at the stretch's last position with
+the event ``"chain break ahead"``, which names the exact input value of the break.
 
 **Cycles and the steady state.** A cycle is one period ``L`` of ``q`` (the model's range of
 the input), from the angle of position 0 on, turn by turn (a start inside a cycle makes the
@@ -68,8 +72,11 @@ Array = NDArray[np.float64]
 @dataclass(frozen=True)
 class Event:
     """Something that happened: ``kind`` is one of ``"start"``, ``"motor off"``,
-    ``"stopped"`` (the speed fell to zero), ``"range"`` (the input left the modelled range
-    of a machine that is not periodic), ``"angle"`` (``stop_at`` reached), ``"steady"``,
+    ``"stopped"`` (the speed fell to zero), ``"range"`` (the input reached an end of the
+    modelled range of a machine that is not periodic: the model knows nothing beyond),
+    ``"chain break ahead"`` (the input reached the last position before a chain break:
+    ``at`` is the input value where the chain breaks, rad, from the exact existence check,
+    :mod:`mechloop.dynamics.chain_span`), ``"angle"`` (``stop_at`` reached), ``"steady"``,
     ``"cycles"``, ``"duration"``; at time ``t`` (s), angle ``q`` (rad), speed ``omega``
     (rad/s)."""
 
@@ -77,6 +84,20 @@ class Event:
     t: float
     q: float
     omega: float
+    at: float | None = None
+
+    def describe(self) -> str:
+        """The event in words, angles in degrees, speeds in rpm."""
+        text = (f"{self.kind}: t = {self.t:.6g} s, angle {math.degrees(self.q):.6g} deg, "
+                f"speed {self.omega / RPM:.6g} rpm")
+        if self.kind == "chain break ahead" and self.at is not None:
+            text += (f" — the run stops at the last position before the break; the chain "
+                     f"breaks at angle {math.degrees(self.at):.8g} deg, "
+                     f"{abs(math.degrees(self.at - self.q)):.4g} deg further on")
+        elif self.kind == "range":
+            text += (" — the input reached the end of the model's range (the positions are "
+                     "a range, not whole turns): nothing is known beyond it")
+        return text
 
 
 @dataclass(frozen=True)
@@ -312,7 +333,12 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
                 continue
             raise SolveError(f"the cycle that starts at t = {lap_t:.6g} s does not end",
                              "give a duration (s)")
-        kind = hits[0][2].strip()
+        kind = hits[0][2]
+        end = None
+        if kind.startswith("range"):
+            end = machine.breaks[0 if kind == "range " else 1]
+            kind = "range" if end is None else "chain break ahead"
+        kind = kind.strip()
         if kind == "back":  # turned back into the previous cycle: it is not a whole one
             y[0] = lap_q
             lap_t, lap_q, partial = t, lap_q - machine.period, True
@@ -320,7 +346,7 @@ def integrate(machine: ReducedMachine, motor: MotorCurve | None, q0: float, omeg
         if kind != "lap":
             if kind == "stopped":
                 y[1] = 0.0
-            events.append(Event(kind, t, y[0], y[1]))
+            events.append(Event(kind, t, y[0], y[1], None if end is None else end.q))
             break
         y[0] = lap_q + machine.period  # exactly on the cycle's end
         if not partial:
@@ -406,9 +432,9 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
     ``progress(done, total)`` is called as the run goes (see :func:`integrate`).
 
     Raises :class:`~mechloop.errors.ModelError` (located at the key to change) when the
-    model cannot be simulated: no settings, not one turning input, a chain break or a
-    singular force analysis at some position, an input that does not advance, no moving
-    mass, ``flywheel: machine`` without a flywheel from ``machine:``.
+    model cannot be simulated: no settings, not one turning input, a start at a chain
+    break or fewer than 4 positions between breaks around it, an input that does not
+    advance, no moving mass, ``flywheel: machine`` without a flywheel from ``machine:``.
     """
     from mechloop.model.simulate import Simulate
 
@@ -431,12 +457,12 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
         from mechloop.dynamics.analysis import solve_dynamics
 
         dynamics = solve_dynamics(model)
-    machine, extra = model_machine(model, settings, dynamics)
-    motor = None if settings.motor is None else motor_curve(settings.motor, model.units)
     k = dynamics.mechanism.drives[0].argument
     start = settings.start
     q0 = float(dynamics.kinematics.arguments[k][0]) if start.angle is None else _si(
         start.angle, "angle", model.units.angle, ("simulate", "start", "angle"))
+    machine, extra = model_machine(model, settings, dynamics, start=q0)
+    motor = None if settings.motor is None else motor_curve(settings.motor, model.units)
     stop_at = None if settings.stop_at is None else _si(
         settings.stop_at, "angle", model.units.angle, ("simulate", "stop_at"))
     run = Settings(duration=settings.duration, cycles=settings.cycles,
@@ -450,10 +476,15 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
         raise exc.at(("simulate",)) from None
 
 
-def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults
-                  ) -> tuple[ReducedMachine, float]:
+def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults, *,
+                  start: float | None = None) -> tuple[ReducedMachine, float]:
     """The reduced machine of a solved model (loads, and friction at the nominal speed when
-    ``settings.friction``), and the flywheel's inertia (kg·m²) to add."""
+    ``settings.friction``), and the flywheel's inertia (kg·m²) to add.
+
+    Where the chain breaks (at positions, or between them by the exact existence check)
+    the machine is the stretch of positions around ``start`` (rad; default position 0)
+    that the chain passes through, with the breaks beyond its ends
+    (:func:`~mechloop.dynamics.chain_span.unbroken_span`)."""
     mech, red, kin = dynamics.mechanism, dynamics.reduced, dynamics.kinematics
     if red is None or kin.argument_kinds[mech.drives[0].argument] != "angle":
         raise ModelError([Problem(("simulate",), "motion in time needs one input that "
@@ -461,28 +492,31 @@ def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults
                                   + ("" if red is None else ", driven by a length") + ")",
                                   "drive the machine by one angle argument")])
     k = mech.drives[0].argument
-    broken = kin.broken | dynamics.forces.singular
-    if broken.any():
-        where = np.flatnonzero(broken)
-        raise ModelError([Problem(("simulate",), "motion in time needs the whole cycle, "
-                                  "but the chain breaks or the force analysis is singular "
-                                  f"at {where.size} position(s), the first {int(where[0])}",
-                                  "remove the chain break (mechloop solve lists the "
-                                  "positions) or narrow the argument's range")])
-    load = np.array(red.load, dtype=float)
     q = np.asarray(kin.arguments[k], dtype=float)
     turns = (q[-1] - q[0]) / (2 * np.pi)
     whole = round(turns) >= 1 and abs(turns - round(turns)) <= 1e-9 * turns
-    state = _state_terms(model, dynamics, k, q, whole)
+    keep, breaks = slice(None), (None, None)
+    if (kin.broken | dynamics.forces.singular).any() or kin.breaks_between:
+        from mechloop.dynamics.chain_span import unbroken_span
+
+        span = unbroken_span(model, kin, k, dynamics.forces.singular,
+                             float(q[0]) if start is None else start, whole=whole)
+        keep, breaks = span.index, (span.lower, span.upper)
+        q = span.q
+    load = np.array(red.load, dtype=float)[keep]
+    state = _state_terms(model, dynamics, k, q, whole and breaks == (None, None),
+                         keep=keep)
     if state is not None:
         load -= state.static
     if settings.friction and dynamics.forces.friction_loss.any():
-        rate = _argument_rate(kin, k)
+        rate = _argument_rate(kin, k)[keep]
         with np.errstate(divide="ignore", invalid="ignore"):
-            load -= np.where(rate != 0, dynamics.forces.friction_loss / rate, 0.0)
+            load -= np.where(rate != 0, dynamics.forces.friction_loss[keep] / rate, 0.0)
     try:
-        machine = ReducedMachine(q, red.inertia, load, red.d_inertia,
-                                 periodic=None if whole else False, state=state)
+        machine = ReducedMachine(q, np.asarray(red.inertia)[keep], load,
+                                 np.asarray(red.d_inertia)[keep],
+                                 periodic=None if whole and breaks == (None, None) else False,
+                                 state=state, breaks=breaks)
     except SolveError as exc:
         key = ("arguments", k) if "advance" in exc.message else ("bodies",)
         raise exc.at(key) from None
@@ -501,10 +535,10 @@ def model_machine(model: Model, settings: Simulate, dynamics: DynamicResults
     return machine, extra
 
 
-def _state_terms(model: Model, dynamics: DynamicResults, k: int, q: Array, whole: bool
-                 ) -> StateTerms | None:
+def _state_terms(model: Model, dynamics: DynamicResults, k: int, q: Array, whole: bool,
+                 *, keep: slice | NDArray[np.int64] = slice(None)) -> StateTerms | None:
     """The reduced moment of the loads that depend on the speed (None: the model has
-    none), from the analogs of input ``k``."""
+    none), from the analogs of input ``k``, at the positions ``keep`` (input ``q``)."""
     if not any(load.depends is not None
                for load in (*dynamics.loads.forces, *dynamics.loads.moments)):
         return None
@@ -516,7 +550,7 @@ def _state_terms(model: Model, dynamics: DynamicResults, k: int, q: Array, whole
     at = Placement(solve(model, analogs_of=k))
     loads_at = build_loads(model, dynamics.mechanism, at, model_time(model),
                            state=dynamics.placement)
-    return StateTerms(q, loads_at, dynamics.mechanism, at, periodic=whole)
+    return StateTerms(q, loads_at, dynamics.mechanism, at, periodic=whole, keep=keep)
 
 
 def _si(value, kind, unit: str, path: tuple[str | int, ...]) -> float:

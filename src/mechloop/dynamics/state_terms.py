@@ -63,17 +63,19 @@ class StateTerms:
         (``build_loads(..., analogs_placement, state=motion)``).
     mechanism, analogs : the mechanism and the analogs' placement.
     periodic : bool — the machine repeats every cycle.
+    keep : index, optional — the model's positions that ``q`` are (a stretch between
+        chain breaks, :mod:`mechloop.dynamics.chain_span`); default all.
 
     ``static`` (shape (P,)) is what these loads contribute to the reduced load at the
     model's own motion (to take out of ``M_q``).
     """
 
     def __init__(self, q: Array, loads_at: Loads, mechanism: Mechanism,
-                 analogs: Placement, *, periodic: bool):
+                 analogs: Placement, *, periodic: bool, keep=slice(None)):
         res = analogs.results
         rows: list[Array] = []
         terms: list[_Term] = []
-        static = np.zeros(q.size)
+        static = np.zeros(analogs.results.broken.size)
 
         def body_rate(body: int) -> Array:
             return res.rate(f"a{mechanism.bodies[body].angle_vector}")
@@ -115,7 +117,8 @@ class StateTerms:
                 add(dep.unit * w, dep.speed, dep.law, 0.0)
             else:
                 add(dep.ungated * w, dep.rate, None, dep.sign)
-        self.static = static
+        self.static = static[keep]
+        rows = [row[keep] for row in rows]
         self.terms = tuple(terms)
         self.start, self.period = float(q[0]), float(q[-1] - q[0])
         self.periodic = periodic

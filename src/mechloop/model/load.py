@@ -41,6 +41,9 @@ def model_from_data(data: Any, *, file: str | None = None, lines: LineMap | None
     if not isinstance(data, dict):
         raise ModelFileError([Problem((), "a model is a mapping of keys",
                                       "see examples/crank_slider.yaml")], file)
+    if "cam" in data and "vectors" not in data:  # a cam design (mechloop.cams), not a model
+        raise ModelFileError([Problem(("cam",), "this file is a cam design, not a vector "
+                                      "model", "use mechloop cam FILE")], file)
     if "groups" in data:  # a mechanism built from Assur groups: generate its vector model
         return model_from_group_data(data, file=file, lines=lines)
     model, problems, tables, unread = _validate_tables(Model, data, file)

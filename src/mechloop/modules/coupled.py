@@ -388,17 +388,9 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                 size = _size(K, row, col, ru, rc)
                 ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac,
                                          angle, size, F, J, dx)
-                if not ok:
-                    continue
-                if not ratio > singular_sin:
-                    status[row, col] = DEAD
-                elif start_sign[row, j] != 0 and (det > 0) != (start_sign[row, j] > 0):
-                    status[row, col] = JUMP
-                else:
-                    status[row, col] = OK
-                    det_out[row, col] = det
-                    for i in range(m):
-                        U[row, col, i] = u[i]
+                if ok:
+                    _settle(status, det_out, U, u, row, col, det, ratio, singular_sin,
+                            start_sign[row, j])
                 continue
             s = extra_start[row, col - n_regular]
             near = -1
@@ -420,17 +412,26 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
             size = _size(K, row, col, ru, rc)
             ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
                                      size, F, J, dx)
-            if not ok:
-                continue
-            if not ratio > singular_sin:
-                status[row, col] = DEAD
-            elif (det > 0) != (det_out[row, near] > 0):
-                status[row, col] = JUMP
-            else:
-                status[row, col] = OK
-                det_out[row, col] = det
-                for i in range(m):
-                    U[row, col, i] = u[i]
+            if ok:
+                _settle(status, det_out, U, u, row, col, det, ratio, singular_sin,
+                        1.0 if det_out[row, near] > 0 else -1.0)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _settle(status, det_out, U, u, row, col, det, ratio, singular_sin, sign
+            ):  # pragma: no cover - compiled
+    """Record a converged Newton solve ``u`` at ``[row, col]``: a dead point when the
+    Jacobian's scale-free ratio is not above ``singular_sin``, a jump when ``det``'s sign
+    is not ``sign`` (0: either sign will do), else the solution and ``det``."""
+    if not ratio > singular_sin:
+        status[row, col] = DEAD
+    elif sign != 0 and (det > 0) != (sign > 0):
+        status[row, col] = JUMP
+    else:
+        status[row, col] = OK
+        det_out[row, col] = det
+        for i in range(u.shape[0]):
+            U[row, col, i] = u[i]
 
 
 @njit(cache=True, nogil=True)

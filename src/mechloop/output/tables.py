@@ -168,12 +168,18 @@ def _dump(block: np.ndarray) -> bytes:
 
 
 def _csv_value(value: object) -> bytes:
-    """One CSV field as pandas writes it: empty for a missing value or an empty string,
-    ``inf``, ``True``/``False``, quoted when needed."""
+    """One CSV field: empty for a missing value or an empty string, ``inf``,
+    ``True``/``False``, a float as orjson writes it (as every other chunk), quoted when
+    needed."""
     if value is None or value == "" or (isinstance(value, float) and np.isnan(value)):
         return b""
     if isinstance(value, float | np.floating):
-        return repr(float(value)).encode()
+        number = float(value)
+        if np.isinf(number):
+            return b"inf" if number > 0 else b"-inf"
+        import orjson
+
+        return orjson.dumps(number)  # the same text as the chunks without an infinity
     text = io.StringIO()
     csv.writer(text, lineterminator="").writerow([value])
     return text.getvalue().encode("utf-8")

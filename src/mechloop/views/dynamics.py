@@ -208,10 +208,14 @@ def summary_rows(dyn: DynamicResults, display: Display = DEFAULT_DISPLAY
              shown(r.mean_power, "power"), shown(r.specific_power, "specific_power")]
             for r in dyn.summary.rows]
     s = dyn.summary
+    from mechloop.dynamics.cycle_validity import cycle_breaks
+
+    broken = cycle_breaks(dyn)
+    refused = f"not given: the chain breaks ({broken.where()})" if broken else None
     totals = [["driving work", f"{shown(s.driving_work, 'energy')} {energy}"],
               ["work lost to friction", f"{shown(s.friction_work, 'energy')} {energy}"],
-              ["loss coefficient ψ", display.format(s.loss_coefficient)],
-              ["efficiency η", display.format(s.efficiency)],
+              ["loss coefficient ψ", refused or display.format(s.loss_coefficient)],
+              ["efficiency η", refused or display.format(s.efficiency)],
               ["kinetic energy change", f"{shown(s.kinetic_energy_change, 'energy')} {energy}"]]
     if dyn.cycle is not None:
         totals += _cycle_rows(dyn, display)

@@ -25,6 +25,7 @@ from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.figure import Figure
 
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
+from mechloop.dynamics.cycle_validity import cycle_breaks
 from mechloop.model.formula import describe_structure
 from mechloop.model.schema import Model
 from mechloop.solve.kinematics import solve
@@ -66,6 +67,11 @@ TEXT: dict[str, dict[str, str]] = {
         "breaks": "Chain breaks: {text}",
         "no_breaks": "The kinematic chain does not break at any position.",
         "flywheel": "Flywheel for δ = {delta}: {value}",
+        "cycle_breaks": "WARNING: the chain breaks in the cycle ({where}). The cycle "
+                        "figures — work over the cycle, loss coefficient ψ, efficiency η, "
+                        "flywheel and δ — are not valid and are not given; the summary "
+                        "page leaves out the steps next to the breaks. Remove the break "
+                        "first.",
         "page": "page",
     },
     "ru": {
@@ -102,6 +108,11 @@ TEXT: dict[str, dict[str, str]] = {
         "breaks": "Разрывы кинематической цепи: {text}",
         "no_breaks": "Проверка кинематической цепи на разрыв: разрывов нет.",
         "flywheel": "Маховик для δ = {delta}: {value}",
+        "cycle_breaks": "ВНИМАНИЕ: кинематическая цепь разрывается в цикле ({where}). "
+                        "Цикловые характеристики — работа за цикл, коэффициент потерь ψ, "
+                        "КПД η, маховик и δ — недостоверны и не приводятся; на странице "
+                        "сводных характеристик пропущены шаги рядом с разрывами. Сначала "
+                        "устраните разрыв.",
         "page": "стр.",
     },
 }
@@ -170,12 +181,14 @@ def output_parameter(results: Results) -> str:
 
 
 def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en",
-                 output: str | None = None, progress: Callable[[int, int], None] | None = None
-                 ) -> Path:
+                 output: str | None = None, progress: Callable[[int, int], None] | None = None,
+                 warn: Callable[[str], None] | None = None) -> Path:
     """Write the course-project report of ``model`` to ``path`` (PDF), atomically.
 
     ``lang``: 'en' or 'ru'; ``output``: the output parameter ('r3', 'a3'; default
-    :func:`output_parameter`); ``progress(done, total)`` is called after each page.
+    :func:`output_parameter`); ``progress(done, total)`` is called after each page;
+    ``warn(text)`` is told (in English) when the chain breaks in the cycle, so that the
+    report's cycle figures are not valid (the report says so too).
     """
     from mechloop.output.atomic import atomic_file
 
@@ -190,6 +203,9 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
     if name not in results.values or name in results.constant:
         raise ViewError(f"{name!r} is not a varying parameter of the model",
                         f"use one of {', '.join(results.varying())}")
+    broken = cycle_breaks(dyn) if dyn is not None else None
+    if warn is not None and broken is not None:
+        warn(TEXT["en"]["cycle_breaks"].format(where=broken.where()))
     pages = list(_pages(model, results, dyn, name, TEXT[lang]))
     with atomic_file(target) as handle, \
             PdfPages(handle, metadata={"Title": model.name or TEXT[lang]["title"],
@@ -402,9 +418,21 @@ def _conclusion(results: Results, dyn: DynamicResults | None, name: str,
             lines.append(text["peak_reaction"].format(name=joint,
                                                       value=f"{peaks[joint]:.6g} N"))
         eta = dyn.summary.efficiency
-        lines.append(text["no_efficiency"] if np.isnan(eta)
-                     else text["efficiency"].format(value=f"{100 * eta:.4g} %"))
-        if dyn.cycle is not None and dyn.cycle.flywheel is not None:
+        broken = cycle_breaks(dyn)
+        if broken is not None:
+            lang = "ru" if text is TEXT["ru"] else "en"
+            lines += _wrapped(text["cycle_breaks"].format(where=broken.where(lang)))
+        else:
+            lines.append(text["no_efficiency"] if np.isnan(eta)
+                         else text["efficiency"].format(value=f"{100 * eta:.4g} %"))
+        if broken is None and dyn.cycle is not None and dyn.cycle.flywheel is not None:
             lines.append(text["flywheel"].format(delta=f"{dyn.cycle.delta:.4g}",
                                                  value=f"{dyn.cycle.flywheel:.6g}"))
     return lines
+
+
+def _wrapped(line: str, width: int = 95) -> list[str]:
+    """A long line of the text page as lines of at most ``width`` characters."""
+    import textwrap
+
+    return textwrap.wrap(line, width)
