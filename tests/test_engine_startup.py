@@ -6,8 +6,8 @@ Checked against what the simulation does not compute itself: the steady cycle's 
 over the positions against :func:`mechloop.dynamics.machine.machine_motion` (the energy
 equation by quadrature) for the same loads; the consumer's work over the steady cycle
 against the diagram's closed-form area; the mean speed against the energy balance
-``k·⟨ω²⟩·4π = W``; and the profile against ``machine:``'s own steady cycle at the
-nominal speed.
+``k·⟨ω²⟩·4π = W``; and ``machine:``'s steady cycle at the nominal speed run by the
+simulation when it is driven by ``machine:``'s constant moment as well.
 """
 
 from __future__ import annotations
