@@ -255,6 +255,19 @@ FIGURES: list[tuple[str, str, tuple]] = [
     # energy example (the compressor)
     (R, r"efficiency \((?P<fig>28) %\)",
      ("test", "tests/test_readme_commands.py::test_energy_example_prints_a_meaningful_efficiency")),
+    # indicator diagrams
+    (R, r"diagram does (?P<fig>332\.5) J", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"positions read (?P<fig>331\.3) J", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"takes (?P<fig>147\.5) J a turn", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"volumetric efficiency\s+(?P<fig>0\.840)", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"steady state after (?P<fig>7\.77) s", ("test", "tests/test_engine_startup.py::"
+     "test_the_starter_brings_the_engine_to_its_steady_state")),
+    (R, r"at a\s+mean (?P<fig>1498) rpm", ("test", "tests/test_engine_startup.py::"
+     "test_the_starter_brings_the_engine_to_its_steady_state")),
     # a coupled block's break between two positions
     (R, r"lost for about (?P<fig>1\.2)° of the", ("test", "tests/test_coupled_existence.py::"
      "test_a_triad_break_between_two_samples_is_found_where_the_oracle_loses_it")),
@@ -491,6 +504,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("hydraulic_rocker.yaml", r"law in 4 s", "the argument's law ends at 4 s"),
     ("single_cylinder_engine.yaml", r"0\.09 MPa|n = 1\.35|5\.5 MPa at 370 deg|n = 1\.25|"
      r"0\.11 MPa from 540 deg", "the assumed indicator diagram behind the gas-force table"),
+    ("compressor_indicator.yaml", r"clearance 5 %", "the input clearance: 0.05"),
+    ("engine_startup.yaml", r"released at 1\.5 s", "the starter's input off_at: 1.5"),
     ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
     ("four_bar_break_ahead.yaml", r"390 mm", "coupler + rocker, 140 + 250 mm"),

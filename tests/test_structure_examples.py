@@ -29,6 +29,9 @@ HAND = {
     "crank_slider_friction.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "engine_indicator.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "engine_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "compressor_indicator.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "compressor_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "spring_release.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     # five-bar: cranks 1 and 4 each pinned to the frame (two input groups), links 2 and 3

@@ -1147,5 +1147,71 @@ def cam_command(
                   f"{vector_model} envelope draws its profile)")
 
 
+@app.command(cls=_Command)
+@user_errors
+def indicator(
+    model: ModelPath,
+    output: Annotated[Path | None, typer.Option(
+        "-o", "--output", help="write the diagrams over the positions here (angle, and "
+        "each load's stroke, V, p, F): .csv, .json, .parquet or .xlsx (default: none)")
+                      ] = None,
+    plot_file: Annotated[Path | None, typer.Option(
+        "--plot", help="draw p–V and p–φ of each indicator load: .png, .svg or .pdf "
+        "(default: none)")] = None,
+    force: Force = False,
+) -> None:
+    """The indicator diagrams of the model's gas forces (forces whose value is an engine's
+    or compressor's cycle): stroke, swept and clearance volume, the diagram's work by its
+    closed form and over the positions, the mean indicated pressure, the peak pressure.
+
+    Example:
+
+    ```
+    mechloop indicator examples/engine_indicator.yaml --plot indicator.png
+    ```
+    """
+    from mechloop.dynamics.indicator import model_indicators
+    from mechloop.engines import CompressorCycle, volumetric_efficiency
+    from mechloop.model.load import load_model, locate
+    from mechloop.views.figure import FIGURE_SUFFIXES
+
+    _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
+    m = load_model(model)
+    try:
+        items = model_indicators(m)
+    except ModelError as exc:
+        raise locate(exc, model) from None
+    for item in items:
+        gas, cycle = item.gas, item.cycle
+        compressor = isinstance(cycle, CompressorCycle)
+        kind = "compressor" if compressor else f"{cycle.strokes}-stroke engine"
+        rows = _table(f"{item.name}: {kind}", ["quantity", "value"])
+        for name, value in (
+                ("stroke [mm]", (gas.top - gas.bottom) * 1e3),
+                ("swept volume V_h [cm³]", gas.swept * 1e6),
+                ("clearance volume V_c [cm³]", gas.clearance * 1e6),
+                ("∮p dV, closed form [J]", item.loop_work),
+                ("∮p dV over the positions [J]", item.sampled_work),
+                ("mean indicated pressure [MPa]", item.loop_work / gas.swept / 1e6),
+                ("peak pressure [MPa]", gas.pressure.max() / 1e6)):
+            rows.add_row(name, f"{value:.6g}")
+        if compressor:
+            rows.add_row("volumetric efficiency λ_V", f"{volumetric_efficiency(cycle):.6g}")
+        out.print(rows)
+    out.print("∮p dV is negative for a compressor (the work it takes); over the positions: "
+              "the trapezoidal rule in V through the model's positions")
+    if output is not None:
+        from mechloop.views.indicator import indicator_frame
+
+        _write_frame(indicator_frame(items), output)
+        out.print(f"wrote {output}")
+    if plot_file is not None:
+        from mechloop.views.figure import save_figure
+        from mechloop.views.indicator import plot_indicators
+
+        save_figure(plot_indicators(items, title=m.name), plot_file)
+        out.print(f"wrote {plot_file}")
+
+
 if __name__ == "__main__":  # pragma: no cover
     app()
