@@ -33,6 +33,7 @@ import mechloop
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
+EXAMPLE_FILES = sorted(p for p in EXAMPLES.rglob("*") if p.is_file())  # examples/course too
 SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = re.compile(r"(?<![\w.\-/])(\d+(?:,\d{3})*(?:\.\d+)?(?:e[-+]?\d+|·10[⁻⁰-⁹¹²³]+)?)"
                     r"(?![a-zA-Z_\d])")
@@ -75,7 +76,7 @@ def _header(path: Path) -> str:
 
 def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
     out = []
-    for path in sorted(EXAMPLES.iterdir()):
+    for path in EXAMPLE_FILES:
         header = _header(path)
         for block in re.split(r"\n\s*\n", header):
             if block.strip():
@@ -88,7 +89,7 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 def _pool() -> set[float]:
     """Numbers of the examples' data (outside comments) and of the README's code blocks."""
-    texts = [line.split("#")[0] for p in EXAMPLES.iterdir()
+    texts = [line.split("#")[0] for p in EXAMPLE_FILES
              for line in p.read_text(encoding="utf-8").splitlines()]
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
