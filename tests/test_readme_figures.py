@@ -471,6 +471,13 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
+    ("README.md", r"^\| (1[3-9]|20) \| ", "a course task's number (seed 000 sec. 3)"),
+    # the course models of examples/course/: the drawing's points (the frame vectors are
+    # computed from them), the time the argument's law takes, assumed air loads
+    (None, r"\b[A-Z]\d? \(-?\d+, ?-?\d+\)", "a point of a course model's drawing, mm"),
+    (None, r"in \d+ s \(3-4-5 polynomial law", "the time of the argument's law (its end "
+     "position over the model's time table)"),
+    (None, r"\d+(\.\d+)? kPa on \d+ m × 0\.8 m", "an assumed wind pressure on an area"),
 ]
 
 
