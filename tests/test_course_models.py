@@ -195,3 +195,53 @@ def test_examples_ship_as_package_data():
         relative = "examples_data/" + e.path.relative_to(examples_dir()).as_posix()
         assert any(fnmatch.fnmatch(relative, p) and p.count("/") == relative.count("/")
                    for p in patterns), relative
+
+
+# ------------------------------------------------------- the headers' claims, by the solve
+def _deg(results, name: str) -> np.ndarray:
+    return np.degrees(results.value(name))
+
+
+def _group_points(name: str, *points: str) -> list[tuple[np.ndarray, np.ndarray]]:
+    from mechloop.model.groups import build, mechanism_of
+
+    built = build(mechanism_of(COURSE_DIR / name))
+    results = mechloop.solve(built.model)
+    return [built.points[p].xy(results) for p in points]
+
+
+def _wrap(angle_deg: np.ndarray) -> np.ndarray:
+    return (np.asarray(angle_deg) + 180.0) % 360.0 - 180.0
+
+
+def test_course_headers_state_what_the_models_do():
+    """Each header's range of motion (the leg "from hanging down to 5 deg below
+    horizontal", the mast "from vertical to 25 deg", ...) is what the solve gives."""
+    def solved(name):
+        return mechloop.solve(mechloop.load_model(COURSE_DIR / name))
+
+    leg = _wrap(_deg(solved("01_an10_landing_gear.yaml"), "a8"))  # forward: towards -180
+    assert abs(leg[0] + 90) < 3 and abs(leg[-1] + 180) < 12
+    leg = _wrap(_deg(solved("02_landing_gear.yaml"), "a8"))       # aft: towards 0
+    assert abs(leg[0] + 90) < 3 and round(leg[-1]) == -5
+    leg = _wrap(_deg(solved("03_tu154_landing_gear.yaml"), "a8"))
+    assert abs(leg[0] + 90) < 3 and round(leg[-1]) == -9
+    leg = _wrap(_deg(solved("04_an10_landing_gear_b.yaml"), "a8"))
+    assert abs(leg[0] + 90) < 3 and abs(leg[-1] + 180) < 12
+    leg = _wrap(_deg(solved("07_landing_gear_jack_on_brace.yaml"), "a9"))
+    assert abs(leg[0] + 90) < 3 and abs(leg[-1] + 180) < 12
+    door = solved("08_nose_gear_door.yaml")
+    leg, panel = _wrap(_deg(door, "a11")), _wrap(_deg(door, "a9"))
+    assert abs(leg[-1] + 180) < 12 and abs(panel[0] + 90) < 3 and abs(panel[-1] + 180) < 12
+    assert abs(_wrap(panel - leg)).max() < 3  # nearly a parallelogram: turns with the leg
+    mast = _deg(solved("10_cable_mast.yaml"), "a8") % 360
+    assert abs(mast[0] - 90) < 0.1 and round(mast[-1] - 90) == 25
+    lever = _deg(solved("10_cable_mast.yaml"), "a1")
+    assert round(np.ptp(lever) / np.ptp(mast)) == 3  # "about three times as far"
+    boom = _wrap(_deg(solved("11_erector.yaml"), "a4"))
+    assert abs(boom[0]) < 0.2 and abs(boom[-1] - 90) < 0.2
+    (wx, wy), = _group_points("06_landing_gear_four_bar.yaml", "W")
+    assert wy[-1] - wy[0] > 1.0  # m: "rises by more than a metre"
+    (ox, oy), (kx, ky) = _group_points("09_lunar_lander_gear.yaml", "O", "K")
+    off_body = 90 + np.degrees(np.arctan2(ky - oy, kx - ox))  # from the body's -Y
+    assert round(off_body[0]) == 2 and round(off_body[-1]) == 35
