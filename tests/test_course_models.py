@@ -240,7 +240,7 @@ def test_course_headers_state_what_the_models_do():
     assert round(np.ptp(lever) / np.ptp(mast)) == 3  # "about three times as far"
     boom = _wrap(_deg(solved("11_erector.yaml"), "a4"))
     assert abs(boom[0]) < 0.2 and abs(boom[-1] - 90) < 0.2
-    (wx, wy), = _group_points("06_landing_gear_four_bar.yaml", "W")
+    (_, wy), = _group_points("06_landing_gear_four_bar.yaml", "W")
     assert wy[-1] - wy[0] > 1.0  # m: "rises by more than a metre"
     (ox, oy), (kx, ky) = _group_points("09_lunar_lander_gear.yaml", "O", "K")
     off_body = 90 + np.degrees(np.arctan2(ky - oy, kx - ox))  # from the body's -Y
