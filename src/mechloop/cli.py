@@ -1026,7 +1026,7 @@ def examples_command(
     """List the bundled examples: the course-project models (task number, English and
     Russian titles), then every other example with its title.
 
-    Copy one to start from with `mechloop new`. Example:
+    Copy one to start from with mechloop new. Example:
 
     ```
     mechloop examples --course
@@ -1061,7 +1061,7 @@ def new_command(
                                                   "or file to write", show_default=False)
                       ] = None,
 ) -> None:
-    """Copy a bundled example (`mechloop examples` lists them) to start a model from; an
+    """Copy a bundled example (mechloop examples lists them) to start a model from; an
     existing file is never overwritten.
 
     Example:
