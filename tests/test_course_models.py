@@ -61,12 +61,13 @@ def test_course_files_are_numbered_and_titled_in_both_languages():
 @pytest.mark.parametrize("path", COURSE, ids=_id)
 def test_course_model_never_breaks_over_its_working_range(path: Path):
     model = mechloop.load_model(path)
-    started = time.perf_counter()
-    results = mechloop.solve(model)
-    elapsed = time.perf_counter() - started
+    results = mechloop.solve(model)  # the first solve of a process also compiles kernels
     assert not results.broken.any(), [b.describe() for b in results.breaks]
     assert results.breaks_between == (), [g.describe() for g in results.breaks_between]
-    assert elapsed < 5.0, f"solve took {elapsed:.1f} s (keep a course model under 2 s idle)"
+    started = time.perf_counter()
+    mechloop.solve(model)
+    elapsed = time.perf_counter() - started
+    assert elapsed < 2.0, f"solve took {elapsed:.1f} s (keep a course model fast)"
     for name, values in results.values.items():
         assert np.all(np.isfinite(values)), name
 
