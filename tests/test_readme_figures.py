@@ -33,6 +33,7 @@ import mechloop
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
+EXAMPLE_FILES = sorted(p for p in EXAMPLES.rglob("*") if p.is_file())  # examples/course too
 SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = re.compile(r"(?<![\w.\-/])(\d+(?:,\d{3})*(?:\.\d+)?(?:e[-+]?\d+|·10[⁻⁰-⁹¹²³]+)?)"
                     r"(?![a-zA-Z_\d])")
@@ -73,14 +74,9 @@ def _header(path: Path) -> str:
     return "\n".join(lines)
 
 
-def _example_files() -> list[Path]:
-    """Every file of examples/, its subfolders' too (examples/cams/)."""
-    return sorted(p for p in EXAMPLES.rglob("*") if p.is_file())
-
-
 def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
     out = []
-    for path in _example_files():
+    for path in EXAMPLE_FILES:
         header = _header(path)
         for block in re.split(r"\n\s*\n", header):
             if block.strip():
@@ -93,7 +89,7 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 def _pool() -> set[float]:
     """Numbers of the examples' data (outside comments) and of the README's code blocks."""
-    texts = [line.split("#")[0] for p in _example_files()
+    texts = [line.split("#")[0] for p in EXAMPLE_FILES
              for line in p.read_text(encoding="utf-8").splitlines()]
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
@@ -510,6 +506,13 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
     ("four_bar_break_ahead.yaml", r"390 mm", "coupler + rocker, 140 + 250 mm"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
+    ("README.md", r"^\| (1[3-9]|20) \| ", "a course task's number (seed 000 sec. 3)"),
+    # the course models of examples/course/: the drawing's points (the frame vectors are
+    # computed from them), the time the argument's law takes, assumed air loads
+    (None, r"\b[A-Z]\d? \(-?\d+, ?-?\d+\)", "a point of a course model's drawing, mm"),
+    (None, r"in \d+ s \(3-4-5 polynomial law", "the time of the argument's law (its end "
+     "position over the model's time table)"),
+    (None, r"\d+(\.\d+)? kPa on \d+ m × 0\.8 m", "an assumed wind pressure on an area"),
 ]
 
 

@@ -1211,6 +1211,64 @@ def indicator(
 
         save_figure(plot_indicators(items, title=m.name), plot_file)
         out.print(f"wrote {plot_file}")
+@app.command(name="examples", cls=_Command)
+@user_errors
+def examples_command(
+    course: Annotated[bool, typer.Option("--course", help="the course-project models "
+                                         "only")] = False,
+) -> None:
+    """List the bundled examples: the course-project models (task number, English and
+    Russian titles), then every other example with its title.
+
+    Copy one to start from with mechloop new. Example:
+
+    ```
+    mechloop examples --course
+    ```
+    """
+    from mechloop.bundled import examples
+
+    found = examples(course_only=course)
+    course_rows = [e for e in found if e.course]
+    if course_rows:
+        rows = _table("Course project (seed 000 sec. 3)", ["No.", "file", "title", "название"])
+        for e in course_rows:
+            rows.add_row(str(e.number), e.path.name, e.title, e.title_ru)
+        out.print(rows)
+    others = [e for e in found if not e.course]
+    if others:
+        rows = _table("Examples", ["file", "title"])
+        for e in others:
+            rows.add_row(e.path.name, e.title)
+        out.print(rows)
+    out.print("start from one: mechloop new NAME [DIR] (a task number, a file name or a "
+              "unique prefix)")
+
+
+@app.command(name="new", cls=_Command)
+@user_errors
+def new_command(
+    name: Annotated[str, typer.Argument(help="a course task number (1..20), an example's "
+                                        "file name or a unique prefix of it",
+                                        show_default=False)],
+    target: Annotated[Path | None, typer.Argument(help="folder (default: the current one) "
+                                                  "or file to write", show_default=False)
+                      ] = None,
+) -> None:
+    """Copy a bundled example (mechloop examples lists them) to start a model from; an
+    existing file is never overwritten.
+
+    Example:
+
+    ```
+    mechloop new 1 my_models/
+    ```
+    """
+    from mechloop.bundled import new_model
+
+    example, path = new_model(name, target)
+    title = example.title + (f" — {example.title_ru}" if example.title_ru else "")
+    out.print(f"wrote {path} ({title})")
 
 
 if __name__ == "__main__":  # pragma: no cover
