@@ -121,10 +121,9 @@ class PlanetaryTrain:
 
     @property
     def teeth(self) -> dict[str, int]:
-        out = {"a": self.z_a, "g": self.z_g, "b": self.z_b}
         if self.scheme.double:
-            out["f"] = self.z_f
-        return out
+            return {"a": self.z_a, "g": self.z_g, "f": self.z_f, "b": self.z_b}
+        return {"a": self.z_a, "g": self.z_g, "b": self.z_b}
 
     @property
     def willis(self) -> float:
