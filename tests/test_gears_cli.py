@@ -58,7 +58,7 @@ def test_pair_from_options_is_the_pair_of_the_file():
 
 
 def test_centre_distance_alone_gives_balanced_shifts():
-    doc, lines = read_gear_document(GEARS / "gear_pair.yaml")
+    doc, _ = read_gear_document(GEARS / "gear_pair.yaml")
     spec = doc.gear_pair.model_copy(update={"shifts": None, "centre_distance": 56.5})
     pair = pair_of(spec)
     from mechloop.gears.sliding import extreme_sliding

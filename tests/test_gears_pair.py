@@ -251,3 +251,13 @@ def test_the_checks_flag_undercut_pointed_teeth_and_interference():
     assert pointed.s_a[0] < 0.25 * 2.0
     assert ("pointed tooth", 1) in {(c.name, c.gear) for c in pointed.checks() if not c.ok}
     assert all(c.ok for c in gear_pair(3.0, (12, 24), ALPHA, x=(0.6, 0.36)).checks())
+
+
+def test_the_docstring_examples_of_the_gear_modules_run():
+    import doctest
+
+    from mechloop.gears import involute, pair, planetary
+
+    attempted = sum(doctest.testmod(module, raise_on_error=True).attempted
+                    for module in (involute, pair, planetary))
+    assert attempted >= 4

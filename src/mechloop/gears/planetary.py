@@ -178,9 +178,9 @@ def planetary_train(scheme: str | Scheme, teeth: dict[str, int], k: int, m_n: fl
     """A :class:`PlanetaryTrain` from a scheme name and ``teeth = {a, g, b}`` (simple) or
     ``{a, g, f, b}`` (two-row schemes).
 
-    >>> t = planetary_train("simple", {"a": 20, "g": 30, "b": 80}, 3)
-    >>> t.ratio, t.coaxial, t.assembles
-    (5.0, True, True)
+    >>> t = planetary_train("simple", {"a": 20, "g": 30, "b": 80}, 4)
+    >>> t.ratio, t.coaxial, t.assembles, t.assembly
+    (5.0, True, True, 25.0)
     """
     s = scheme if isinstance(scheme, Scheme) else scheme_of(scheme)
     need = ("a", "g", "f", "b") if s.double else ("a", "g", "b")
