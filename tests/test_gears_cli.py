@@ -104,3 +104,21 @@ def test_a_wrong_gear_file_is_told_by_line_and_key(tmp_path, text, where, words)
     assert result.exit_code == 2
     assert f"{path}{where}" in result.output and words in result.output
     assert "Traceback" not in result.output
+
+
+def test_thickness_on_a_circle_is_measured_on_the_generated_tooth():
+    from mechloop.gears.generation import generate_tooth
+
+    result = run("gear", "pair", str(GEARS / "gear_pair.yaml"), "--at-diameter", "40",
+                 "--at-diameter", "70")
+    assert result.exit_code == 0, result.output
+    rows = {cells[0]: cells for line in result.output.splitlines()
+            if len(cells := [c.strip() for c in line.split("│")[1:-1]]) == 6}
+    doc, _ = read_gear_document(GEARS / "gear_pair.yaml")
+    pair = pair_of(doc.gear_pair)
+    for name, i, d_y in (("pinion", 0, 40.0), ("wheel", 1, 70.0)):
+        assert float(rows[name][1]) == d_y
+        tooth = generate_tooth(pair.m_n, pair.z[i], pair.alpha_n, pair.x[i],
+                               d_a=float(pair.d_a[i]), radii=2000)
+        assert float(rows[name][3]) == pytest.approx(float(tooth.thickness(d_y / 2)),
+                                                     abs=1e-4)

@@ -1048,6 +1048,9 @@ def gear_pair_command(
                        "action (.png, .svg, .pdf); default: none")] = None,
     output: Annotated[Path | None, typer.Option("-o", "--output", help="the table (.csv, "
                       ".json, .parquet, .xlsx); default: print only")] = None,
+    at_diameter: Annotated[list[float] | None, typer.Option("--at-diameter", help="also the "
+                           "tooth thickness and chord on this circle, mm (repeat for more "
+                           "circles); default: none")] = None,
     force: Force = False,
 ) -> None:
     """Geometry of an external involute spur gear pair: every diameter, tooth thickness,
@@ -1065,13 +1068,15 @@ def gear_pair_command(
 
     run_pair(model, {"module": module, "teeth": teeth, "shifts": shifts,
                      "centre_distance": centre_distance, "pressure_angle": pressure_angle},
-             out=out, plot=plot, sliding=sliding, table=output, force=force)
+             out=out, plot=plot, sliding=sliding, table=output, force=force,
+             diameters=at_diameter)
 
 
 @gear_app.command("planetary", cls=_Command)
 @user_errors
 def gear_planetary_command(
-    model: GearFile = None,
+    model: Annotated[Path, typer.Argument(help="gear file (.yaml or .json) with a "
+                                          "planetary: section", show_default=False)],
     plot: Annotated[Path | None, typer.Option(help="the velocity plan (Kutzbach diagram; "
                     ".png, .svg, .pdf); default: none")] = None,
     vector_model: Annotated[Path | None, typer.Option("--model", help="write the train as a "

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 import yaml
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from mechloop.errors import HintedError, ModelError, Problem
@@ -20,7 +21,7 @@ from mechloop.gears.document import (
     section,
     train_of,
 )
-from mechloop.gears.tables import choice_table, pair_table, train_table
+from mechloop.gears.tables import choice_table, pair_table, thickness_table, train_table
 from mechloop.model.document import located_error, validate_data
 
 TABLE_SUFFIXES = (".csv", ".json", ".parquet", ".xlsx")
@@ -52,11 +53,11 @@ def _document(path: Path | None, options: dict[str, Any], key: str
 def _print_frame(console: Console, frame, title: str) -> None:
     table = Table(title=title)
     for column in frame.columns:
-        table.add_column(str(column), justify="left" if frame[column].dtype == object
+        table.add_column(escape(str(column)), justify="left" if frame[column].dtype == object
                          else "right")
     for row in frame.itertuples(index=False):
         table.add_row(*("" if isinstance(v, float) and math.isnan(v) else
-                        f"{v:.6g}" if isinstance(v, float | np.floating) else str(v)
+                        f"{v:.6g}" if isinstance(v, float | np.floating) else escape(str(v))
                         for v in row))
     console.print(table)
 
@@ -71,7 +72,8 @@ def _check_outputs(*pairs: tuple[Path | None, tuple[str, ...]], inputs: list[Pat
 
 
 def run_pair(path: Path | None, options: dict[str, Any], *, out: Console, plot: Path | None,
-             sliding: Path | None, table: Path | None, force: bool) -> None:
+             sliding: Path | None, table: Path | None, force: bool,
+             diameters: list[float] | None = None) -> None:
     """Compute, print and write what ``mechloop gear pair`` asks for."""
     _check_outputs((plot, FIGURES), (sliding, FIGURES), (table, TABLE_SUFFIXES),
                    inputs=[path] if path else [], force=force)
@@ -80,6 +82,9 @@ def run_pair(path: Path | None, options: dict[str, Any], *, out: Console, plot: 
     pair = pair_of(spec, file=file, lines=lines)
     frame = pair_table(pair)
     _print_frame(out, frame, spec.name or "External involute spur gear pair")
+    if diameters:
+        _print_frame(out, thickness_table(pair, diameters), "Tooth thickness on the circles "
+                     "asked for (where the circle cuts the gear's involute)")
     for check in pair.checks():
         mark = "[green]ok[/]" if check.ok else "[bold red]FAILS[/]"
         out.print(f"{mark} {check.name}: {check.text}", markup=True)

@@ -61,6 +61,36 @@ def pair_table(pair: GearPair) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=["quantity", "symbol", "pinion", "wheel", "unit"])
 
 
+def thickness_table(pair: GearPair, diameters: list[float]) -> pd.DataFrame:
+    """Tooth thickness on the circles ``diameters`` (mm) of each gear whose involute they
+    cut (``d_b ≤ d_y ≤ d_a``): pressure angle there, arc thickness ``s_y`` and the chord
+    with its height from the tip (``s̄_y``, ``h̄_y``)."""
+    from mechloop.errors import HintedError
+    from mechloop.gears.involute import (
+        chordal_thickness,
+        pressure_angle_on_circle,
+        thickness_on_circle,
+    )
+
+    rows = []
+    for d_y in diameters:
+        for i, name in enumerate(("pinion", "wheel")):
+            if pair.d_b[i] <= d_y <= pair.d_a[i]:
+                s_y = float(thickness_on_circle(pair.s[i], pair.d[i], pair.alpha_n, d_y))
+                chord, height = chordal_thickness(s_y, d_y, pair.d_a[i])
+                alpha_y = float(pressure_angle_on_circle(pair.d_b[i], d_y))
+                rows.append((name, d_y, np.degrees(alpha_y), s_y, float(chord),
+                             float(height)))
+    if not rows:
+        raise HintedError(f"no circle of {', '.join(f'{d:g}' for d in diameters)} mm cuts "
+                          "an involute of the pair",
+                          f"take diameters between d_b and d_a: pinion "
+                          f"{pair.d_b[0]:.4g}…{pair.d_a[0]:.4g}, wheel "
+                          f"{pair.d_b[1]:.4g}…{pair.d_a[1]:.4g} mm")
+    return pd.DataFrame(rows, columns=["gear", "d_y [mm]", "α_y [deg]", "s_y [mm]",
+                                       "chord s̄_y [mm]", "height h̄_y [mm]"])
+
+
 def train_table(train: PlanetaryTrain, speed_rpm: float) -> pd.DataFrame:
     """The analysis of one train: ratio, conditions and the speeds of its members."""
     speeds = train.speeds(speed_rpm * np.pi / 30.0)
