@@ -253,10 +253,15 @@ class GearPair:
                                 f"{self.d_Ff[i]:.5g}")
                              + ("" if ok else " — interference (the tip digs into the "
                                               "fillet)")))
-        ok = self.eps_alpha >= 1.0
+        g_a, g_e = self.active_line
+        beyond_n = g_a < 0 or g_e > self.line_of_action
+        ok = self.eps_alpha >= 1.0 and not beyond_n
         out.append(Check("contact ratio", None, self.eps_alpha, 1.0, bool(ok),
-                         f"ε_α = {self.eps_alpha:.4g} " + ("≥" if ok else "<") + " 1"
-                         + ("" if ok else " — the mesh is not continuous")))
+                         f"ε_α = {self.eps_alpha:.4g} " + ("≥" if self.eps_alpha >= 1 else "<")
+                         + " 1" + (" — the mesh is not continuous" if self.eps_alpha < 1
+                                   else "")
+                         + (" — the path of contact runs beyond N1N2, so the involutes "
+                            "do not reach it (interference)" if beyond_n else "")))
         return out
 
 
@@ -282,8 +287,15 @@ def gear_pair(m_n: float, z: tuple[int, int], alpha_n: float, *,
                               "the pinion's shift x1", "e.g. shifts: [0.3, 0.2]")
         x_sum, _ = shift_sum_from_centre_distance(m_n, *z, a, alpha_n)
         x = (float(x1), float(x_sum) - float(x1))
-    return GearPair(float(m_n), (int(z[0]), int(z[1])), float(alpha_n),
+    pair = GearPair(float(m_n), (int(z[0]), int(z[1])), float(alpha_n),
                     (float(x[0]), float(x[1])), ha, c, rho, s_a_min)
+    inside = pair.d_a <= pair.d_b
+    if inside.any():
+        raise HintedError(f"the {'pinion' if inside[0] else 'wheel'}'s tip circle falls "
+                          f"inside its base circle (tips shortened by Δy·m = "
+                          f"{pair.dy * pair.m_n:.4g}): no involute is left to mesh",
+                          "take a smaller centre distance or smaller shifts")
+    return pair
 
 
 __all__ = ["GearPair", "gear_pair", "inv"]
