@@ -244,15 +244,20 @@ class GearPair:
             reach = self.d_Nf[i]
             ok = bool(not beyond[i] and reach >= self.d_Ff[i] - 1e-9 * self.m_n)
             mate = ("wheel", "pinion")[i]
+            if ok:
+                why = ""
+            elif self.undercut[i]:
+                why = (" — interference: the tip meets the undercut, not the involute (no "
+                       "conjugate contact there; the real path of contact is shorter)")
+            else:
+                why = " — interference: the tip digs into the fillet (the teeth overlap)"
             out.append(Check("interference", i + 1, float(reach), float(self.d_Ff[i]), ok,
                              f"{name}: the {mate}'s tip meets the flank down to "
                              f"d_Nf = {reach:.5g}"
                              + (" beyond the base circle's tangent point N"
                                 if beyond[i] else
                                 (" ≥" if ok else " <") + f" the form diameter d_Ff = "
-                                f"{self.d_Ff[i]:.5g}")
-                             + ("" if ok else " — interference (the tip digs into the "
-                                              "fillet)")))
+                                f"{self.d_Ff[i]:.5g}") + why))
         g_a, g_e = self.active_line
         beyond_n = g_a < 0 or g_e > self.line_of_action
         ok = self.eps_alpha >= 1.0 and not beyond_n
