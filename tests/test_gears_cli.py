@@ -122,3 +122,28 @@ def test_thickness_on_a_circle_is_measured_on_the_generated_tooth():
                                d_a=float(pair.d_a[i]), radii=2000)
         assert float(rows[name][3]) == pytest.approx(float(tooth.thickness(d_y / 2)),
                                                      abs=1e-4)
+
+
+def test_no_undercut_shifts_are_the_least_that_keep_the_generated_involute_whole(tmp_path):
+    from mechloop.gears.generation import generate_tooth
+
+    path = tmp_path / "pair.yaml"
+    path.write_text("gear_pair:\n  module: 2\n  teeth: [11, 40]\n  shifts: no_undercut\n",
+                    encoding="utf-8")
+    doc, lines = read_gear_document(path)
+    pair = pair_of(doc.gear_pair, file=str(path), lines=lines)
+    assert pair.x[1] == 0.0 and pair.x[0] == pytest.approx(float(pair.x_min[0]))
+    for x1, cut in ((pair.x[0], False), (pair.x[0] - 0.05, True)):
+        tooth = generate_tooth(2.0, 11, pair.alpha_n, x1)
+        start = np.hypot(*tooth.flank[0])
+        assert (tooth.cut_top > start + 1e-4) == cut
+
+
+def test_pinion_shift_with_a_centre_distance(tmp_path):
+    path = tmp_path / "pair.yaml"
+    path.write_text("gear_pair:\n  module: 3\n  teeth: [12, 24]\n  centre_distance: 56.5\n"
+                    "  pinion_shift: 0.6\n", encoding="utf-8")
+    doc, lines = read_gear_document(path)
+    pair = pair_of(doc.gear_pair, file=str(path), lines=lines)
+    assert pair.x[0] == 0.6 and pair.a == pytest.approx(56.5, abs=1e-9)
+    assert pair.x[1] == pytest.approx(0.36, abs=2e-4)  # the KHK example's, a 56.4999 there

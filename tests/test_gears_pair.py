@@ -123,7 +123,7 @@ def test_tooth_thickness_matches_the_generated_tooth(z, x):
     pair = gear_pair(m, (z, 40), ALPHA, x=(x, 0.0))
     tooth = generate_tooth(m, z, ALPHA, x, d_a=float(pair.d_a[0]), radii=2000)
     # above the fillet (of an undercut tooth, above the part it cuts away)
-    low = max(pair.d_Ff[0] / 2, pair.d_b[0] / 2, np.hypot(*tooth.fillet.T).max()) + 0.02 * m
+    low = max(pair.d_Ff[0] / 2, pair.d_b[0] / 2, tooth.cut_top) + 0.02 * m
     radii = np.linspace(low, pair.d_a[0] / 2, 9)
     measured = tooth.thickness(radii)
     formula = thickness_on_circle(pair.s[0], pair.d[0], ALPHA, 2 * radii)
@@ -134,7 +134,7 @@ def test_tooth_thickness_matches_the_generated_tooth(z, x):
     assert abs(start - pair.d_Ff[0] / 2) < (1e-4 if pair.undercut[0] else 1e-9) * m
     # undercut (x < x_min) exactly when the generated fillet reaches above the involute's
     # start
-    cut_in = np.hypot(*tooth.fillet.T).max() > start + 1e-3 * m
+    cut_in = tooth.cut_top > start + 1e-3 * m
     assert pair.undercut[0] == (x < pair.x_min[0]) == cut_in
 
 

@@ -34,7 +34,7 @@ class ToothProfile:
     angle at each (rad; the tooth's thickness there is ``2 ρ ψ``); ``root_half`` : the
     half angle of the tooth space along the root circle (rad); ``flank`` : the generated
     involute points in the gear frame, shape (F, 2), ordered by radius (for measurements);
-    ``z`` : the number of teeth."""
+    ``z`` : the number of teeth; ``fillet`` the generated fillet points (F', 2)."""
 
     rho: np.ndarray
     psi: np.ndarray
@@ -42,6 +42,7 @@ class ToothProfile:
     flank: np.ndarray
     fillet: np.ndarray
     z: int
+    cut_top: float  #: the highest radius the fillet and (undercut) the flank's end reach
 
     def thickness(self, rho: np.ndarray | float) -> np.ndarray:
         """Arc thickness ``2 ρ ψ(ρ)`` at radii ``rho`` (linear interpolation of ψ)."""
@@ -132,11 +133,13 @@ def generate_tooth(m_n: float, z: int, alpha: float, x: float, *, ha: float = 1.
     phi = np.linspace(phi_of(h_end), phi_of(h_top), samples)
     h = cos_a * ((quarter - r * phi) * sin_a + x * m * cos_a)
     world = np.stack([quarter - h * tan_a - r * phi, datum - h], axis=-1)
-    # keep the contact on the P side of N (beyond N the flank only sweeps cut material)
-    along = (world[:, 0] * -sin_a + (world[:, 1] - r) * -cos_a)  # from P towards the gear
+    # contact on the P side of N traces the involute; beyond N (an undercut gear) the
+    # flank's end traces the involute's mirror branch, which cuts into the tooth
+    along = world[:, 0] * cos_a - (world[:, 1] - r) * sin_a  # from P along P -> N
     keep = along <= r * sin_a
     flank_polar = _space_angle(world[keep], phi[keep])
     flank_xy = _rotate(world[keep], -phi[keep])
+    mirror_polar = _space_angle(world[~keep], phi[~keep])
 
     # tip round: centre C(φ) = (x_c − rφ, y_c); the contact point faces away from P
     span = 4.0 * (h_a0 + m) / r
@@ -153,7 +156,7 @@ def generate_tooth(m_n: float, z: int, alpha: float, x: float, *, ha: float = 1.
     t = np.linspace(0.0, 1.0, radii)
     grid = r_f + (r_a - r_f) * t ** 2
     grid[0] = r_f
-    eta = _max_on_grid([flank_polar, fillet_polar], grid)
+    eta = _max_on_grid([flank_polar, fillet_polar, mirror_polar], grid)
     eta[0] = root_half if not np.isfinite(eta[0]) else max(eta[0], root_half)
     # the root point itself: the fillet starts on the root circle at η = x_c/r
     eta = np.where(np.isfinite(eta), eta, np.nan)
@@ -162,4 +165,6 @@ def generate_tooth(m_n: float, z: int, alpha: float, x: float, *, ha: float = 1.
         eta = np.interp(grid, grid[good], eta[good])
     psi = np.clip(np.pi / z - eta, 0.0, None)
     order = np.argsort(flank_polar[:, 0])
-    return ToothProfile(grid, psi, root_half, flank_xy[order], fillet_xy, int(z))
+    cut_top = max(float(fillet_polar[:, 0].max(initial=r_f)),
+                  float(mirror_polar[:, 0].max(initial=r_f)))
+    return ToothProfile(grid, psi, root_half, flank_xy[order], fillet_xy, int(z), cut_top)
