@@ -146,3 +146,10 @@ def test_a_two_row_choice_meets_every_condition():
         assert abs(train.ratio - 12) <= 0.01 * 12 + 1e-12
         assert train.z_b - train.z_f >= 8
     assert (choice.z_a[0], choice.z_g[0], choice.z_f[0], choice.z_b[0]) == (18, 54, 27, 99)
+
+
+def test_a_train_whose_carrier_cannot_turn_is_refused():
+    from mechloop.errors import HintedError
+
+    with pytest.raises(HintedError, match="i_ab"):
+        planetary_train("two_rings", {"a": 80, "g": 30, "f": 30, "b": 80}, 2)

@@ -14,15 +14,17 @@ circle), :mod:`.centre_distance` (shifts <-> centre distance), :mod:`.pair` (the
 geometry), :mod:`.checks`, :mod:`.sliding`, :mod:`.generation` (rack-generated profile),
 :mod:`.drawing` (matplotlib figures), :mod:`.planetary` (schemes and Willis' formula),
 :mod:`.tooth_search`, :mod:`.velocity_plan`, :mod:`.vector_model`, :mod:`.document` (the YAML
-form).  It may import :mod:`mechloop.errors`, :mod:`mechloop.model` (to read documents and to
-build vector models) and :mod:`mechloop.output`; nothing in the rest of mechloop imports
-it except the command line.  Lengths are in the unit of the module (mm in files), angles in
-radians in the functions and degrees only in files and views.
+form), :mod:`.tables` (what is printed and written) and :mod:`.commands` (what ``mechloop
+gear pair|planetary`` do).  It may import :mod:`mechloop.errors`, :mod:`mechloop.model` (to
+read documents and to build vector models), :mod:`mechloop.output` and
+:mod:`mechloop.views.figure`; nothing in the rest of mechloop imports it except the command
+line.  Lengths are in the unit of the module (mm in files), angles in radians in the
+functions and degrees only in files and views.
 """
 
 from mechloop.gears.centre_distance import (
-           centre_distance_from_shifts,
-           shift_sum_from_centre_distance,
+    centre_distance_from_shifts,
+    shift_sum_from_centre_distance,
 )
 from mechloop.gears.involute import inv, inv_inverse, thickness_on_circle
 from mechloop.gears.pair import GearPair, gear_pair

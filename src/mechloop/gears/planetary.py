@@ -194,5 +194,10 @@ def planetary_train(scheme: str | Scheme, teeth: dict[str, int], k: int, m_n: fl
     if k < 1 or math.floor(k) != k:
         raise HintedError(f"{k} planets: write a whole number of planets, 1 or more",
                           "e.g. planets: 3")
-    return PlanetaryTrain(s, int(teeth["a"]), int(teeth["g"]), int(z_f), int(teeth["b"]),
-                          int(k), float(m_n), float(ha))
+    train = PlanetaryTrain(s, int(teeth["a"]), int(teeth["g"]), int(z_f), int(teeth["b"]),
+                           int(k), float(m_n), float(ha))
+    if train.willis == 1.0:
+        raise HintedError("with these teeth i_ab^h = 1: a and the carrier would turn "
+                          "together with b fixed only if nothing turned (i_ah = 0)",
+                          "change a tooth number of one row")
+    return train
