@@ -247,6 +247,8 @@ R = "README.md"
 SCRIPTS = "tests/test_docs_and_cli.py::test_example_scripts_run"
 SLIDER = "tests/test_classical_start.py::test_slider_crank_example_has_its_stroke_and_time_ratio"
 BEATS = "tests/test_benchmark_problems.py::test_the_example_beats_every_published_design"
+KHK = "tests/test_gears_pair.py::test_the_khk_worked_example_of_a_profile_shifted_pair"
+TWO_ROW = "tests/test_gears_planetary.py::test_a_two_row_choice_meets_every_condition"
 FIGURES: list[tuple[str, str, tuple]] = [
     # energy example (the compressor)
     (R, r"efficiency \((?P<fig>28) %\)",
@@ -434,6 +436,14 @@ FIGURES: list[tuple[str, str, tuple]] = [
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
     ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
+    # gears: the KHK worked example and the two-row choice
+    (R, r"`a = (?P<fig>56\.4999)`", ("test", KHK)),
+    (R, r"`α_w = (?P<fig>26\.0886)°`", ("test", KHK)),
+    (R, r"`ε_α = (?P<fig>1\.202)`", ("test", KHK)),
+    (R, r"`z = (?P<fig>18)/54/27/99`", ("test", TWO_ROW)),
+    (R, r"`z = 18/(?P<fig>54)/27/99`", ("test", TWO_ROW)),
+    (R, r"`z = 18/54/(?P<fig>27)/99`", ("test", TWO_ROW)),
+    (R, r"`z = 18/54/27/(?P<fig>99)`", ("test", TWO_ROW)),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row
@@ -444,6 +454,9 @@ FIGURES += [(R, f"`{law}` \\|" + _CELL * column + r" (?P<fig>[\d.]+) \|",
 
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
+    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
+           r"4\.3", "a cited standard or reference"),
+    ("planetary_choice.yaml", r"within 1 %", "the example's search.tolerance (0.01)"),
     (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
            r"|part \d|table [\d.]+))*", "a section of the course's seed documents"),
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),

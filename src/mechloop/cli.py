@@ -1271,5 +1271,90 @@ def new_command(
     out.print(f"wrote {path} ({title})")
 
 
+
+gear_app = typer.Typer(help="Involute gear pairs and planetary trains (course project sheet "
+                       "3): geometry, checks, drawings, the choice of tooth numbers.",
+                       no_args_is_help=True, cls=_Group, rich_markup_mode="markdown")
+app.add_typer(gear_app, name="gear")
+GearFile = Annotated[Path | None, typer.Argument(help="gear file (.yaml or .json) with a "
+                                                 "gear_pair: or planetary: section; or give "
+                                                 "the options instead", show_default=False)]
+
+
+@gear_app.command("pair", cls=_Command)
+@user_errors
+def gear_pair_command(
+    model: GearFile = None,
+    module: Annotated[float | None, typer.Option("-m", "--module", help="module m_n, mm "
+                      "(without a file)")] = None,
+    teeth: Annotated[tuple[int, int] | None, typer.Option("-z", "--teeth", help="z1 z2 "
+                     "(without a file)")] = None,
+    shifts: Annotated[tuple[float, float] | None, typer.Option("-x", "--shifts", help="x1 x2 "
+                      "(without a file; default 0 0)")] = None,
+    centre_distance: Annotated[float | None, typer.Option("-a", "--centre-distance",
+                               help="centre distance a, mm (without a file; the shifts "
+                               "are then balanced for equal specific sliding)")] = None,
+    pressure_angle: Annotated[float | None, typer.Option("--pressure-angle", help="α_n, "
+                              "degrees (without a file; default 20)")] = None,
+    plot: Annotated[Path | None, typer.Option(help="the drawn meshing (.png, .svg, .pdf); "
+                    "default: none")] = None,
+    sliding: Annotated[Path | None, typer.Option(help="specific sliding over the line of "
+                       "action (.png, .svg, .pdf); default: none")] = None,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="the table (.csv, "
+                      ".json, .parquet, .xlsx); default: print only")] = None,
+    at_diameter: Annotated[list[float] | None, typer.Option("--at-diameter", help="also the "
+                           "tooth thickness and chord on this circle, mm (repeat for more "
+                           "circles); default: none")] = None,
+    force: Force = False,
+) -> None:
+    """Geometry of an external involute spur gear pair: every diameter, tooth thickness,
+    centre distance and working pressure angle, contact ratio, and the undercut,
+    pointed-tooth and interference checks.
+
+    Example:
+
+    ```
+    mechloop gear pair examples/gears/gear_pair.yaml --plot mesh.png
+    mechloop gear pair -m 3 -z 12 24 -x 0.6 0.36
+    ```
+    """
+    from mechloop.gears.commands import run_pair
+
+    run_pair(model, {"module": module, "teeth": teeth, "shifts": shifts,
+                     "centre_distance": centre_distance, "pressure_angle": pressure_angle},
+             out=out, plot=plot, sliding=sliding, table=output, force=force,
+             diameters=at_diameter)
+
+
+@gear_app.command("planetary", cls=_Command)
+@user_errors
+def gear_planetary_command(
+    model: Annotated[Path, typer.Argument(help="gear file (.yaml or .json) with a "
+                                          "planetary: section", show_default=False)],
+    plot: Annotated[Path | None, typer.Option(help="the velocity plan (Kutzbach diagram; "
+                    ".png, .svg, .pdf); default: none")] = None,
+    vector_model: Annotated[Path | None, typer.Option("--model", help="write the train as a "
+                            "vector model (.yaml, .json); default: none")] = None,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="the designs found, or "
+                      "the analysis (.csv, .json, .parquet, .xlsx); default: print only")
+                      ] = None,
+    force: Force = False,
+) -> None:
+    """A planetary train: the ratio by Willis' formula and the coaxiality, assembly and
+    neighbour conditions of given tooth numbers; or the choice of tooth numbers for a
+    target ratio (every combination tried, best first).
+
+    Example:
+
+    ```
+    mechloop gear planetary examples/gears/planetary_choice.yaml --plot plan.png
+    ```
+    """
+    from mechloop.gears.commands import run_planetary
+
+    run_planetary(model, {}, out=out, plot=plot, model=vector_model, table=output,
+                  force=force)
+
+
 if __name__ == "__main__":  # pragma: no cover
     app()
