@@ -4,14 +4,16 @@ over K generations, a time budget), a progress callback and Ctrl-C returning the
 design found so far.
 
 Every strategy hands whole generations to :meth:`SynthesisProblem.evaluate` (one
-vectorized call per generation, designs × positions).  The local searches — the polish
-of the best design and the runs of the multi-start — evaluate one design at a time and are
-the only per-design loop; the multi-start runs can be spread over Dask workers.
+vectorized call per generation, designs × positions).  The Nelder–Mead polish of the best
+design evaluates one design at a time; the local searches of the multi-start run side by
+side, each stage of all of them one vectorized call (:mod:`mechloop.synthesis.simplex`),
+and can be spread over Dask workers.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -624,27 +626,30 @@ class _OutOfTime(Exception):
     """A local search reached the run's deadline."""
 
 
-def _local_run(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
-               deadline: float | None = None) -> tuple[Array, float, int]:
-    """One local search of the multi-start (runs on a worker); it stops with the best
-    design so far at ``deadline`` (``time.time()``, s), the search's time budget."""
-    count = [0]
-    best: list = [problem.variables.scale(np.clip(x0_unit, 0.0, 1.0)), math.inf]
+def _local_runs(problem: SynthesisProblem, x0_unit: Array, max_evals: int,
+                deadline: float | None = None) -> list[tuple[Array, float, int]]:
+    """The local searches of the multi-start from the unit starts ``x0_unit`` ``(S, V)``
+    (on one worker): SciPy's Nelder–Mead from each start, run side by side
+    (:func:`mechloop.synthesis.simplex.nelder_mead`, every stage of all the starts one
+    vectorized evaluation); each stops with the best design it has evaluated at
+    ``deadline`` (``time.time()``, s), the search's time budget.  One ``(design SI,
+    total, evaluations)`` per start."""
+    from mechloop.synthesis.simplex import nelder_mead
 
-    def evaluate(x: Array) -> float:
-        if deadline is not None and count[0] and time.time() > deadline:
-            raise _OutOfTime
-        count[0] += 1
-        f = float(problem.evaluate(x[None, :]).total[0])
-        if f < best[1]:
-            best[:] = [x, f]
-        return f
+    variables = problem.variables
 
-    try:
-        x, f = _local(problem, x0_unit, max_evals, evaluate)
-    except _OutOfTime:
-        x, f = best
-    return x, f, count[0]
+    def func(unit: Array) -> Array:
+        return problem.evaluate(variables.scale(variables.clip_unit(unit))).total
+
+    def stop() -> bool:
+        return deadline is not None and time.time() > deadline
+
+    lower, upper = variables.unit_bounds()
+    found = nelder_mead(func, x0_unit, lower=lower, upper=upper, maxfev=max_evals,
+                        xatol=1e-10, fatol=1e-14, adaptive=len(variables) > 4, stop=stop)
+    designs = variables.scale(variables.clip_unit(found.x))
+    return [(x, float(f), int(count))
+            for x, f, count in zip(designs, found.fun, found.nfev, strict=True)]
 
 
 def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker,
@@ -655,7 +660,7 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
     starting designs are the first local starts (then the best samples, ``search.starts``
     runs at least)."""
     from mechloop.synthesis.gradient import exact_jacobian_available
-    from mechloop.synthesis.parallel import map_tasks
+    from mechloop.synthesis.parallel import choose_scheduler, map_tasks
 
     variables = problem.variables
     if exact_jacobian_available(problem) and scheduler in (None, "serial"):
@@ -670,14 +675,22 @@ def _run_multistart(problem: SynthesisProblem, search: Search, tracker: _Tracker
     order = np.argsort(ev.total)
     first = list(np.clip(variables.unscale(starts), 0.0, 1.0)) if given else []
     local = first + [samples[i] for i in order[: max(search.starts - len(first), 0)]]
+    # each run is one generation: the runs past the iteration limit would never be read
+    local = np.array(local[: max(search.iterations - tracker.iteration, 0)])
+    if not len(local):
+        return
     budget = max(200, search.iterations * 10) * len(variables)
     deadline = None if tracker.budget is None else \
         time.time() + tracker.budget - (time.perf_counter() - tracker.started)
-    jobs = [(problem, s, budget, deadline) for s in local]
     clock = time.perf_counter()
-    problem.evaluate(variables.scale(local[0])[None, :])
-    per_run = (time.perf_counter() - clock) * budget
-    runs = map_tasks(_run_job, jobs, scheduler=scheduler, seconds_per_item=per_run)
+    problem.evaluate(variables.scale(local))
+    # side by side, the runs cost about one run's evaluations of all their starts at once
+    per_run = (time.perf_counter() - clock) * budget / len(local)
+    if scheduler is None:
+        scheduler = choose_scheduler(len(local), seconds_per_item=per_run)
+    jobs = [(problem, group, budget, deadline) for group in _groups(local, scheduler)]
+    runs = [run for group in map_tasks(_run_job, jobs, scheduler=scheduler)
+            for run in group]
     for x, _, count in runs:
         before = tracker.best_total
         tracker.evaluate(x[None, :])
@@ -713,7 +726,21 @@ def _run_multistart_lsq(problem: SynthesisProblem, search: Search, tracker: _Tra
         tracker.generation_done(before)
 
 
+def _groups(local: Array, scheduler) -> list[Array]:
+    """The unit starts ``(S, V)`` split into the jobs of ``scheduler``: all in one
+    (serial), one group per core (a local cluster), one start each (a remote one)."""
+    from mechloop.synthesis.parallel import PROCESSES, SERIAL
+
+    if scheduler == SERIAL:
+        count = 1
+    elif scheduler == PROCESSES:
+        count = min(len(local), os.cpu_count() or 1)
+    else:
+        count = len(local)
+    return [group for group in np.array_split(local, max(count, 1)) if len(group)]
+
+
 def _run_job(job: tuple[SynthesisProblem, Array, int, float | None]
-             ) -> tuple[Array, float, int]:
+             ) -> list[tuple[Array, float, int]]:
     problem, x0, budget, deadline = job
-    return _local_run(problem, x0, budget, deadline)
+    return _local_runs(problem, x0, budget, deadline)

@@ -320,17 +320,36 @@ def _text_page(title: str, lines: list[str]) -> Figure:
     return figure
 
 
+#: Where the appendix's table sits on its page (figure fractions: left, bottom, width,
+#: height; a row is 1 / (APPENDIX_ROWS + 1) of the height, the labels' row included).
+TABLE_AXES = (0.0036, 0.006, 0.9929, 0.943)
+
+
 def _table_page(title: str, frame) -> Figure:
+    """A page of the appendix: ``frame`` (at most :data:`APPENDIX_ROWS` rows) ruled in
+    cells under its column labels.  The cells are plain texts in the axes' data
+    coordinates (a column per unit, a row per unit from the top), the rules one line
+    collection, the axes placed without a layout pass: matplotlib's ``Table`` makes
+    each cell an artist of its own that every layout pass and draw measures again."""
+    from matplotlib.collections import LineCollection
+
     figure = new_figure(11.69, 8.27)
+    figure.set_layout_engine("none")
     figure.suptitle(title, fontsize=11, fontweight="bold")
-    ax = figure.add_subplot()
+    ax = figure.add_axes(TABLE_AXES)
     ax.axis("off")
-    cells = [[_cell(v) for v in row] for row in frame.itertuples(index=False)]
-    table = ax.table(cellText=cells, colLabels=list(frame.columns), loc="upper center",
-                     cellLoc="right")
-    table.auto_set_font_size(False)
-    table.set_fontsize(6.5)
-    table.scale(1.0, 1.0)
+    labels = list(frame.columns)
+    n_cols, n_rows = len(labels), len(frame) + 1
+    ax.set_xlim(0, n_cols)
+    ax.set_ylim(APPENDIX_ROWS + 1, 0)
+    rules = [((0, y), (n_cols, y)) for y in range(n_rows + 1)]
+    rules += [((x, 0), (x, n_rows)) for x in range(n_cols + 1)]
+    ax.add_collection(LineCollection(rules, colors="black", linewidths=1.0, clip_on=False))
+    for j, label in enumerate(labels):
+        ax.text(j + 0.5, 0.5, label, ha="center", va="center", fontsize=6.5)
+    for i, row in enumerate(frame.itertuples(index=False), start=1):
+        for j, value in enumerate(row):
+            ax.text(j + 0.95, i + 0.5, _cell(value), ha="right", va="center", fontsize=6.5)
     return figure
 
 
