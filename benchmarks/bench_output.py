@@ -20,8 +20,17 @@ rows bit for bit, read without loading the whole file) and removed.
     python benchmarks/bench_output.py --contours 50 --workers all   # or none
 
 ``--pandas`` also times pandas' own ``to_csv`` and ``to_json`` (what mechloop used before)
-for comparison.  The default size writes about 3.4 GB of CSV and 8 GB of JSON: see that
-the folder (``--dir``, default the system temporary folder) has room.
+for comparison.  ``--ecosystem`` times the library writers mechloop does not use, streamed
+in chunks of about 2^20 values as mechloop's are and read back by the same check: polars'
+``write_csv`` and ``write_ndjson`` (its ndjson joined into the list of records; NaN as an
+empty field or null, booleans as ``True``/``False``, as mechloop writes them; polars is not
+a dependency: ``pip install polars``) and Arrow's C++ CSV writer (``pyarrow.csv``; its own
+text: ``1`` for ``1.0``, ``true``, quoted strings).  ``--disk-mb N`` first writes N MB of
+ready text (8 MiB blocks) through the same atomic write, fsync included: the disk speed,
+the most any writer can reach here.
+
+The default size writes about 3.4 GB of CSV and 8 GB of JSON: see that the folder
+(``--dir``, default the system temporary folder) has room.
 """
 
 from __future__ import annotations
@@ -137,7 +146,73 @@ def _check(frame: pd.DataFrame, path: Path) -> str:
     return "first and last 1000 rows read back identical"
 
 
-def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
+#: Values per chunk of the library writers (``--ecosystem``).
+ECOSYSTEM_CHUNK = 1 << 20
+
+
+def _chunks(frame: pd.DataFrame) -> list[tuple[int, int]]:
+    step = max(1, ECOSYSTEM_CHUNK // max(1, len(frame.columns)))
+    return [(s, min(s + step, len(frame))) for s in range(0, len(frame), step)]
+
+
+def _polars(frame: pd.DataFrame, json_nulls: bool):
+    """A chunk as polars frame with mechloop's conventions: NaN (and, for JSON,
+    infinities) null, booleans ``True``/``False`` for CSV."""
+    import polars as pl
+
+    data = pl.from_pandas(frame)
+    fixes = []
+    for name, dtype in data.schema.items():
+        col = pl.col(name)
+        if dtype.is_float():
+            fixes.append(pl.when(col.is_finite()).then(col) if json_nulls
+                         else col.fill_nan(None))
+        elif dtype == pl.Boolean and not json_nulls:
+            fixes.append(pl.when(col).then(pl.lit("True")).otherwise(pl.lit("False"))
+                         .alias(name))
+    return data.with_columns(fixes) if fixes else data
+
+
+def write_polars(frame: pd.DataFrame, path: Path) -> None:
+    """``frame`` by polars, chunk after chunk: CSV, or JSON as a list of records."""
+    with path.open("wb") as handle:
+        if path.suffix == ".csv":
+            for start, stop in _chunks(frame):
+                _polars(frame.iloc[start:stop], False).write_csv(
+                    handle, include_header=start == 0)
+            return
+        handle.write(b"[\n")
+        for start, stop in _chunks(frame):
+            text = io.BytesIO()
+            _polars(frame.iloc[start:stop], True).write_ndjson(text)
+            handle.write((b",\n" if start else b"")
+                         + text.getvalue()[:-1].replace(b"\n", b",\n"))
+        handle.write(b"\n]\n")
+
+
+def write_arrow(frame: pd.DataFrame, path: Path) -> None:
+    """``frame`` by Arrow's C++ CSV writer (multi-threaded), chunk after chunk."""
+    import pyarrow as pa
+    import pyarrow.csv as pc
+
+    schema = pa.Schema.from_pandas(frame, preserve_index=False)
+    with pc.CSVWriter(str(path), schema) as writer:
+        for start, stop in _chunks(frame):
+            writer.write_table(pa.Table.from_pandas(frame.iloc[start:stop], schema=schema,
+                                                    preserve_index=False))
+
+
+def write_disk(path: Path, mb: int) -> None:
+    """``mb`` MB of ready text written through the atomic write (the disk speed)."""
+    from mechloop.output.atomic import atomic_file
+
+    block = (b"0.30000000000000004," * (1 << 19))[:1 << 23]
+    with atomic_file(path) as handle:
+        for _ in range(mb * 2**20 // len(block)):
+            handle.write(block)
+
+
+def run_child(frame: pd.DataFrame, path: Path, how: str, disk_mb: int = 0) -> dict:
     """Write in a forked child; its seconds, peak memory and check."""
     read, write = os.pipe()
     pid = os.fork()
@@ -150,6 +225,12 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
             t0 = time.perf_counter()
             if how == "mechloop":
                 write_frame(frame, path)
+            elif how == "disk":
+                write_disk(path, disk_mb)
+            elif how == "polars":
+                write_polars(frame, path)
+            elif how == "arrow":
+                write_arrow(frame, path)
             elif path.suffix == ".csv":
                 frame.to_csv(path, index=False)
             else:
@@ -158,7 +239,8 @@ def run_child(frame: pd.DataFrame, path: Path, how: str) -> dict:
             cpu = sum(getattr(resource.getrusage(who), f) - getattr(cpu0[who], f)
                       for who in cpu0 for f in ("ru_utime", "ru_stime"))
             peak = _maxrss_mb()
-            verdict = _check(frame, path) if how == "mechloop" else ""
+            verdict = ("" if how == "pandas" else "disk speed" if how == "disk"
+                       else _check(frame, path))
             report = {"seconds": seconds, "cpu": cpu, "peak": peak, "above": peak - start_rss,
                       "size": path.stat().st_size, "check": verdict}
             os.write(write, json.dumps(report).encode())
@@ -216,6 +298,11 @@ def main() -> int:
     parser.add_argument("--dir", default=None, help="where to write (default: temp folder)")
     parser.add_argument("--pandas", action="store_true",
                         help="also time pandas' to_csv and to_json")
+    parser.add_argument("--disk-mb", type=int, default=0,
+                        help="first write this many MB of ready text: the disk speed")
+    parser.add_argument("--ecosystem", action="store_true",
+                        help="also time polars' write_csv/write_ndjson and Arrow's C++ "
+                        "CSV writer")
     parser.add_argument("--workers", choices=("auto", "all", "none"), default="auto",
                         help="CSV/JSON worker processes: auto (one per idle core, as "
                         "mechloop does), all (one per core, whatever the load: to measure "
@@ -238,9 +325,14 @@ def main() -> int:
     print(f"workers ({args.workers}): {parallel.workers_for(cells, cells // 2**18)} for "
           f"CSV and JSON; load average {os.getloadavg()[0]:.1f} on "
           f"{len(os.sched_getaffinity(0))} cores")
-    runs = [("mechloop", f) for f in args.formats.split(",")]
+    runs = [("disk", "csv")] if args.disk_mb else []
+    runs += [("mechloop", f) for f in args.formats.split(",")]
     if args.pandas:
         runs += [("pandas", f) for f in ("csv", "json") if f in args.formats.split(",")]
+    if args.ecosystem:
+        runs += [(how, f) for how, f in (("polars", "csv"), ("arrow", "csv"),
+                                         ("polars", "json"))
+                 if f in args.formats.split(",")]
     failed = False
     print(f"{'writer':<10} {'format':<8} {'seconds':>8} {'MB':>8} {'MB/s':>7} "
           f"{'MB/CPU-s':>9} "
@@ -248,7 +340,7 @@ def main() -> int:
     with tempfile.TemporaryDirectory(dir=args.dir) as folder:
         for how, fmt in runs:
             path = Path(folder) / f"table.{fmt}"
-            r = run_child(frame, path, how)
+            r = run_child(frame, path, how, args.disk_mb)
             path.unlink(missing_ok=True)
             if "seconds" not in r:
                 print(f"{how:<10} {fmt:<8} {r['check']}")

@@ -5,7 +5,9 @@ formatted by C code (orjson for the numbers of CSV and JSON, pyarrow for Parquet
 written at once, so memory stays bounded by a few chunks.  A large CSV or JSON table is
 formatted on every core, by forked workers each taking pieces of rows in turn
 (:mod:`mechloop.output.parallel`).  Every float is written in its shortest form that reads
-back to the same double (bit for bit).
+back to the same double (bit for bit).  Arrow's C++ CSV writer and polars' writers were
+measured against these (``benchmarks/bench_output.py --ecosystem``): neither formats more
+per CPU-second, streamed in chunks (see ``benchmarks/README.md``).
 
 Formats (as before the writers streamed):
 
