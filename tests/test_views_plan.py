@@ -31,9 +31,9 @@ from pydantic import TypeAdapter
 import mechloop
 from mechloop.dynamics.points import Placement
 from mechloop.model.dynamic import HeadPoint, PointOn, VectorPoint
-from mechloop.views.animation import animate, frame_interval
+from mechloop.views.animation import animate, frame_interval, loop_frames, same_pose
 from mechloop.views.figure import ViewError, save_figure
-from mechloop.views.plan import plot_overlay, plot_plan, plot_trajectories
+from mechloop.views.plan import plan_scene, plot_overlay, plot_plan, plot_trajectories
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
@@ -337,13 +337,13 @@ def test_gif_has_one_frame_per_position_with_the_model_frame_time(tmp_path):
     calls = []
     path = animate(mechloop.solve(slow_crank_slider()), tmp_path / "slow.gif", dpi=40,
                    progress=lambda done, total: calls.append((done, total)))
-    with Image.open(path) as gif:
-        assert gif.n_frames == 73
+    with Image.open(path) as gif:  # position 72 is position 0 again: left out of the loop
+        assert gif.n_frames == 72
         assert gif.info["duration"] == 50  # ms: 3.6 s / 72 positions
-    assert calls == [(k, 73) for k in range(1, 74)]
+    assert calls == [(k, 72) for k in range(1, 73)]
     fast = animate(mechloop.solve(load("crank_slider.yaml")), tmp_path / "fast.gif", dpi=40)
     with Image.open(fast) as gif:
-        assert gif.n_frames == 73
+        assert gif.n_frames == 72
         assert gif.info["duration"] == 20  # the shortest delay browsers play as written
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fast.gif", "slow.gif"]
 
@@ -364,20 +364,38 @@ def test_gif_frames_show_the_crank_turning(tmp_path):
 def test_mp4_has_one_frame_per_position_at_the_model_frame_rate(tmp_path):
     path = animate(mechloop.solve(slow_crank_slider()), tmp_path / "slow.mp4", dpi=40)
     frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(path))
-    assert frames == 73
-    assert seconds == pytest.approx(73 * 0.050, abs=0.06)  # ffmpeg reports 1/100 s
+    assert frames == 72  # a closed cycle: position 72 repeats position 0
+    assert seconds == pytest.approx(72 * 0.050, abs=0.06)  # ffmpeg reports 1/100 s
 
 
 def test_html_page_embeds_every_frame_and_plays_at_the_frame_time(tmp_path):
     path = animate(mechloop.solve(slow_crank_slider()), tmp_path / "slow.html", dpi=40)
     page = path.read_text()
     frames = re.findall(r'"data:image/png;base64,([^"]*)"', page.replace("\\\n", ""))
-    assert len(frames) == 73
+    assert len(frames) == 72  # a closed cycle: position 72 repeats position 0
     with Image.open(io.BytesIO(base64.b64decode(frames[0]))) as first:
         assert first.size[0] > 100
     # the player: new Animation(frames, img_id, slider_id, <interval in ms>, ...)
     interval = re.search(r"new Animation\(frames, img_id, slider_id, ([0-9.]+),", page)
     assert interval is not None and float(interval.group(1)) == 50.0
+
+
+def test_a_closed_cycle_drops_its_repeated_last_frame_and_an_open_range_keeps_it():
+    """A full turn of the crank (0..360°) ends on the first pose: the loop leaves position
+    72 out; a half turn (0..180°), or positions that do not return, keep every one."""
+    closed = plan_scene(mechloop.solve(load("crank_slider.yaml")))
+    assert same_pose(closed, 0, 72) and not same_pose(closed, 0, 71)
+    assert loop_frames(closed, list(range(73))) == list(range(72))
+    assert loop_frames(closed, [0, 36, 72]) == [0, 36]
+    assert loop_frames(closed, list(range(37))) == list(range(37))  # half a turn: open
+    data = load("crank_slider.yaml").model_dump(exclude_none=True)
+    data["arguments"][1] = {"table": {0: 0.0, 72: 180.0}}
+    half = mechloop.solve(mechloop.Model.from_dict(data))
+    assert loop_frames(plan_scene(half), list(range(73))) == list(range(73))
+    broken = plan_scene(mechloop.solve(mechloop.Model.from_dict(SHORT_ROD)))
+    assert broken.results.broken[3]
+    assert not same_pose(broken, 0, 3)  # a pose with unknown ends is not the first pose
+    assert loop_frames(broken, list(range(13))) == list(range(12))
 
 
 def test_animation_rejects_unknown_file_types(tmp_path):

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 from typer.core import TyperCommand, TyperGroup
@@ -78,7 +79,8 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
                 from mechloop.model.load import locate
 
                 exc = locate(exc, kwargs["model"])
-            err.print(f"[bold red]error:[/] {exc}", markup=True, soft_wrap=True)
+            err.print(f"[bold red]error:[/] {escape(str(exc))}", markup=True,
+                      soft_wrap=True)  # escaped: '[m]' in a message is a unit, not markup
             raise typer.Exit(code=2) from None
 
     return wrapper
@@ -655,12 +657,16 @@ def animate(
     _outputs(model, force, (output, ANIMATION_SUFFIXES))
     m = load_model(model)
     results = _dynamics(m, model) if m.bodies else solve_model(m)
+    frames = [m.positions + 1]  # a closed cycle leaves out its last, repeated pose
     with _progress("frames") as bar:
         task = bar.add_task("frames", total=m.positions + 1)
-        make_animation(results, output, fps=fps,
-                       progress=lambda done, total: bar.update(task, completed=done,
-                                                               total=total))
-    out.print(f"wrote {output} ({m.positions + 1} frames)")
+
+        def advance(done: int, total: int) -> None:
+            frames[0] = total
+            bar.update(task, completed=done, total=total)
+
+        make_animation(results, output, fps=fps, progress=advance)
+    out.print(f"wrote {output} ({frames[0]} frames)")
 
 
 @app.command(cls=_Command)
