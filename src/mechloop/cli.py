@@ -525,6 +525,9 @@ def plot(
                      "e.g. length=mm,force=kN; kinds: length, angle, force, moment, power, "
                      "mass, inertia, time, energy (default: SI units and degrees)")
                      ] = None,
+    panels: Annotated[bool, typer.Option(help="parameters: one stacked panel per unit "
+                      "(default: a y-axis per unit up to 3 units, panels for more)")
+                      ] = False,
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -579,7 +582,8 @@ def plot(
         figure = plans.plot_trajectories(results, [_point(p) for p in _split(points)],
                                          position=position or 0)
     elif kind == "parameters":
-        figure = curves.plot_parameters(results, listed, against=against, display=display)
+        figure = curves.plot_parameters(results, listed, against=against, display=display,
+                                        layout="panels" if panels else "auto")
     elif kind == "combination":
         if len(listed) != 2:
             raise ViewError("a combination needs two names", "give -n r3,r1")
