@@ -443,7 +443,8 @@ def _kinematic_figures(res: mechloop.Results):
                                  against=against)  # three units: three y-axes
     yield curves.plot_combination(res, first, last, "ratio")
     yield curves.plot_angle_between(res, vectors[0], vectors[1], against=against)
-    yield curves.plot_increment(res, last, res.positions.size // 2,
+    whole = np.flatnonzero(~res.broken)  # the reference must assemble (a break is refused)
+    yield curves.plot_increment(res, last, int(whole[whole.size // 2]),
                                 display=Display(length="mm", angle="rad"))
     yield plot_structure(res.model)
 
