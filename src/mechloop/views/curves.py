@@ -222,13 +222,14 @@ def check_curves(curves: Sequence[Series], display: Display) -> None:
 
 
 def draw_curves(ax: Axes, x: Series, curves: Sequence[Series], display: Display,
-                *, styles: Sequence[str] | None = None) -> list[Axes]:
+                *, styles: Sequence[str] | None = None, xlabel: bool = True) -> list[Axes]:
     """Draw up to :data:`MAX_CURVES` ``curves`` against ``x`` on ``ax``, one y-axis per
     display unit: the first unit on the left, the second on the right, each further one
     on the right again, its spine pushed out by :data:`AXIS_OFFSET` of the axes width.
 
     Each y-axis is labelled with its curves' names and its unit; an axis of one curve is
-    coloured like it.  The legend goes below the x-axis label, outside the curves.
+    coloured like it.  The legend goes below the x-axis label (``xlabel=False``: no
+    label, e.g. over another plot sharing x), outside the curves.
     Returns the y-axes, one per unit, in the order of :func:`unit_groups`.
     """
     check_curves(curves, display)
@@ -245,7 +246,7 @@ def draw_curves(ax: Axes, x: Series, curves: Sequence[Series], display: Display,
     for axis, (unit, members) in zip(axes, groups.items(), strict=True):
         _draw_group(axis, xs, curves, members, unit, display, styles,
                     AXIS_STYLES[axes.index(axis) % len(AXIS_STYLES)])
-    ax.set_xlabel(x.label(display))
+    ax.set_xlabel(x.label(display) if xlabel else "")
     ax.grid(True, alpha=0.3)
     legend_below(ax, [line for axis in axes for line in axis.get_lines()])
     return axes
@@ -288,12 +289,16 @@ def _draw_group(axis: Axes, xs: Array, curves: Sequence[Series], members: list[i
 
 
 def legend_below(ax: Axes, handles: Sequence[Artist]) -> None:
-    """The legend of ``handles`` centred under the x-axis label of ``ax``, in up to three
-    columns, so it never covers a curve (constrained layout makes room for it)."""
-    fonts = FontProperties(size=rcParams["xtick.labelsize"]).get_size_in_points() \
-        + FontProperties(size=rcParams["axes.labelsize"]).get_size_in_points()
-    below = (rcParams["xtick.major.size"] + rcParams["xtick.major.pad"]
-             + rcParams["axes.labelpad"] + 1.3 * fonts + LEGEND_GAP)
+    """The legend of ``handles`` centred under the x-axis tick labels and label of ``ax``
+    (as far as they are shown), in up to three columns, so it never covers a curve
+    (constrained layout makes room for it)."""
+    below = rcParams["xtick.major.size"] + LEGEND_GAP
+    if ax.xaxis.get_tick_params().get("labelbottom", True):
+        below += rcParams["xtick.major.pad"] + 1.3 * FontProperties(
+            size=rcParams["xtick.labelsize"]).get_size_in_points()
+    if ax.get_xlabel():
+        below += rcParams["axes.labelpad"] + 1.3 * FontProperties(
+            size=rcParams["axes.labelsize"]).get_size_in_points()
     figure, _ = axes_for(ax)
     anchor = offset_copy(ax.transAxes, figure, y=-below, units="points")
     ax.legend(handles=list(handles), loc="upper center", bbox_to_anchor=(0.5, 0.0),
