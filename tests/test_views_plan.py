@@ -33,10 +33,16 @@ from pydantic import TypeAdapter
 import mechloop
 from mechloop.dynamics.points import Placement
 from mechloop.model.dynamic import HeadPoint, PointOn, VectorPoint
-from mechloop.views.animation import animate, frame_interval, loop_frames, same_pose
+from mechloop.views.animation import _Stage, animate, frame_interval, loop_frames, same_pose
 from mechloop.views.figure import ViewError, save_figure
 from mechloop.views.labels import label_box
-from mechloop.views.plan import plan_scene, plot_overlay, plot_plan, plot_trajectories
+from mechloop.views.plan import (
+    draw_position,
+    plan_scene,
+    plot_overlay,
+    plot_plan,
+    plot_trajectories,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
@@ -471,6 +477,21 @@ def test_a_closed_cycle_drops_its_repeated_last_frame_and_an_open_range_keeps_it
     assert broken.results.broken[3]
     assert not same_pose(broken, 0, 3)  # a pose with unknown ends is not the first pose
     assert loop_frames(broken, list(range(13))) == list(range(12))
+
+
+def test_animation_frames_place_their_labels_without_overlaps():
+    """Each frame arranges its labels on the frozen layout of the animation."""
+    scene = plan_scene(mechloop.solve_dynamics(load("crank_slider_dynamics.yaml")))
+    stage = _Stage(scene, 0, dpi=60, width=6.4, grid=False, axes=True, numbers=True)
+    renderer = stage.canvas.get_renderer()
+    for position in (0, 9, 36):
+        drawn = draw_position(stage.ax, scene, position)
+        boxes = {a.get_gid(): label_box(a, renderer) for a in drawn
+                 if str(a.get_gid()).startswith(("number ", "joint label ", "center label "))}
+        assert len(boxes) == 4 + 4 + 3  # vectors 1-4, joints O A B S, centres S1-S3
+        assert not overlapping(boxes), (position, overlapping(boxes))
+        for artist in drawn:
+            artist.remove()
 
 
 def test_animation_rejects_unknown_file_types(tmp_path):
