@@ -22,7 +22,7 @@ save_figure(plan.plot_plan(four_bar, 12), OUT / "plan.png")              # one p
 save_figure(plan.plot_overlay(four_bar), OUT / "photo.png")              # all positions
 save_figure(plan.plot_trajectories(four_bar, [{"head": 6}]), OUT / "coupler.svg")
 save_figure(curves.plot_angle_between(four_bar, 2, 3), OUT / "transmission.png")
-animate(four_bar, OUT / "cycle.gif")                                     # one frame a position
+animate(four_bar, OUT / "cycle.gif")                   # a frame a position, a seamless loop
 
 model = mechloop.load_model(HERE / "crank_slider_dynamics.yaml")
 dyn = mechloop.solve_dynamics(model)

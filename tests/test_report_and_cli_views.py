@@ -148,11 +148,15 @@ def test_view_command_mistakes_exit_2_without_a_traceback(args, message, tmp_pat
 
 
 def test_animation_from_the_command_line_has_a_frame_per_position(tmp_path):
+    """The example turns its crank a full turn: position N repeats position 0 and is
+    left out of the loop, and the message counts the frames written."""
     out = tmp_path / "cycle.gif"
     result = CliRunner().invoke(app, ["animate", str(KINEMATIC), "-o", str(out)])
     assert result.exit_code == 0, result.output
+    frames = mechloop.load_model(KINEMATIC).positions
     with Image.open(out) as image:
-        assert image.n_frames == mechloop.load_model(KINEMATIC).positions + 1
+        assert image.n_frames == frames
+    assert f"({frames} frames)" in result.output
 
 
 @pytest.mark.parametrize("command", ["plot", "animate", "report"])

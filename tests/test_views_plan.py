@@ -22,7 +22,9 @@ from pathlib import Path
 import imageio_ffmpeg
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
+from matplotlib.markers import MarkerStyle
 from matplotlib.patches import Polygon
 from matplotlib.text import Annotation
 from PIL import Image
@@ -31,9 +33,16 @@ from pydantic import TypeAdapter
 import mechloop
 from mechloop.dynamics.points import Placement
 from mechloop.model.dynamic import HeadPoint, PointOn, VectorPoint
-from mechloop.views.animation import animate, frame_interval
+from mechloop.views.animation import _Stage, animate, frame_interval, loop_frames, same_pose
 from mechloop.views.figure import ViewError, save_figure
-from mechloop.views.plan import plot_overlay, plot_plan, plot_trajectories
+from mechloop.views.labels import label_box
+from mechloop.views.plan import (
+    draw_position,
+    plan_scene,
+    plot_overlay,
+    plot_plan,
+    plot_trajectories,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
@@ -149,6 +158,57 @@ def test_functions_are_marked_with_circles_and_arguments_with_triangles():
     legend = [t.get_text() for t in figure.axes[0].get_legend().get_texts()]
     assert any(t.startswith("function") for t in legend)
     assert any(t.startswith("argument") for t in legend)
+
+
+def marker_vertex_angles(line) -> np.ndarray:
+    """Directions (deg) from a marker's centre to its polygon's vertices, as drawn."""
+    style = MarkerStyle(line.get_marker())
+    vertices = style.get_transform().transform(style.get_path().vertices)
+    return np.degrees(np.arctan2(vertices[:, 1], vertices[:, 0]))
+
+
+@pytest.mark.parametrize("position", [0, 7, 20, 45])
+def test_the_argument_triangle_points_along_its_vector(position):
+    """The crank's angle a1 is the argument: its triangle has a vertex pointing in the
+    crank's direction (5° per position), not across it."""
+    figure = plot_plan(mechloop.solve(load("crank_slider.yaml")), position)
+    angles = marker_vertex_angles(drawn(figure, "argument a1"))
+    miss = np.abs((angles - 5.0 * position + 180.0) % 360.0 - 180.0)
+    assert miss.min() < 1e-9, angles
+    # and in the legend: pointing right, like a vector along +x
+    (legend,) = [h for h in figure.axes[0].get_legend().legend_handles
+                 if h.get_label().startswith("argument")]
+    assert np.abs((marker_vertex_angles(legend) + 180.0) % 360.0 - 180.0).min() < 1e-9
+
+
+@pytest.mark.parametrize("position", [0, 9, 36])
+def test_labels_around_the_ground_pivot_overlap_neither_each_other_nor_other_links(
+        position):
+    """The engine's plan: at the crank's pivot O sit the ground, the joint O, the offset
+    vector 4 and the crank 1 with S1; every label is clear of every other label, of the
+    markers, and of every link but its own vector (measured on the rendered figure)."""
+    figure = plot_plan(mechloop.solve_dynamics(load("crank_slider_dynamics.yaml")),
+                       position)
+    boxes = rendered_label_boxes(figure)
+    assert {"joint label O", "number 1", "number 4", "center label S1"} <= set(boxes)
+    assert not overlapping(boxes)
+    ax = figure.axes[0]
+    to_px = ax.transData.transform
+    for n in range(1, 5):
+        tail, head = arrow_ends(figure, n)
+        points = to_px(tail + np.linspace(0.0, 1.0, 400)[:, None] * (head - tail))
+        for gid, box in boxes.items():
+            if gid == f"number {n}":
+                continue
+            inside = ((points[:, 0] > box[0] + 1) & (points[:, 0] < box[2] - 1)
+                      & (points[:, 1] > box[1] + 1) & (points[:, 1] < box[3] - 1))
+            assert not inside.any(), f"{gid} covers vector {n}"
+    renderer = figure.canvas.get_renderer()
+    for gid in ("joint O", "joint A", "center S1", "function a2", "argument a1"):
+        mark = drawn(figure, gid).get_window_extent(renderer)
+        for label, box in boxes.items():
+            assert (min(box[2], mark.x1) - max(box[0], mark.x0) <= 1
+                    or min(box[3], mark.y1) - max(box[1], mark.y0) <= 1), (label, gid)
 
 
 def ground_apexes(figure) -> list[tuple[float, float]]:
@@ -269,6 +329,27 @@ def test_every_example_renders_every_view_without_warnings(path, tmp_path):
                 assert written.read_bytes().startswith(magic)
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
         f"{n}{s}" for n in views for s in (".png", ".svg", ".pdf"))  # no temp files left
+    for name in ("plan", "paths"):  # the labels of the drawn figures overlap nowhere
+        boxes = rendered_label_boxes(views[name])
+        assert boxes, f"{name}: no labels"
+        assert not overlapping(boxes), f"{path.stem} {name}: {overlapping(boxes)}"
+
+
+def rendered_label_boxes(figure) -> dict[str, np.ndarray]:
+    """Every label's drawn box (text and frame, pixels) on the figure rendered by Agg."""
+    FigureCanvasAgg(figure).draw()
+    renderer = figure.canvas.get_renderer()
+    return {a.get_gid(): label_box(a, renderer) for a in figure.axes[0].get_children()
+            if isinstance(a, Annotation) and str(a.get_gid()).startswith(
+                ("number ", "joint label ", "center label "))}
+
+
+def overlapping(boxes: dict[str, np.ndarray]) -> list[tuple[str, str]]:
+    """The pairs of labels whose boxes share an area (touching edges do not count)."""
+    names = sorted(boxes)
+    return [(a, b) for i, a in enumerate(names) for b in names[i + 1:]
+            if min(boxes[a][2], boxes[b][2]) - max(boxes[a][0], boxes[b][0]) > 0.5
+            and min(boxes[a][3], boxes[b][3]) - max(boxes[a][1], boxes[b][1]) > 0.5]
 
 
 def test_overlay_draws_every_vector_at_every_position():
@@ -337,13 +418,13 @@ def test_gif_has_one_frame_per_position_with_the_model_frame_time(tmp_path):
     calls = []
     path = animate(mechloop.solve(slow_crank_slider()), tmp_path / "slow.gif", dpi=40,
                    progress=lambda done, total: calls.append((done, total)))
-    with Image.open(path) as gif:
-        assert gif.n_frames == 73
+    with Image.open(path) as gif:  # position 72 is position 0 again: left out of the loop
+        assert gif.n_frames == 72
         assert gif.info["duration"] == 50  # ms: 3.6 s / 72 positions
-    assert calls == [(k, 73) for k in range(1, 74)]
+    assert calls == [(k, 72) for k in range(1, 73)]
     fast = animate(mechloop.solve(load("crank_slider.yaml")), tmp_path / "fast.gif", dpi=40)
     with Image.open(fast) as gif:
-        assert gif.n_frames == 73
+        assert gif.n_frames == 72
         assert gif.info["duration"] == 20  # the shortest delay browsers play as written
     assert sorted(p.name for p in tmp_path.iterdir()) == ["fast.gif", "slow.gif"]
 
@@ -364,20 +445,53 @@ def test_gif_frames_show_the_crank_turning(tmp_path):
 def test_mp4_has_one_frame_per_position_at_the_model_frame_rate(tmp_path):
     path = animate(mechloop.solve(slow_crank_slider()), tmp_path / "slow.mp4", dpi=40)
     frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(path))
-    assert frames == 73
-    assert seconds == pytest.approx(73 * 0.050, abs=0.06)  # ffmpeg reports 1/100 s
+    assert frames == 72  # a closed cycle: position 72 repeats position 0
+    assert seconds == pytest.approx(72 * 0.050, abs=0.06)  # ffmpeg reports 1/100 s
 
 
 def test_html_page_embeds_every_frame_and_plays_at_the_frame_time(tmp_path):
     path = animate(mechloop.solve(slow_crank_slider()), tmp_path / "slow.html", dpi=40)
     page = path.read_text()
     frames = re.findall(r'"data:image/png;base64,([^"]*)"', page.replace("\\\n", ""))
-    assert len(frames) == 73
+    assert len(frames) == 72  # a closed cycle: position 72 repeats position 0
     with Image.open(io.BytesIO(base64.b64decode(frames[0]))) as first:
         assert first.size[0] > 100
     # the player: new Animation(frames, img_id, slider_id, <interval in ms>, ...)
     interval = re.search(r"new Animation\(frames, img_id, slider_id, ([0-9.]+),", page)
     assert interval is not None and float(interval.group(1)) == 50.0
+
+
+def test_a_closed_cycle_drops_its_repeated_last_frame_and_an_open_range_keeps_it():
+    """A full turn of the crank (0..360°) ends on the first pose: the loop leaves position
+    72 out; a half turn (0..180°), or positions that do not return, keep every one."""
+    closed = plan_scene(mechloop.solve(load("crank_slider.yaml")))
+    assert same_pose(closed, 0, 72) and not same_pose(closed, 0, 71)
+    assert loop_frames(closed, list(range(73))) == list(range(72))
+    assert loop_frames(closed, [0, 36, 72]) == [0, 36]
+    assert loop_frames(closed, list(range(37))) == list(range(37))  # half a turn: open
+    data = load("crank_slider.yaml").model_dump(exclude_none=True)
+    data["arguments"][1] = {"table": {0: 0.0, 72: 180.0}}
+    half = mechloop.solve(mechloop.Model.from_dict(data))
+    assert loop_frames(plan_scene(half), list(range(73))) == list(range(73))
+    broken = plan_scene(mechloop.solve(mechloop.Model.from_dict(SHORT_ROD)))
+    assert broken.results.broken[3]
+    assert not same_pose(broken, 0, 3)  # a pose with unknown ends is not the first pose
+    assert loop_frames(broken, list(range(13))) == list(range(12))
+
+
+def test_animation_frames_place_their_labels_without_overlaps():
+    """Each frame arranges its labels on the frozen layout of the animation."""
+    scene = plan_scene(mechloop.solve_dynamics(load("crank_slider_dynamics.yaml")))
+    stage = _Stage(scene, 0, dpi=60, width=6.4, grid=False, axes=True, numbers=True)
+    renderer = stage.canvas.get_renderer()
+    for position in (0, 9, 36):
+        drawn = draw_position(stage.ax, scene, position)
+        boxes = {a.get_gid(): label_box(a, renderer) for a in drawn
+                 if str(a.get_gid()).startswith(("number ", "joint label ", "center label "))}
+        assert len(boxes) == 4 + 4 + 3  # vectors 1-4, joints O A B S, centres S1-S3
+        assert not overlapping(boxes), (position, overlapping(boxes))
+        for artist in drawn:
+            artist.remove()
 
 
 def test_animation_rejects_unknown_file_types(tmp_path):

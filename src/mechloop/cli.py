@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 from typer.core import TyperCommand, TyperGroup
@@ -78,7 +79,8 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
                 from mechloop.model.load import locate
 
                 exc = locate(exc, kwargs["model"])
-            err.print(f"[bold red]error:[/] {exc}", markup=True, soft_wrap=True)
+            err.print(f"[bold red]error:[/] {escape(str(exc))}", markup=True,
+                      soft_wrap=True)  # escaped: '[m]' in a message is a unit, not markup
             raise typer.Exit(code=2) from None
 
     return wrapper
@@ -523,6 +525,9 @@ def plot(
                      "e.g. length=mm,force=kN; kinds: length, angle, force, moment, power, "
                      "mass, inertia, time, energy (default: SI units and degrees)")
                      ] = None,
+    panels: Annotated[bool, typer.Option(help="parameters: one stacked panel per unit "
+                      "(default: a y-axis per unit up to 3 units, panels for more)")
+                      ] = False,
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -577,7 +582,8 @@ def plot(
         figure = plans.plot_trajectories(results, [_point(p) for p in _split(points)],
                                          position=position or 0)
     elif kind == "parameters":
-        figure = curves.plot_parameters(results, listed, against=against, display=display)
+        figure = curves.plot_parameters(results, listed, against=against, display=display,
+                                        layout="panels" if panels else "auto")
     elif kind == "combination":
         if len(listed) != 2:
             raise ViewError("a combination needs two names", "give -n r3,r1")
@@ -655,12 +661,16 @@ def animate(
     _outputs(model, force, (output, ANIMATION_SUFFIXES))
     m = load_model(model)
     results = _dynamics(m, model) if m.bodies else solve_model(m)
+    frames = [m.positions + 1]  # a closed cycle leaves out its last, repeated pose
     with _progress("frames") as bar:
         task = bar.add_task("frames", total=m.positions + 1)
-        make_animation(results, output, fps=fps,
-                       progress=lambda done, total: bar.update(task, completed=done,
-                                                               total=total))
-    out.print(f"wrote {output} ({m.positions + 1} frames)")
+
+        def advance(done: int, total: int) -> None:
+            frames[0] = total
+            bar.update(task, completed=done, total=total)
+
+        make_animation(results, output, fps=fps, progress=advance)
+    out.print(f"wrote {output} ({frames[0]} frames)")
 
 
 @app.command(cls=_Command)

@@ -1,9 +1,13 @@
 """KDAM's "cinema" mode: the position plan played over the cycle, saved as GIF, MP4 or HTML.
 
 One frame per position (``0..N`` by default, none skipped; a chain-break position is a
-frame that says so), all on one fixed scale that covers every position.  The frame time is
-the model time: the mean time step between the chosen positions (100 ms without a model
-time; ``fps`` overrides).  What each format can hold:
+frame that says so), all on one fixed scale that covers every position.  A closed cycle
+loops seamlessly: when the last chosen position draws the same pose as the first (a crank
+turned a full turn), the last frame is dropped, since the loop shows the first again
+right after it; an open motion (a stroke, a range of the argument) keeps every frame.
+
+The frame time is the model time: the mean time step between the chosen positions (100 ms
+without a model time; ``fps`` overrides).  What each format can hold:
 
 * a frame is shown for at least :data:`MIN_INTERVAL_MS` (20 ms, 50 frames per second):
   a machine faster than that plays in slow motion (a 3000 rpm crank over 72 positions
@@ -60,6 +64,9 @@ MIN_INTERVAL_MS = 20.0
 GIF_MIN_DELAY_MS = 20
 #: Largest HTML page (MB) before matplotlib would start dropping frames.
 HTML_LIMIT_MB = 512.0
+#: Two poses are the same when no drawn point differs by more than this fraction of the
+#: size of the drawing.
+SAME_POSE_RTOL = 1e-7
 
 Progress = Callable[[int, int], object]
 
@@ -83,6 +90,32 @@ def frame_interval(results: Results, positions: list[int], fps: float | None = N
     return max(step, MIN_INTERVAL_MS)
 
 
+def same_pose(scene: PlanScene, first: int, last: int) -> bool:
+    """Whether positions ``first`` and ``last`` draw the same picture: every vector end
+    (and, for dynamic results, every centre of mass) at the same place to
+    :data:`SAME_POSE_RTOL` of the drawing's size, and the same ends known."""
+    points = [*scene.tails.values(), *scene.heads.values()]
+    if scene.dynamic is not None:
+        points += [scene.to_display(c.z) for c in scene.dynamic.centers.values()]
+    ends = np.array([[z[first], z[last]] for z in points], dtype=complex)
+    known = np.isfinite(ends)
+    if not known.any() or not np.array_equal(known[:, 0], known[:, 1]):
+        return False
+    both = known[:, 0]
+    size = max(float(np.abs(ends[both]).max()), 1e-300)
+    return bool(np.abs(ends[both, 0] - ends[both, 1]).max() <= SAME_POSE_RTOL * size)
+
+
+def loop_frames(scene: PlanScene, positions: list[int]) -> list[int]:
+    """The positions drawn as frames of a repeating loop: ``positions`` without its last
+    one when that closes the cycle (the same pose as the first, e.g. 360° of a crank), so
+    the loop does not show one pose twice in a row; unchanged for an open motion or two
+    positions or fewer."""
+    if len(positions) > 2 and same_pose(scene, positions[0], positions[-1]):
+        return positions[:-1]
+    return positions
+
+
 def gif_delay(interval_ms: float) -> int:
     """The GIF frame delay (ms) for a frame time: rounded to the format's 10 ms, at least
     :data:`GIF_MIN_DELAY_MS`."""
@@ -97,7 +130,8 @@ def animate(results: Results | DynamicResults, path: str | os.PathLike[str], *,
     """Save the position plan at every position as an animation; returns the path.
 
     ``path``: ``.gif``, ``.mp4`` or ``.html``.  ``positions``: the frames (default every
-    position ``0..N``).  ``fps``: frames per second instead of the model time (see the
+    position ``0..N``; the last is left out when it closes the cycle, see
+    :func:`loop_frames`).  ``fps``: frames per second instead of the model time (see the
     module notes for the frame time).  ``progress(done, total)`` is called after each
     frame (for a progress bar).  ``dpi`` and ``width`` (inches) set the frame size;
     ``numbers``, ``grid``, ``axes`` and ``length_unit`` are as in
@@ -111,7 +145,7 @@ def animate(results: Results | DynamicResults, path: str | os.PathLike[str], *,
         raise ViewError(f"{target}: cannot save an animation as '{suffix or 'no suffix'}'",
                         "use a file name ending in .gif, .mp4 or .html")
     scene = plan_scene(results, length_unit=length_unit)
-    chosen = check_positions(scene, positions)
+    chosen = loop_frames(scene, check_positions(scene, positions))
     interval = frame_interval(scene.results, chosen, fps)
     stage = _Stage(scene, chosen[0], dpi=dpi, width=width, grid=grid, axes=axes,
                    numbers=numbers)

@@ -19,8 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 import pint
+from matplotlib import rcParams
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
+from matplotlib.transforms import offset_copy
 from numpy.typing import NDArray
 
 from mechloop.dynamics.analysis import DynamicResults
@@ -34,6 +38,16 @@ AnyResults = Results | DynamicResults
 
 #: Most curves on one plot (KDAM's limit).
 MAX_CURVES = 6
+#: Most units drawn on y-axes side by side; more go on stacked panels.
+MAX_AXES = 3
+#: How far each further right y-axis is pushed out (fraction of the axes width).
+AXIS_OFFSET = 0.16
+#: Line style of the curves of the first, second, ... y-axis.
+AXIS_STYLES = ("-", "--", "-.", ":")
+#: Gap (points) between the x-axis label and a legend below it.
+LEGEND_GAP = 4.0
+#: How :func:`plot_parameters` lays out several units.
+LAYOUTS = ("auto", "axes", "panels")
 #: The operations of :func:`combine`.
 COMBINATIONS = ("sum", "difference", "product", "ratio", "power")
 _SYMBOL = {"sum": "+", "difference": "−", "product": "·", "ratio": "/", "power": "^"}
@@ -187,45 +201,109 @@ def broken_at_jumps(x: Array, y: Array, period: float | None) -> tuple[Array, Ar
     return (np.insert(x.astype(float), jumps, np.nan), np.insert(y.astype(float), jumps, np.nan))
 
 
-def draw_curves(ax: Axes, x: Series, curves: Sequence[Series], display: Display,
-                *, styles: Sequence[str] | None = None) -> list[Axes]:
-    """Draw ``curves`` against ``x`` on ``ax``, with a second y-axis (``ax.twinx()``) for
-    the curves whose display unit differs from the first curve's.
+def unit_groups(curves: Sequence[Series], display: Display) -> dict[str, list[int]]:
+    """The display unit of each y-axis (in the order the curves first use it) and the
+    indices of its curves: ``{'m': [0], 'm/s': [1], 'm/s^2': [2]}``."""
+    groups: dict[str, list[int]] = {}
+    for i, curve in enumerate(curves):
+        groups.setdefault(curve.unit_text(display), []).append(i)
+    return groups
 
-    Raises ViewError for more than :data:`MAX_CURVES` curves or more than two units.
-    Returns the y-axes used (one or two).
-    """
+
+def check_curves(curves: Sequence[Series], display: Display) -> None:
+    """ViewError for no curve or more than :data:`MAX_CURVES`, naming the asked curves
+    with their units."""
     if not curves:
         raise ViewError("nothing to plot", "name at least one quantity, e.g. ['a2']")
     if len(curves) > MAX_CURVES:
-        raise ViewError(f"{len(curves)} curves asked for one plot; at most {MAX_CURVES} fit",
-                        "split them over several plots")
-    units = list(dict.fromkeys(c.unit_text(display) for c in curves))
-    if len(units) > 2:
-        groups = "; ".join(f"[{u or '-'}]: " + ", ".join(c.name for c in curves
-                                                       if c.unit_text(display) == u)
-                           for u in units)
-        raise ViewError(f"the curves have {len(units)} different units ({groups}); a plot "
-                        "has at most two y-axes", "plot quantities of at most two units "
-                        "together")
-    axes = {units[0]: ax}
-    if len(units) == 2:
-        axes[units[1]] = ax.twinx()
+        asked = ", ".join(c.label(display) for c in curves)
+        raise ViewError(f"{len(curves)} curves asked for one plot ({asked}); at most "
+                        f"{MAX_CURVES} fit", "split them over several plots")
+
+
+def draw_curves(ax: Axes, x: Series, curves: Sequence[Series], display: Display,
+                *, styles: Sequence[str] | None = None, xlabel: bool = True) -> list[Axes]:
+    """Draw up to :data:`MAX_CURVES` ``curves`` against ``x`` on ``ax``, one y-axis per
+    display unit: the first unit on the left, the second on the right, each further one
+    on the right again, its spine pushed out by :data:`AXIS_OFFSET` of the axes width.
+
+    Each y-axis is labelled with its curves' names and its unit; an axis of one curve is
+    coloured like it.  The legend goes below the x-axis label (``xlabel=False``: no
+    label, e.g. over another plot sharing x), outside the curves.
+    Returns the y-axes, one per unit, in the order of :func:`unit_groups`.
+    """
+    check_curves(curves, display)
+    groups = unit_groups(curves, display)
+    axes = [ax]
+    for k in range(1, len(groups)):
+        twin = ax.twinx()
+        for side in ("left", "top", "bottom"):  # the host draws these
+            twin.spines[side].set_visible(False)
+        if k > 1:
+            twin.spines["right"].set_position(("axes", 1.0 + AXIS_OFFSET * (k - 1)))
+        axes.append(twin)
     xs = x.shown(display)
-    for i, curve in enumerate(curves):
-        unit = curve.unit_text(display)
-        style = styles[i] if styles else ("-" if unit == units[0] else "--")
-        xx, yy = broken_at_jumps(xs, curve.shown(display), _shown_period(curve, display))
-        axes[unit].plot(xx, yy, style, color=f"C{i}",
-                        label=curve.label(display))
-    for unit, axis in axes.items():
-        names = [c.name for c in curves if c.unit_text(display) == unit]
-        axis.set_ylabel(", ".join(names) + (f" [{unit}]" if unit else ""))
-    ax.set_xlabel(x.label(display))
+    for axis, (unit, members) in zip(axes, groups.items(), strict=True):
+        _draw_group(axis, xs, curves, members, unit, display, styles,
+                    AXIS_STYLES[axes.index(axis) % len(AXIS_STYLES)])
+    ax.set_xlabel(x.label(display) if xlabel else "")
     ax.grid(True, alpha=0.3)
-    handles = [h for axis in axes.values() for h in axis.get_legend_handles_labels()[0]]
-    ax.legend(handles=handles, loc="best", fontsize="small")
-    return list(axes.values())
+    legend_below(ax, [line for axis in axes for line in axis.get_lines()])
+    return axes
+
+
+def draw_panels(figure: Figure, x: Series, curves: Sequence[Series], display: Display,
+                *, styles: Sequence[str] | None = None) -> list[Axes]:
+    """Draw ``curves`` against ``x`` on stacked panels of ``figure`` sharing the x-axis,
+    one panel (y-axis) per display unit, labelled as in :func:`draw_curves`; the legend
+    goes below the bottom panel's x-axis label.  Returns the panels, top first."""
+    check_curves(curves, display)
+    groups = unit_groups(curves, display)
+    panels = list(np.atleast_1d(figure.subplots(len(groups), 1, sharex=True)))
+    xs = x.shown(display)
+    for panel, (unit, members) in zip(panels, groups.items(), strict=True):
+        _draw_group(panel, xs, curves, members, unit, display, styles, "-")
+        panel.grid(True, alpha=0.3)
+    panels[-1].set_xlabel(x.label(display))
+    legend_below(panels[-1], [line for panel in panels for line in panel.get_lines()])
+    return panels
+
+
+def _draw_group(axis: Axes, xs: Array, curves: Sequence[Series], members: list[int],
+                unit: str, display: Display, styles: Sequence[str] | None,
+                style: str) -> None:
+    """The curves ``members`` (of one ``unit``) on ``axis``; its y-axis label names them
+    with the unit and takes the colour of a lone curve."""
+    for i in members:
+        curve = curves[i]
+        xx, yy = broken_at_jumps(xs, curve.shown(display), _shown_period(curve, display))
+        axis.plot(xx, yy, styles[i] if styles else style, color=f"C{i}",
+                  label=curve.label(display))
+    names = ", ".join(curves[i].name for i in members)
+    axis.set_ylabel(names + (f" [{unit}]" if unit else ""))
+    if len(members) == 1:
+        color = f"C{members[0]}"
+        axis.yaxis.label.set_color(color)
+        axis.tick_params(axis="y", colors=color)
+        axis.spines[axis.yaxis.get_ticks_position()].set_edgecolor(color)
+
+
+def legend_below(ax: Axes, handles: Sequence[Artist]) -> None:
+    """The legend of ``handles`` centred under the x-axis tick labels and label of ``ax``
+    (as far as they are shown), in up to three columns, so it never covers a curve
+    (constrained layout makes room for it)."""
+    below = rcParams["xtick.major.size"] + LEGEND_GAP
+    if ax.xaxis.get_tick_params().get("labelbottom", True):
+        below += rcParams["xtick.major.pad"] + 1.3 * FontProperties(
+            size=rcParams["xtick.labelsize"]).get_size_in_points()
+    if ax.get_xlabel():
+        below += rcParams["axes.labelpad"] + 1.3 * FontProperties(
+            size=rcParams["axes.labelsize"]).get_size_in_points()
+    figure, _ = axes_for(ax)
+    anchor = offset_copy(ax.transAxes, figure, y=-below, units="points")
+    ax.legend(handles=list(handles), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+              bbox_transform=anchor, ncols=min(3, len(handles)), fontsize="small",
+              borderaxespad=0.0)
 
 
 def _shown_period(curve: Series, display: Display) -> float | None:
@@ -239,23 +317,48 @@ def _shown_period(curve: Series, display: Display) -> float | None:
 
 def plot_parameters(results: AnyResults, names: str | Sequence[str], *,
                     against: str = "position", display: Display = DEFAULT_DISPLAY,
-                    ax: Axes | None = None) -> Figure:
-    """Dependencies of up to six quantities on ``against`` (``'position'``, ``'time'``,
-    ``'arg1'``, or any other name), in the display units, on one plot.
+                    ax: Axes | None = None, layout: str = "auto") -> Figure:
+    """Dependencies of up to six quantities of any units on ``against``
+    (``'position'``, ``'time'``, ``'arg1'``, or any other name), in the display units.
 
-    Curves whose unit differs from the first curve's go on a second y-axis (dashed);
-    more than six curves, or more than two units, raise ViewError.  Positions where the
+    Curves of one unit share a y-axis.  ``layout``: ``'axes'`` — one plot with a y-axis
+    per unit, side by side (:func:`draw_curves`); ``'panels'`` — stacked panels sharing
+    the x-axis, one per unit (:func:`draw_panels`); ``'auto'`` (default) — y-axes for up
+    to :data:`MAX_AXES` units, panels for more.  With ``ax`` the curves go on that axes
+    (``'auto'`` then means y-axes; ``'panels'`` needs a figure of its own).  More than
+    six curves raise a ViewError naming them with their units.  Positions where the
     chain breaks are gaps.
     """
+    if layout not in LAYOUTS:
+        raise ViewError(f"unknown layout {layout!r}", f"use one of {', '.join(LAYOUTS)}")
     source = _Source(results)
     names = [names] if isinstance(names, str) else list(names)
     if len(names) > MAX_CURVES:
-        raise ViewError(f"{len(names)} curves asked for one plot ({', '.join(names)}); at "
-                        f"most {MAX_CURVES} fit", "split them over several plots")
+        asked = ", ".join(_asked(source, n, display) for n in names)
+        raise ViewError(f"{len(names)} curves asked for one plot ({asked}); at most "
+                        f"{MAX_CURVES} fit", "split them over several plots")
     curves = [source.get(n) for n in names]
+    x = source.get(against)
+    panels = layout == "panels" or (
+        layout == "auto" and ax is None and len(unit_groups(curves, display)) > MAX_AXES)
+    if panels:
+        if ax is not None:
+            raise ViewError("stacked panels cannot be drawn on given axes",
+                            "leave out ax=, or use layout='axes'")
+        figure = new_figure(8.0, 1.2 + 1.9 * len(unit_groups(curves, display)))
+        draw_panels(figure, x, curves, display)
+        return figure
     figure, ax = axes_for(ax)
-    draw_curves(ax, source.get(against), curves, display)
+    draw_curves(ax, x, curves, display)
     return figure
+
+
+def _asked(source: _Source, name: str, display: Display) -> str:
+    """``'dr3 [m/s]'`` for a known name, the name as given otherwise."""
+    try:
+        return source.get(name).label(display)
+    except ViewError:
+        return name
 
 
 # ------------------------------------------------------------------------- combinations

@@ -51,9 +51,9 @@ def plot_reduced(dyn: DynamicResults, *, against: str = "position",
     x = series(dyn, against)
     figure = new_figure(8.0, 7.0)
     top, bottom = figure.subplots(2, 1, sharex=True)
-    draw_curves(top, x, [series(dyn, stems[0]), series(dyn, stems[1])], display)
+    draw_curves(top, x, [series(dyn, stems[0]), series(dyn, stems[1])], display,
+                xlabel=False)
     top.set_title("reduced inertia and its derivative")
-    top.set_xlabel("")
     draw_curves(bottom, x, [series(dyn, stems[2])], display)
     bottom.set_title("reduced load")
     return figure

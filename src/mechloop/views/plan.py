@@ -45,6 +45,7 @@ from mechloop.model.schema import ArgumentRole
 from mechloop.model.units import UnitProblem, unit_factor
 from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
+from mechloop.views.labels import arrange_labels, settle
 
 Complex = NDArray[np.complex128]
 Limits = tuple[float, float, float, float]
@@ -252,8 +253,8 @@ def _legend_handles(scene: PlanScene, *, marks: bool = True) -> list[Artist]:
         handles.append(Line2D([], [], ls="", marker="o", mfc="white", mec="k", ms=6,
                               label="function (α near tail, r near head)"))
     if "argument" in roles:
-        handles.append(Line2D([], [], ls="", marker=(3, 0, -90), mfc="0.5", mec="k", ms=7,
-                              label="argument (α near tail, r near head)"))
+        handles.append(Line2D([], [], ls="", marker=argument_marker(0.0), mfc="0.5", mec="k",
+                              ms=7, label="argument (α near tail, r near head)"))
     if len(scene.ground):
         handles.append(Line2D([], [], ls="", marker="^", mfc="white", mec="k", ms=7,
                               label="ground"))
@@ -320,9 +321,14 @@ def _finite(*values: complex) -> bool:
 
 
 def draw_position(ax: Axes, scene: PlanScene, position: int, *, numbers: bool = True,
-                  marks: bool = True, alpha: float = 1.0) -> list[Artist]:
+                  marks: bool = True, alpha: float = 1.0, arrange: bool = True
+                  ) -> list[Artist]:
     """Draw the vectors (and, for dynamic results, the joints and centres of mass) at
     ``position``; returns the artists, so an animation can remove them for the next frame.
+
+    ``arrange``: place the labels without overlaps on the axes as laid out now
+    (:func:`~mechloop.views.labels.arrange_labels`); a view that lays its figure out
+    afterwards passes False and arranges them then.
 
     Only what is known is drawn: at a chain break, the vectors with unknown ends are left
     out and the axes say "chain break at position k" with the reason.
@@ -348,6 +354,17 @@ def draw_position(ax: Axes, scene: PlanScene, position: int, *, numbers: bool = 
         drawn += _draw_centers(ax, scene, position, alpha)
     if scene.results.broken[position]:
         drawn.append(_break_note(ax, scene, position))
+    if arrange:
+        arrange_labels(ax, drawn)
+    return drawn
+
+
+def _draw_arranged(figure: Figure, ax: Axes, scene: PlanScene, position: int,
+                   **options: Any) -> list[Artist]:
+    """:func:`draw_position` with its labels arranged on the figure as it will be saved."""
+    drawn = draw_position(ax, scene, position, arrange=False, **options)
+    settle(figure, ax)
+    arrange_labels(ax, drawn)
     return drawn
 
 
@@ -371,13 +388,19 @@ def _draw_vector(ax: Axes, scene: PlanScene, n: int, tail: complex, head: comple
         at = tail + fraction * (head - tail)
         if role == "function":
             style: dict[str, Any] = {"marker": "o", "mfc": "white", "ms": 6}
-        else:  # argument: a triangle along the vector (r) or turning it (α)
-            turn = direction + (90.0 if letter == "a" else 0.0)
-            style = {"marker": (3, 0, turn - 90.0), "mfc": color, "ms": 7}
+        else:  # argument: a triangle pointing along the vector
+            style = {"marker": argument_marker(direction), "mfc": color, "ms": 7}
         (mark,) = ax.plot([at.real], [at.imag], ls="", mec="k", mew=0.8, alpha=alpha,
                           zorder=4, gid=f"{role} {letter}{n}", **style)
         drawn.append(mark)
     return drawn
+
+
+def argument_marker(direction: float) -> tuple[int, int, float]:
+    """The marker of an argument parameter: a triangle with a vertex pointing at
+    ``direction`` (deg, counter-clockwise from +x) — matplotlib's ``(3, 0, angle)``
+    points up at angle 0."""
+    return (3, 0, direction - 90.0)
 
 
 def _number_label(ax: Axes, scene: PlanScene, n: int, middle: complex, shift: int,
@@ -390,6 +413,7 @@ def _number_label(ax: Axes, scene: PlanScene, n: int, middle: complex, shift: in
                         bbox={"boxstyle": "round,pad=0.15", "fc": "white",
                               "ec": scene.color(n), "lw": 0.6, "alpha": alpha})
     label.set_gid(f"number {n}")
+    label.set_in_layout(False)
     return label
 
 
@@ -414,6 +438,7 @@ def _draw_joints(ax: Axes, scene: PlanScene, position: int, alpha: float) -> lis
                             textcoords="offset points", fontsize=8, fontweight="bold",
                             zorder=7, alpha=alpha, annotation_clip=False)
         label.set_gid(f"joint label {pair.name}")
+        label.set_in_layout(False)
         drawn.append(label)
     return drawn
 
@@ -431,7 +456,8 @@ def _draw_centers(ax: Axes, scene: PlanScene, position: int, alpha: float) -> li
                               color="k", mew=0, zorder=6, alpha=alpha)
         label = ax.annotate(f"S{body}", (z.real, z.imag), xytext=(5, -10),
                             textcoords="offset points", fontsize=7, zorder=7, alpha=alpha,
-                            annotation_clip=False)
+                            annotation_clip=False, gid=f"center label S{body}")
+        label.set_in_layout(False)
         drawn += [ring, quarters, label]
     return drawn
 
@@ -486,7 +512,7 @@ def plot_plan(results: Results | DynamicResults, position: int, *, ax: Axes | No
     number at the middle (``numbers``); the ground is hatched at the fixed points; a
     function parameter is marked by a circle and an argument parameter by a triangle (on
     the vector at 1/4 of its length from the tail for the angle α, at 3/4 for the length
-    r; an argument's triangle points along the vector for r and turns it for α).  With
+    r; an argument's triangle points along the vector).  With
     :class:`~mechloop.dynamics.analysis.DynamicResults` the centres of mass (``S1``, ...)
     and the joints are drawn and named.
 
@@ -503,8 +529,8 @@ def plot_plan(results: Results | DynamicResults, position: int, *, ax: Axes | No
     box = resolve_limits(scene, limits, position)
     figure, ax = _target(ax, box)
     setup_axes(ax, scene, box, grid=grid, axes=axes, legend=_legend_handles(scene))
-    draw_position(ax, scene, position, numbers=numbers)
     ax.set_title(position_title(scene, position), fontsize=10)
+    _draw_arranged(figure, ax, scene, position, numbers=numbers)
     return figure
 
 
@@ -539,13 +565,13 @@ def plot_overlay(results: Results | DynamicResults, positions: Iterable[int] | N
         ax.add_collection(LineCollection(segments, colors=[scene.color(n)], alpha=alpha,
                                          linewidths=1.4, zorder=2, gid=f"overlay {n}"),
                           autolim=False)
-    if highlight is not None:
-        draw_position(ax, scene, check_position(scene, highlight))
     broken = [p for p in chosen if scene.results.broken[p]]
     title = f"{scene.results.model.name or 'mechanism'}: positions {compress_positions(chosen)}"
     if broken:
         title += f"\nchain break at positions {compress_positions(broken)}"
     ax.set_title(title, fontsize=10)
+    if highlight is not None:
+        _draw_arranged(figure, ax, scene, check_position(scene, highlight))
     return figure
 
 
@@ -636,12 +662,12 @@ def plot_trajectories(results: Results | DynamicResults, points: Sequence[Any], 
     for i, (label, _) in enumerate(paths):
         handles.append(Line2D([], [], color=colors(i % 8), lw=1.6, label=label))
     setup_axes(ax, scene, box, grid=grid, axes=axes, legend=handles)
-    draw_position(ax, scene, position, numbers=numbers, alpha=0.7)
+    ax.set_title(position_title(scene, position) + ", trajectories", fontsize=10)
+    _draw_arranged(figure, ax, scene, position, numbers=numbers, alpha=0.7)
     for i, (label, z) in enumerate(paths):
         ax.plot(z.real, z.imag, color=colors(i % 8), lw=1.6, zorder=8,
                 gid=f"trajectory {label}")
         if np.isfinite(z[position]):
             ax.plot([z[position].real], [z[position].imag], ls="", marker="o", ms=4,
                     color=colors(i % 8), zorder=9)
-    ax.set_title(position_title(scene, position) + ", trajectories", fontsize=10)
     return figure
