@@ -33,6 +33,7 @@ import mechloop
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
+EXAMPLE_FILES = sorted(p for p in EXAMPLES.rglob("*") if p.is_file())  # examples/course too
 SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = re.compile(r"(?<![\w.\-/])(\d+(?:,\d{3})*(?:\.\d+)?(?:e[-+]?\d+|·10[⁻⁰-⁹¹²³]+)?)"
                     r"(?![a-zA-Z_\d])")
@@ -73,14 +74,9 @@ def _header(path: Path) -> str:
     return "\n".join(lines)
 
 
-def _example_files() -> list[Path]:
-    """Every file of examples/, its subfolders' too (examples/cams/)."""
-    return sorted(p for p in EXAMPLES.rglob("*") if p.is_file())
-
-
 def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
     out = []
-    for path in _example_files():
+    for path in EXAMPLE_FILES:
         header = _header(path)
         for block in re.split(r"\n\s*\n", header):
             if block.strip():
@@ -93,7 +89,7 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 def _pool() -> set[float]:
     """Numbers of the examples' data (outside comments) and of the README's code blocks."""
-    texts = [line.split("#")[0] for p in _example_files()
+    texts = [line.split("#")[0] for p in EXAMPLE_FILES
              for line in p.read_text(encoding="utf-8").splitlines()]
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
@@ -251,10 +247,25 @@ R = "README.md"
 SCRIPTS = "tests/test_docs_and_cli.py::test_example_scripts_run"
 SLIDER = "tests/test_classical_start.py::test_slider_crank_example_has_its_stroke_and_time_ratio"
 BEATS = "tests/test_benchmark_problems.py::test_the_example_beats_every_published_design"
+KHK = "tests/test_gears_pair.py::test_the_khk_worked_example_of_a_profile_shifted_pair"
+TWO_ROW = "tests/test_gears_planetary.py::test_a_two_row_choice_meets_every_condition"
 FIGURES: list[tuple[str, str, tuple]] = [
     # energy example (the compressor)
     (R, r"efficiency \((?P<fig>28) %\)",
      ("test", "tests/test_readme_commands.py::test_energy_example_prints_a_meaningful_efficiency")),
+    # indicator diagrams
+    (R, r"diagram does (?P<fig>332\.5) J", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"positions read (?P<fig>331\.3) J", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"takes (?P<fig>147\.5) J a turn", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"volumetric efficiency\s+(?P<fig>0\.840)", ("test", "tests/test_indicator_load.py::"
+     "test_the_indicator_examples_figures")),
+    (R, r"steady state after (?P<fig>7\.77) s", ("test", "tests/test_engine_startup.py::"
+     "test_the_starter_brings_the_engine_to_its_steady_state")),
+    (R, r"at a\s+mean (?P<fig>1498) rpm", ("test", "tests/test_engine_startup.py::"
+     "test_the_starter_brings_the_engine_to_its_steady_state")),
     # a coupled block's break between two positions
     (R, r"lost for about (?P<fig>1\.2)° of the", ("test", "tests/test_coupled_existence.py::"
      "test_a_triad_break_between_two_samples_is_found_where_the_oracle_loses_it")),
@@ -425,6 +436,14 @@ FIGURES: list[tuple[str, str, tuple]] = [
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
     ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
+    # gears: the KHK worked example and the two-row choice
+    (R, r"`a = (?P<fig>56\.4999)`", ("test", KHK)),
+    (R, r"`α_w = (?P<fig>26\.0886)°`", ("test", KHK)),
+    (R, r"`ε_α = (?P<fig>1\.202)`", ("test", KHK)),
+    (R, r"`z = (?P<fig>18)/54/27/99`", ("test", TWO_ROW)),
+    (R, r"`z = 18/(?P<fig>54)/27/99`", ("test", TWO_ROW)),
+    (R, r"`z = 18/54/(?P<fig>27)/99`", ("test", TWO_ROW)),
+    (R, r"`z = 18/54/27/(?P<fig>99)`", ("test", TWO_ROW)),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row
@@ -435,6 +454,9 @@ FIGURES += [(R, f"`{law}` \\|" + _CELL * column + r" (?P<fig>[\d.]+) \|",
 
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
+    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
+           r"4\.3", "a cited standard or reference"),
+    ("planetary_choice.yaml", r"within 1 %", "the example's search.tolerance (0.01)"),
     (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
            r"|part \d|table [\d.]+))*", "a section of the course's seed documents"),
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
@@ -453,6 +475,10 @@ INPUTS: list[tuple[str | None, str, str]] = [
         "--positions 100000 (position, time, argument 1, 9 per four-bar, chain_break)"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
+    (R, r"Jacobian columns\) falls to 1e-6", "a rule of the code (its constant, "
+        "mechloop.dynamics.simulate_inputs.NEAR_BREAK)"),
+    (R, r"a spring\) over 2 s", "the run's duration in tests/test_simulate_inputs.py::"
+        "test_a_conservative_five_bar_keeps_its_energy_for_many_seconds"),
     (R, r"2\.5243549e-29|1\.9239227e-06|1\.2162122e\+00|best design\s+\(1\.2162122\)",
      "the source's recorded best (Records_HCDJ_Case*.txt, quoted in benchmarks/README.md)"),
     (R, r"<= (1e-10|7\.5e-07|1\.21621)\)", "the success bars: issue 11's acceptance "
@@ -487,10 +513,19 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("hydraulic_rocker.yaml", r"law in 4 s", "the argument's law ends at 4 s"),
     ("single_cylinder_engine.yaml", r"0\.09 MPa|n = 1\.35|5\.5 MPa at 370 deg|n = 1\.25|"
      r"0\.11 MPa from 540 deg", "the assumed indicator diagram behind the gas-force table"),
+    ("compressor_indicator.yaml", r"clearance 5 %", "the input clearance: 0.05"),
+    ("engine_startup.yaml", r"released at 1\.5 s", "the starter's input off_at: 1.5"),
     ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
     ("four_bar_break_ahead.yaml", r"390 mm", "coupler + rocker, 140 + 250 mm"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
+    ("README.md", r"^\| (1[3-9]|20) \| ", "a course task's number (seed 000 sec. 3)"),
+    # the course models of examples/course/: the drawing's points (the frame vectors are
+    # computed from them), the time the argument's law takes, assumed air loads
+    (None, r"\b[A-Z]\d? \(-?\d+, ?-?\d+\)", "a point of a course model's drawing, mm"),
+    (None, r"in \d+ s \(3-4-5 polynomial law", "the time of the argument's law (its end "
+     "position over the model's time table)"),
+    (None, r"\d+(\.\d+)? kPa on \d+ m × 0\.8 m", "an assumed wind pressure on an area"),
 ]
 
 

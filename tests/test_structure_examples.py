@@ -30,8 +30,15 @@ HAND = {
     "course_project_sheets.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),  # + project: cam
     "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "engine_indicator.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "engine_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "compressor_indicator.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "compressor_startup.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "spring_release.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    # five-bar: cranks 1 and 4 each pinned to the frame (two input groups), links 2 and 3
+    # pinned to the cranks and to each other: n = 4, p5 = 5, W = 12 − 10 = 2 (two
+    # inputs); links 2 + 3 are an RRR dyad (L1).
+    "two_input_five_bar.yaml": (4, 5, 0, 2, "L0(1) → L0(4) → L1(2,3)", 2),
     # shaper: crank 1 (R to the frame), block 2 (R on the crank pin, P along the lever),
     # lever 3 (R to the frame), rod 4 (R to the lever and to the ram), ram 5 (P on the
     # guide): n = 5, p5 = 7, W = 15 − 14 = 1.  Block + lever with pins at both ends and the
@@ -94,7 +101,7 @@ def test_every_example_is_in_one_list():
 def test_structure_matches_the_hand_analysis(name: str):
     mob, dec = analyze(mechloop.load_model(EXAMPLES / name))
     n, p5, p4, w, formula, klass = HAND[name]
-    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (n, p5, p4, w, 1)
+    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (n, p5, p4, w, w)  # W inputs
     assert mob.W == 3 * mob.n - 2 * mob.p5 - mob.p4
     assert dec.formula == formula
     assert dec.mechanism_class == klass
@@ -105,3 +112,44 @@ def test_kinematic_only_examples_are_refused_with_the_fix(name: str):
     with pytest.raises(ModelError) as info:
         analyze(mechloop.load_model(EXAMPLES / name))
     assert "no bodies" in str(info.value)
+
+
+# The course-project models of examples/course/ (seed 000 sec. 3), by hand from each
+# file's header sketch: file: (n, p5, p4, W, formula, class).
+COURSE = EXAMPLES / "course"
+COURSE_HAND = {
+    # leg 1 (pinned at O, driven by the cylinder), lower brace 2 (pins C, K), upper brace 3
+    # (pins K, B): four pins, W = 9 − 8 = 1; the braces are an RRR dyad on the leg.
+    "01_an10_landing_gear.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # upper brace 1 driven at its knee (pins B, K), lower brace 2 (K, C), leg 3 (C, O)
+    "02_landing_gear.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # No. 1's leg and braces, then the bogie 4 (pin W on the leg) and the tilting rod 5
+    # (pins F, H): seven pins, W = 15 − 14 = 1; a second RRR dyad.
+    "03_tu154_landing_gear.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L1(4,5)", 2),
+    # the bell crank 1 (pin B) driven by the cylinder, lower brace 2 and leg 3 a dyad
+    "04_an10_landing_gear_b.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # the leg held by two links and the cylinder (its own pin C): pins O1, A, O2, B; the
+    # drive between the ground and the leg keeps all three links in one group (class III)
+    "06_landing_gear_four_bar.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
+    # the cylinder between the leg and the upper brace: the drive closes the contour
+    # leg–lower brace–upper brace–cylinder of four sides, one group of all three links
+    "07_landing_gear_jack_on_brace.yaml": (3, 4, 0, 1, "L0(1,2,3)", 4),
+    # leg 1 (pin O) driven, rod 2 (pins R, Q), door 3 (pin H): an RRR dyad
+    "08_nose_gear_door.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # carriage 1 on the rail (slide), strut 2 (pins S, K), leg 3 (pin O): three pins and
+    # the slide, W = 9 − 8 = 1
+    "09_lunar_lander_gear.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # lever 1 (pin L) driven, rod 2 (pins A, Q), mast 3 (pin M): an RRR dyad
+    "10_cable_mast.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # the boom alone, pinned at O and driven by the cylinder: W = 3 − 2 = 1
+    "11_erector.yaml": (1, 1, 0, 1, "L0(1)", 2),
+}
+
+
+@pytest.mark.parametrize("name", sorted(COURSE_HAND))
+def test_course_model_structure_matches_the_hand_analysis(name: str):
+    mob, dec = analyze(mechloop.load_model(COURSE / name))
+    n, p5, p4, w, formula, klass = COURSE_HAND[name]
+    assert (mob.n, mob.p5, mob.p4, mob.W, mob.inputs) == (n, p5, p4, w, 1)
+    assert dec.formula == formula
+    assert dec.mechanism_class == klass

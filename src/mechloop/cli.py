@@ -359,7 +359,8 @@ def simulate(
 ) -> None:
     """Simulate the machine's motion in time (start-up, run-down, the approach to the
     steady cycle) from the model's simulate: section: a motor on the input, the start
-    state, the loads over the positions.
+    state, the loads over the positions.  A model with several inputs moves by
+    Lagrange's equations (motors, start and stop_at per input).
 
     Prints how the run ended, the cycles, the time to steady state and the energy balance.
     Example:
@@ -406,6 +407,12 @@ def _print_simulation(sim) -> None:
     import numpy as np
 
     from mechloop.dynamics.motors import RPM
+    from mechloop.dynamics.simulate_inputs import InputsSimulation, summary_lines
+
+    if isinstance(sim, InputsSimulation):  # several inputs: Lagrange's equations
+        for line in summary_lines(sim):
+            out.print(line)
+        return
 
     machine = sim.machine
     accuracy = machine.interpolation
@@ -1142,6 +1149,215 @@ def cam_command(
 
         out.print(f"wrote {write_vector_model(design, vector_model)} (mechloop plot "
                   f"{vector_model} envelope draws its profile)")
+
+
+@app.command(cls=_Command)
+@user_errors
+def indicator(
+    model: ModelPath,
+    output: Annotated[Path | None, typer.Option(
+        "-o", "--output", help="write the diagrams over the positions here (angle, and "
+        "each load's stroke, V, p, F): .csv, .json, .parquet or .xlsx (default: none)")
+                      ] = None,
+    plot_file: Annotated[Path | None, typer.Option(
+        "--plot", help="draw p–V and p–φ of each indicator load: .png, .svg or .pdf "
+        "(default: none)")] = None,
+    force: Force = False,
+) -> None:
+    """The indicator diagrams of the model's gas forces (forces whose value is an engine's
+    or compressor's cycle): stroke, swept and clearance volume, the diagram's work by its
+    closed form and over the positions, the mean indicated pressure, the peak pressure.
+
+    Example:
+
+    ```
+    mechloop indicator examples/engine_indicator.yaml --plot indicator.png
+    ```
+    """
+    from mechloop.dynamics.indicator import model_indicators
+    from mechloop.engines import CompressorCycle, volumetric_efficiency
+    from mechloop.model.load import load_model, locate
+    from mechloop.views.figure import FIGURE_SUFFIXES
+
+    _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
+    m = load_model(model)
+    try:
+        items = model_indicators(m)
+    except ModelError as exc:
+        raise locate(exc, model) from None
+    for item in items:
+        gas, cycle = item.gas, item.cycle
+        compressor = isinstance(cycle, CompressorCycle)
+        kind = "compressor" if compressor else f"{cycle.strokes}-stroke engine"
+        rows = _table(f"{item.name}: {kind}", ["quantity", "value"])
+        for name, value in (
+                ("stroke [mm]", (gas.top - gas.bottom) * 1e3),
+                ("swept volume V_h [cm³]", gas.swept * 1e6),
+                ("clearance volume V_c [cm³]", gas.clearance * 1e6),
+                ("∮p dV, closed form [J]", item.loop_work),
+                ("∮p dV over the positions [J]", item.sampled_work),
+                ("mean indicated pressure [MPa]", item.loop_work / gas.swept / 1e6),
+                ("peak pressure [MPa]", gas.pressure.max() / 1e6)):
+            rows.add_row(name, f"{value:.6g}")
+        if compressor:
+            rows.add_row("volumetric efficiency λ_V", f"{volumetric_efficiency(cycle):.6g}")
+        out.print(rows)
+    out.print("∮p dV is negative for a compressor (the work it takes); over the positions: "
+              "the trapezoidal rule in V through the model's positions")
+    if output is not None:
+        from mechloop.views.indicator import indicator_frame
+
+        _write_frame(indicator_frame(items), output)
+        out.print(f"wrote {output}")
+    if plot_file is not None:
+        from mechloop.views.figure import save_figure
+        from mechloop.views.indicator import plot_indicators
+
+        save_figure(plot_indicators(items, title=m.name), plot_file)
+        out.print(f"wrote {plot_file}")
+@app.command(name="examples", cls=_Command)
+@user_errors
+def examples_command(
+    course: Annotated[bool, typer.Option("--course", help="the course-project models "
+                                         "only")] = False,
+) -> None:
+    """List the bundled examples: the course-project models (task number, English and
+    Russian titles), then every other example with its title.
+
+    Copy one to start from with mechloop new. Example:
+
+    ```
+    mechloop examples --course
+    ```
+    """
+    from mechloop.bundled import examples
+
+    found = examples(course_only=course)
+    course_rows = [e for e in found if e.course]
+    if course_rows:
+        rows = _table("Course project (seed 000 sec. 3)", ["No.", "file", "title", "название"])
+        for e in course_rows:
+            rows.add_row(str(e.number), e.path.name, e.title, e.title_ru)
+        out.print(rows)
+    others = [e for e in found if not e.course]
+    if others:
+        rows = _table("Examples", ["file", "title"])
+        for e in others:
+            rows.add_row(e.path.name, e.title)
+        out.print(rows)
+    out.print("start from one: mechloop new NAME [DIR] (a task number, a file name or a "
+              "unique prefix)")
+
+
+@app.command(name="new", cls=_Command)
+@user_errors
+def new_command(
+    name: Annotated[str, typer.Argument(help="a course task number (1..20), an example's "
+                                        "file name or a unique prefix of it",
+                                        show_default=False)],
+    target: Annotated[Path | None, typer.Argument(help="folder (default: the current one) "
+                                                  "or file to write", show_default=False)
+                      ] = None,
+) -> None:
+    """Copy a bundled example (mechloop examples lists them) to start a model from; an
+    existing file is never overwritten.
+
+    Example:
+
+    ```
+    mechloop new 1 my_models/
+    ```
+    """
+    from mechloop.bundled import new_model
+
+    example, path = new_model(name, target)
+    title = example.title + (f" — {example.title_ru}" if example.title_ru else "")
+    out.print(f"wrote {path} ({title})")
+
+
+
+gear_app = typer.Typer(help="Involute gear pairs and planetary trains (course project sheet "
+                       "3): geometry, checks, drawings, the choice of tooth numbers.",
+                       no_args_is_help=True, cls=_Group, rich_markup_mode="markdown")
+app.add_typer(gear_app, name="gear")
+GearFile = Annotated[Path | None, typer.Argument(help="gear file (.yaml or .json) with a "
+                                                 "gear_pair: or planetary: section; or give "
+                                                 "the options instead", show_default=False)]
+
+
+@gear_app.command("pair", cls=_Command)
+@user_errors
+def gear_pair_command(
+    model: GearFile = None,
+    module: Annotated[float | None, typer.Option("-m", "--module", help="module m_n, mm "
+                      "(without a file)")] = None,
+    teeth: Annotated[tuple[int, int] | None, typer.Option("-z", "--teeth", help="z1 z2 "
+                     "(without a file)")] = None,
+    shifts: Annotated[tuple[float, float] | None, typer.Option("-x", "--shifts", help="x1 x2 "
+                      "(without a file; default 0 0)")] = None,
+    centre_distance: Annotated[float | None, typer.Option("-a", "--centre-distance",
+                               help="centre distance a, mm (without a file; the shifts "
+                               "are then balanced for equal specific sliding)")] = None,
+    pressure_angle: Annotated[float | None, typer.Option("--pressure-angle", help="α_n, "
+                              "degrees (without a file; default 20)")] = None,
+    plot: Annotated[Path | None, typer.Option(help="the drawn meshing (.png, .svg, .pdf); "
+                    "default: none")] = None,
+    sliding: Annotated[Path | None, typer.Option(help="specific sliding over the line of "
+                       "action (.png, .svg, .pdf); default: none")] = None,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="the table (.csv, "
+                      ".json, .parquet, .xlsx); default: print only")] = None,
+    at_diameter: Annotated[list[float] | None, typer.Option("--at-diameter", help="also the "
+                           "tooth thickness and chord on this circle, mm (repeat for more "
+                           "circles); default: none")] = None,
+    force: Force = False,
+) -> None:
+    """Geometry of an external involute spur gear pair: every diameter, tooth thickness,
+    centre distance and working pressure angle, contact ratio, and the undercut,
+    pointed-tooth and interference checks.
+
+    Example:
+
+    ```
+    mechloop gear pair examples/gears/gear_pair.yaml --plot mesh.png
+    mechloop gear pair -m 3 -z 12 24 -x 0.6 0.36
+    ```
+    """
+    from mechloop.gears.commands import run_pair
+
+    run_pair(model, {"module": module, "teeth": teeth, "shifts": shifts,
+                     "centre_distance": centre_distance, "pressure_angle": pressure_angle},
+             out=out, plot=plot, sliding=sliding, table=output, force=force,
+             diameters=at_diameter)
+
+
+@gear_app.command("planetary", cls=_Command)
+@user_errors
+def gear_planetary_command(
+    model: Annotated[Path, typer.Argument(help="gear file (.yaml or .json) with a "
+                                          "planetary: section", show_default=False)],
+    plot: Annotated[Path | None, typer.Option(help="the velocity plan (Kutzbach diagram; "
+                    ".png, .svg, .pdf); default: none")] = None,
+    vector_model: Annotated[Path | None, typer.Option("--model", help="write the train as a "
+                            "vector model (.yaml, .json); default: none")] = None,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="the designs found, or "
+                      "the analysis (.csv, .json, .parquet, .xlsx); default: print only")
+                      ] = None,
+    force: Force = False,
+) -> None:
+    """A planetary train: the ratio by Willis' formula and the coaxiality, assembly and
+    neighbour conditions of given tooth numbers; or the choice of tooth numbers for a
+    target ratio (every combination tried, best first).
+
+    Example:
+
+    ```
+    mechloop gear planetary examples/gears/planetary_choice.yaml --plot plan.png
+    ```
+    """
+    from mechloop.gears.commands import run_planetary
+
+    run_planetary(model, {}, out=out, plot=plot, model=vector_model, table=output,
+                  force=force)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -21,11 +21,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from mechloop.dynamics.elements import RateLaw, element_loads
+from mechloop.dynamics.indicator import check_direction, indicator_force
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import ExpressionValue, ParameterValue
 from mechloop.model.expression import Expression
+from mechloop.model.indicator import IndicatorValue
 from mechloop.model.schema import Model
 from mechloop.model.units import Kind, UnitProblem, to_si
 from mechloop.solve.inputs import Signal, evaluate_signal
@@ -255,8 +257,12 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
                                     f"use one of {sorted(mechanism.bodies)}"))
             continue
-        value = _load_values(model, load.value, "force", units.force, time, n_pos, designs,
-                             state, (*path, "value"), problems)
+        if isinstance(load.value, IndicatorValue):  # the gas force of an indicator diagram
+            value = indicator_force(model, load.value, mechanism, state, designs,
+                                    (*path, "value"), problems)
+        else:
+            value = _load_values(model, load.value, "force", units.force, time, n_pos,
+                                 designs, state, (*path, "value"), problems)
         gate = None if load.when is None else _gate(load, placement, state, path,
                                                      problems)
         if value is None or (load.when is not None and gate is None):
@@ -278,6 +284,8 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             problems.append(Problem((*path, "at"), f"vector {exc.args[0]} does not exist",
                                     f"use one of {sorted(model.vectors)}"))
             continue
+        if isinstance(load.value, IndicatorValue):
+            check_direction(load.value, np.exp(1j * angle), point, placement, path, problems)
         made = _dependent(model, load, value * np.exp(1j * angle), "force", units.force,
                           np.exp(1j * angle), gate, path, problems)
         if made is not None:

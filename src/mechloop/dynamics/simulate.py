@@ -63,6 +63,7 @@ from mechloop.model.units import UnitProblem, to_si
 
 if TYPE_CHECKING:
     from mechloop.dynamics.analysis import DynamicResults
+    from mechloop.dynamics.simulate_inputs import InputsSimulation
     from mechloop.model.schema import Model
     from mechloop.model.simulate import Simulate
 
@@ -420,7 +421,8 @@ def _assemble(machine: ReducedMachine, motor: MotorCurve | None, settings: Setti
 
 def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
              dynamics: DynamicResults | None = None,
-             progress: Callable[[float, float], None] | None = None) -> Simulation:
+             progress: Callable[[float, float], None] | None = None
+             ) -> Simulation | InputsSimulation:
     """The motion in time of a one-input ``model`` (its ``simulate:`` section, or
     ``settings``: a :class:`~mechloop.model.simulate.Simulate` or the same as a mapping).
 
@@ -435,6 +437,10 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
     model cannot be simulated: no settings, not one turning input, a start at a chain
     break or fewer than 4 positions between breaks around it, an input that does not
     advance, no moving mass, ``flywheel: machine`` without a flywheel from ``machine:``.
+
+    A model with several inputs (drives) moves by Lagrange's equations instead:
+    :func:`mechloop.dynamics.simulate_inputs.simulate_inputs` (an
+    :class:`~mechloop.dynamics.simulate_inputs.InputsSimulation`).
     """
     from mechloop.model.simulate import Simulate
 
@@ -457,6 +463,14 @@ def simulate(model: Model, settings: Simulate | dict[str, Any] | None = None, *,
         from mechloop.dynamics.analysis import solve_dynamics
 
         dynamics = solve_dynamics(model)
+    if len(dynamics.mechanism.drives) > 1:  # Lagrange's equations of several inputs
+        from mechloop.dynamics.simulate_inputs import simulate_inputs
+
+        return simulate_inputs(model, settings, dynamics, progress=progress)
+    if dynamics.mechanism.drives:
+        from mechloop.dynamics.simulate_inputs import one_input
+
+        settings = one_input(settings, dynamics.mechanism.drives[0].argument)
     k = dynamics.mechanism.drives[0].argument
     start = settings.start
     q0 = float(dynamics.kinematics.arguments[k][0]) if start.angle is None else _si(

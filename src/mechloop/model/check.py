@@ -12,6 +12,7 @@ import numpy as np
 
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import VectorPoint
+from mechloop.model.indicator import IndicatorValue, indicator_problems
 from mechloop.model.intermediate import check_intermediate
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument, Units
 from mechloop.model.signals import MIN_TIME_STEP
@@ -174,6 +175,8 @@ def _check_loads(model: Model) -> list[Problem]:
                     problems += _check_signal(value, model.positions, path, kind, unit)
                 elif isinstance(value, int | float | str):
                     to_si(value, kind, getattr(units, kind))
+                elif isinstance(value, IndicatorValue):
+                    problems += indicator_problems(value, units, path)
             except UnitProblem as exc:
                 problems.append(_unit_problem(path, exc))
             if kind == "force":

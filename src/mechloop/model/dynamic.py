@@ -17,6 +17,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, Discriminator, Field, Tag, model_validator
 
+from mechloop.model.indicator import IndicatorValue
 from mechloop.model.signals import Argument, Number, Scalar, _Frozen
 
 
@@ -217,6 +218,31 @@ LoadValue = Annotated[
 ]
 
 
+def _force_value_tag(value: Any) -> str | None:
+    if isinstance(value, IndicatorValue) or (isinstance(value, dict) and "piston" in value):
+        return "indicator"
+    return _value_tag(value)
+
+
+#: A force's value: a load value, or the gas force of an indicator diagram
+#: (:mod:`mechloop.model.indicator`).
+ForceValue = Annotated[
+    Annotated[Scalar, Tag("constant")] | Annotated[Argument, Tag("signal")]
+    | Annotated[ParameterValue, Tag("parameter")]
+    | Annotated[ExpressionValue, Tag("expression")]
+    | Annotated[IndicatorValue, Tag("indicator")],
+    Discriminator(
+        _force_value_tag,
+        custom_error_type="load_value",
+        custom_error_message="a force's value is a number, a quantity like '1 kN', a "
+        "table {table: {position: value}}, a law {law: ..., start: [k, v], end: [k, v]}, "
+        "a table over a parameter {of: r5, table: [[value, load], ...]}, an expression "
+        "{expression: '-800*sign(dr5)'} or an indicator diagram {piston: r3, bore: ..., "
+        "engine: {...}}",
+    ),
+]
+
+
 class Force(_Frozen):
     """A force on a body at a point.  Its direction is the angle ``angle`` from +X, or,
     with ``along: K``, the direction of vector K turned by ``angle``; a negative value
@@ -224,7 +250,7 @@ class Force(_Frozen):
 
     body: int = Field(ge=1, description="the body the force acts on")
     at: PointOn = Field(description="point of application")
-    value: LoadValue = Field(description="magnitude over positions (force units)")
+    value: ForceValue = Field(description="magnitude over positions (force units)")
     angle: Scalar = Field(0.0, description="direction (angle units): from +X, or from "
                           "vector 'along'")
     along: int | None = Field(None, description="the force follows this vector's direction")

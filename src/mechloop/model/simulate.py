@@ -95,12 +95,22 @@ class Simulate(_Frozen):
     positions, one cycle of the input), the motor and a flywheel.  The run ends at
     ``duration``, after ``cycles`` cycles, when the machine stops (speed 0), when the input
     reaches ``stop_at``, or, with ``until_steady``, once the motion is steady; with
-    ``reverse`` it turns back instead of stopping."""
+    ``reverse`` it turns back instead of stopping.
+
+    A machine with several inputs (drives) moves by Lagrange's equations
+    ``M(q)·q̈ + h(q, q̇) = Q(q, q̇, t)`` (:mod:`mechloop.dynamics.lagrange`): ``motors``,
+    ``start`` and ``stop_at`` are then keyed by the input's argument number, the run
+    ends at ``duration``, when an input reaches its ``stop_at``, when every input is
+    slower than ``rest_rpm``, or just before the chain breaks."""
 
     motor: Motor | None = Field(None, description="the driving motor (default: none — the "
                                 "machine coasts)")
-    start: Start = Field(Start(), description="state at time 0 (default: position 0, at "
-                         "rest)")
+    motors: dict[int, Motor] | None = Field(
+        None, description="several inputs: a motor per input, keyed by its argument "
+        "number (default: none — the inputs move under the loads alone)")
+    start: Start | dict[int, Start] = Field(
+        Start(), description="state at time 0 (default: position 0, at rest); several "
+        "inputs: one per input, keyed by its argument number")
     duration: Number | None = Field(None, gt=0, description="simulated time, s")
     cycles: int | None = Field(None, ge=1, le=1_000_000, description="stop after this many "
                                "cycles of the input")
@@ -112,9 +122,13 @@ class Simulate(_Frozen):
     reverse: bool = Field(False, description="keep going when the speed passes through "
                           "zero (the machine turns back: loads over positions that store "
                           "energy, such as gravity) instead of ending the run there")
-    stop_at: Scalar | None = Field(None, description="stop when the input's angle "
-                                   "reaches this value (angle units; it grows by a "
-                                   "cycle each cycle)")
+    stop_at: Scalar | dict[int, Scalar] | None = Field(
+        None, description="stop when the input's angle reaches this value (angle units; "
+        "it grows by a cycle each cycle); several inputs: per input, keyed by its "
+        "argument number")
+    rest_rpm: Number | None = Field(None, gt=0, description="several inputs: end the run "
+                                    "once every input turns slower than this, rpm "
+                                    "(default: never)")
     flywheel: Literal["machine"] | Scalar | None = Field(
         None, description="a flywheel on the input: its moment of inertia (inertia units), "
         "or 'machine' for the one machine: sizes for its delta")
@@ -133,4 +147,6 @@ class Simulate(_Frozen):
     def _an_end(self) -> Simulate:
         if self.duration is None and self.cycles is None:
             raise ValueError("give duration (s) or cycles: the run needs an end")
+        if self.motor is not None and self.motors is not None:
+            raise ValueError("give motor (one input) or motors (one per input), not both")
         return self

@@ -14,19 +14,21 @@ import pint
 
 from mechloop.model.numbers import MAX_QUANTITY_CHARS, RANGE, flush, usable
 
-Kind = Literal["length", "angle", "mass", "inertia", "force", "moment", "acceleration"]
+Kind = Literal["length", "angle", "mass", "inertia", "force", "moment", "acceleration",
+               "pressure"]
 
 #: What each kind of quantity is called in messages and which unit is SI for it.
 SI_UNIT: dict[Kind, str] = {"length": "m", "angle": "rad", "mass": "kg",
                             "inertia": "kg*m^2", "force": "N", "moment": "N*m",
-                            "acceleration": "m/s^2"}
+                            "acceleration": "m/s^2", "pressure": "Pa"}
 EXAMPLES: dict[Kind, str] = {"length": "m, cm, mm", "angle": "deg, rad, grad",
                              "mass": "kg, g, t", "inertia": "kg*m^2, g*cm^2",
                              "force": "N, kN, kgf", "moment": "N*m, kN*m, kgf*m",
-                             "acceleration": "m/s^2, g0"}
+                             "acceleration": "m/s^2, g0", "pressure": "Pa, kPa, MPa, bar"}
 SAMPLE: dict[Kind, str] = {"length": "50 mm", "angle": "90 deg", "mass": "2 kg",
                            "inertia": "0.01 kg*m^2", "force": "1000 N",
-                           "moment": "50 N*m", "acceleration": "9.81 m/s^2"}
+                           "moment": "50 N*m", "acceleration": "9.81 m/s^2",
+                           "pressure": "0.1 MPa"}
 
 
 class UnitProblem(ValueError):

@@ -1,5 +1,7 @@
 """Views of a machine's motion in time (:class:`~mechloop.dynamics.simulate.Simulation`):
-the input's angle, speed and acceleration over time, and the phase portrait ω(q)."""
+the input's angle, speed and acceleration over time, and the phase portrait ω(q); for a
+machine with several inputs
+(:class:`~mechloop.dynamics.simulate_inputs.InputsSimulation`) the same per input."""
 
 from __future__ import annotations
 
@@ -16,6 +18,10 @@ def plot_simulation(sim: Simulation, *, title: str = "") -> Figure:
     time, with the steady state and the motor's switch-off marked, and the phase portrait
     — the speed over the angle within the cycle, one line per cycle, darker as time goes
     on (lines with gid ``'q'``, ``'omega'``, ``'epsilon'``, ``'phase'``)."""
+    from mechloop.dynamics.simulate_inputs import InputsSimulation
+
+    if isinstance(sim, InputsSimulation):
+        return _plot_inputs(sim, title=title)
     if not isinstance(sim, Simulation):
         raise ViewError(f"expected a Simulation, got {type(sim).__name__}",
                         "pass the result of mechloop.simulate(...)")
@@ -64,3 +70,39 @@ def _phase(ax, sim: Simulation) -> None:
     ax.set_ylabel("speed n [rpm]")
     ax.set_title("phase portrait (later cycles darker)", fontsize="medium")
     ax.grid(True, alpha=0.3)
+
+
+def _plot_inputs(sim, *, title: str = "") -> Figure:
+    """Four panels: every input's angle (turns), speed (rpm) and acceleration (rad/s²)
+    over time, one line per input (gid ``'q<k>'``, ``'omega<k>'``, ``'epsilon<k>'``,
+    ``k`` its argument number), the motors' switch-offs marked, and each input's phase
+    portrait ω(q) (gid ``'phase<k>'``)."""
+    figure = new_figure(10.0, 7.5)
+    axes = figure.subplots(2, 2)
+    t = sim.time
+    panels = ((axes[0, 0], sim.q / (2 * np.pi), "q", "input angle [turns]"),
+              (axes[0, 1], sim.omega / RPM, "omega", "speed n [rpm]"),
+              (axes[1, 0], sim.epsilon, "epsilon", "acceleration ε [rad/s²]"))
+    for ax, values, gid, label in panels:
+        for i, k in enumerate(sim.inputs):
+            ax.plot(t, values[i], color=f"C{i}", linewidth=1.0, gid=f"{gid}{k}",
+                    label=f"input {k}")
+        for event in sim.events[1:]:
+            if event.kind == "motor off":
+                ax.axvline(event.t, color="C3", linestyle="--", linewidth=0.8)
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+    axes[0, 0].legend(loc="best", fontsize="small")
+    phase = axes[1, 1]
+    for i, k in enumerate(sim.inputs):
+        phase.plot(np.degrees(sim.q[i]), sim.omega[i] / RPM, color=f"C{i}", linewidth=0.9,
+                   gid=f"phase{k}", label=f"input {k}")
+    phase.set_xlabel("input angle [deg]")
+    phase.set_ylabel("speed n [rpm]")
+    phase.set_title("phase portraits", fontsize="medium")
+    phase.grid(True, alpha=0.3)
+    end = sim.end
+    figure.suptitle(title or f"motion in time of {len(sim.inputs)} inputs — ended: "
+                             f"{end.kind} at {end.t:.4g} s")
+    return figure
