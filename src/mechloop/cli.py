@@ -675,11 +675,15 @@ def report(
                          ] = None,
     cam: Annotated[Path | None, typer.Option(help="the course project's cam (a mechloop "
                    "cam document): adds sheet 4; default: the model's project.cam")] = None,
+    gears: Annotated[Path | None, typer.Option(help="the course project's gear pair or "
+                     "planetary train (a mechloop gear document): adds sheet 3; default: "
+                     "the model's project.gears")] = None,
     force: Force = False,
 ) -> None:
     """Write the course-project report (PDF): model, formula, kinematics of the output
-    link, angle differences, dynamics, reactions, centres of mass, the cam (sheet 4, from
-    the model's `project:` section or --cam), conclusion, and the values at every position.
+    link, angle differences, dynamics, reactions, centres of mass, the gears and the cam
+    (sheets 3 and 4, from the model's `project:` section or --gears/--cam), conclusion, and
+    the values at every position.
 
     Example:
 
@@ -693,7 +697,7 @@ def report(
 
     _outputs(model, force, (output, (".pdf",)))
     m = load_model(model)
-    project = project_documents(m, model, cam=cam)
+    project = project_documents(m, model, cam=cam, gears=gears)
     try:
         with _progress("pages") as bar:
             task = bar.add_task("pages", total=None)

@@ -37,7 +37,7 @@ class Project(_Frozen):
 @dataclass(frozen=True)
 class ProjectDocuments:
     """The documents read: ``cam`` (a :class:`mechloop.cams.CamDesign`) and ``gears``
-    (what :func:`mechloop.views.gear_sheet.load_gears` reads), None when not given."""
+    (a :class:`mechloop.views.gear_sheet.GearTask`), None when not given."""
 
     cam: Any = None
     gears: Any = None

@@ -23,7 +23,7 @@ from mechloop.cams.followers import (
 )
 from mechloop.cams.plots import plot_curvature, plot_pressure, plot_profile, plot_program
 from mechloop.model.units import unit_factor
-from mechloop.views.sheet import FigureItem, Sheet, Table, translate_figure
+from mechloop.views.sheet import FigureItem, Sheet, Table, number_text, translate_figure
 
 TEXT: dict[str, dict[str, str]] = {
     "en": {
@@ -175,15 +175,6 @@ UNITS: dict[str, dict[str, str]] = {"en": {"rad": "rad", "s": "s"},
                                     "ru": {"rad": "рад", "s": "с"}}
 
 
-def _num(value: float) -> str:
-    """Five significant digits, without an exponent between 10⁻³ and 10⁹."""
-    size = abs(value)
-    if size == 0 or not 1e-3 <= size < 1e9:
-        return f"{value:.5g}"
-    decimals = max(0, 4 - math.floor(math.log10(size)))
-    return f"{value:.{decimals}f}".rstrip("0").rstrip(".") if decimals else f"{value:.0f}"
-
-
 def cam_sheet(design: CamDesign, lang: str = "en") -> Sheet:
     """The cam sheet of ``design`` in ``lang`` ('en' or 'ru')."""
     text = TEXT[lang]
@@ -198,7 +189,7 @@ def cam_sheet(design: CamDesign, lang: str = "en") -> Sheet:
         rows.insert(0, (text["name"], "", design.name, ""))
 
     def add(key: str, symbol: str, value: float, unit: str, **fmt) -> None:
-        rows.append((text[key].format(**fmt), symbol, _num(value), unit))
+        rows.append((text[key].format(**fmt), symbol, number_text(value), unit))
 
     if isinstance(f, TranslatingRoller | OscillatingRoller):
         add("roller", "r", f.roller_radius * to, length)
@@ -215,7 +206,7 @@ def cam_sheet(design: CamDesign, lang: str = "en") -> Sheet:
         add("base_working", "R₀ − r", (summary.base_radius - f.roller_radius) * to,  # type: ignore[union-attr]
             length)
     if summary.minimum is not None:
-        add("min_convex" if flat else "min_pressure", "R₀,min", summary.minimum * to, length)
+        add("min_convex" if flat else "min_pressure", "R₀_min", summary.minimum * to, length)
     if rocker:
         add("swing", "ψ_max", math.degrees(summary.stroke), "°")
     else:
@@ -260,10 +251,10 @@ def cam_sheet(design: CamDesign, lang: str = "en") -> Sheet:
     lift_shown = ("°", 180 / math.pi) if rocker else (length, to)
     for seg, peak in zip(design.program.segments, summary.peaks, strict=True):
         law = "—" if seg.law is None else LAWS[lang].get(seg.law.name, seg.law.name)
-        lifted = "—" if seg.kind == "dwell" else _num(seg.lift * lift_shown[1])
+        lifted = "—" if seg.kind == "dwell" else number_text(seg.lift * lift_shown[1])
         coefficients = ("—", "—", "—") if peak is None else (
-            _num(peak.velocity), _num(peak.acceleration), _num(peak.jerk))
-        segments.append((text[seg.kind], _num(math.degrees(seg.angle)), lifted, law,
+            number_text(peak.velocity), number_text(peak.acceleration), number_text(peak.jerk))
+        segments.append((text[seg.kind], number_text(math.degrees(seg.angle)), lifted, law,
                          *coefficients))
     segment_table = Table(text["segments"], (text["segment"], text["angle"],
                                              f"{text['lift']}, {lift_shown[0]}",
@@ -281,7 +272,7 @@ def _verdicts(design: CamDesign, s: Summary, text: dict[str, str], length: str, 
             lines.append(text["ok_pressure"].format(ratio=ratio))
         else:
             fix = "" if s.minimum is None else text["fix"].format(
-                value=_num(s.minimum * to), unit=length)
+                value=number_text(s.minimum * to), unit=length)
             lines.append(text["bad_pressure"].format(ratio=ratio, fix=fix))
     if design.follower.flat:
         lines.append(text["bad_flat" if s.undercut else "ok_flat"])

@@ -315,7 +315,8 @@ def _sheet_figure_page(title: str, caption: str, figure: Figure) -> Figure:
     width, height = figure.get_size_inches()
     figure.set_size_inches(*(A4 if height >= 0.8 * width else A4[::-1]))
     figure.suptitle(title, fontsize=12, fontweight="bold")
-    figure.supxlabel(caption, fontsize=10)
+    figure.supxlabel("\n".join(_wrapped(caption, 110 if width > height else 80)),
+                     fontsize=10)
     return figure
 
 
@@ -356,7 +357,7 @@ def _column_widths(table: Table) -> list[float]:
     """Column widths (fractions of the table's width) by the longest text in each."""
     longest = [max(len(str(cell)) for cell in column)
                for column in zip(table.header, *table.rows, strict=True)]
-    lengths = [max(n, 7) for n in longest]
+    lengths = [max(n, 8) for n in longest]
     total = sum(lengths)
     return [n / total for n in lengths]
 

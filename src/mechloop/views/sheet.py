@@ -8,6 +8,7 @@ typesetter can take the same content (the figures as images, the tables as table
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -61,3 +62,13 @@ def translate_figure(figure: Figure, words: dict[str, str]) -> Figure:
             content = content.replace(english, other)
         text.set_text(content)
     return figure
+
+
+def number_text(value: float) -> str:
+    """A table's number: five significant digits, without an exponent between 10⁻³ and
+    10⁹."""
+    size = abs(value)
+    if size == 0 or not 1e-3 <= size < 1e9:
+        return f"{value:.5g}"
+    decimals = max(0, 4 - math.floor(math.log10(size)))
+    return f"{value:.{decimals}f}".rstrip("0").rstrip(".") if decimals else f"{value:.0f}"
