@@ -27,6 +27,7 @@ HAND = {
     # group; rod + slider with two pins and a slide is an RRP dyad (L2).
     "crank_slider_dynamics.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "crank_slider_friction.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
+    "course_project_sheets.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),  # + project: cam
     "crank_slider_groups.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "single_cylinder_engine.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     "engine_indicator.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),

@@ -683,11 +683,17 @@ def report(
     parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
                          "the first contour's length function, else its last angle)")
                          ] = None,
+    cam: Annotated[Path | None, typer.Option(help="the course project's cam (a mechloop "
+                   "cam document): adds sheet 4; default: the model's project.cam")] = None,
+    gears: Annotated[Path | None, typer.Option(help="the course project's gear pair or "
+                     "planetary train (a mechloop gear document): adds sheet 3; default: "
+                     "the model's project.gears")] = None,
     force: Force = False,
 ) -> None:
     """Write the course-project report (PDF): model, formula, kinematics of the output
-    link, angle differences, dynamics, reactions, centres of mass, conclusion, and the
-    values at every position.
+    link, angle differences, dynamics, reactions, centres of mass, the gears and the cam
+    (sheets 3 and 4, from the model's `project:` section or --gears/--cam), conclusion, and
+    the values at every position.
 
     Example:
 
@@ -696,14 +702,16 @@ def report(
     ```
     """
     from mechloop.model.load import load_model, locate
+    from mechloop.model.project import project_documents
     from mechloop.views.report import write_report
 
     _outputs(model, force, (output, (".pdf",)))
     m = load_model(model)
+    project = project_documents(m, model, cam=cam, gears=gears)
     try:
         with _progress("pages") as bar:
             task = bar.add_task("pages", total=None)
-            path = write_report(m, output, lang=lang, output=parameter,
+            path = write_report(m, output, lang=lang, output=parameter, project=project,
                                 progress=lambda done, total: bar.update(
                                     task, completed=done, total=total),
                                 warn=lambda text: err.print(f"[bold yellow]warning:[/] "

@@ -38,6 +38,7 @@ from mechloop.model.dynamic import (
 )
 from mechloop.model.elements import Damper, Spring
 from mechloop.model.gearing import GearMesh
+from mechloop.model.project import Project
 from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
@@ -266,6 +267,9 @@ class Model(_Frozen):
     synthesis: SynthesisTask | None = Field(
         None, description="a synthesis task: dimensions to vary, the target, conditions, "
         "search (mechloop synthesize)")
+    project: Project | None = Field(
+        None, description="the course project's cam (sheet 4) and gear pair or planetary "
+        "train (sheet 3) documents, for mechloop report")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:

@@ -27,11 +27,13 @@ from matplotlib.figure import Figure
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.dynamics.cycle_validity import cycle_breaks
 from mechloop.model.formula import describe_structure
+from mechloop.model.project import ProjectDocuments
 from mechloop.model.schema import Model
 from mechloop.solve.kinematics import solve
 from mechloop.solve.results import Results
 from mechloop.views import curves, dynamics, formula, plan
 from mechloop.views.figure import ViewError, new_figure
+from mechloop.views.sheet import Sheet, Table
 
 TEXT: dict[str, dict[str, str]] = {
     "en": {
@@ -73,6 +75,8 @@ TEXT: dict[str, dict[str, str]] = {
                         "page leaves out the steps next to the breaks. Remove the break "
                         "first.",
         "page": "page",
+        "figure": "Figure {number}",
+        "table": "Table {number}",
     },
     "ru": {
         "title": "Кинематический и динамический анализ механизма",
@@ -114,6 +118,8 @@ TEXT: dict[str, dict[str, str]] = {
                         "сводных характеристик пропущены шаги рядом с разрывами. Сначала "
                         "устраните разрыв.",
         "page": "стр.",
+        "figure": "Рис. {number}",
+        "table": "Таблица {number}",
     },
 }
 
@@ -182,13 +188,17 @@ def output_parameter(results: Results) -> str:
 
 def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en",
                  output: str | None = None, progress: Callable[[int, int], None] | None = None,
-                 warn: Callable[[str], None] | None = None) -> Path:
+                 warn: Callable[[str], None] | None = None,
+                 project: ProjectDocuments | None = None) -> Path:
     """Write the course-project report of ``model`` to ``path`` (PDF), atomically.
 
     ``lang``: 'en' or 'ru'; ``output``: the output parameter ('r3', 'a3'; default
     :func:`output_parameter`); ``progress(done, total)`` is called after each page;
     ``warn(text)`` is told (in English) when the chain breaks in the cycle, so that the
-    report's cycle figures are not valid (the report says so too).
+    report's cycle figures are not valid (the report says so too); ``project``: the
+    course project's cam and gear documents
+    (:func:`mechloop.model.project.project_documents`), which add sheet 3 (the gear pair
+    or planetary train) and sheet 4 (the cam) before the conclusion.
     """
     from mechloop.output.atomic import atomic_file
 
@@ -206,7 +216,8 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
     broken = cycle_breaks(dyn) if dyn is not None else None
     if warn is not None and broken is not None:
         warn(TEXT["en"]["cycle_breaks"].format(where=broken.where()))
-    pages = list(_pages(model, results, dyn, name, TEXT[lang]))
+    sheets = project_sheets(project, lang) if project is not None else []
+    pages = list(_pages(model, results, dyn, name, TEXT[lang], sheets))
     with atomic_file(target) as handle, \
             PdfPages(handle, metadata={"Title": model.name or TEXT[lang]["title"],
                                        "Creator": "mechloop"}) as pdf:
@@ -221,7 +232,8 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
 
 
 def _pages(model: Model, results: Results, dyn: DynamicResults | None, name: str,
-           text: dict[str, str]) -> Iterator[Callable[[], Figure]]:
+           text: dict[str, str], sheets: list[Sheet] | None = None
+           ) -> Iterator[Callable[[], Figure]]:
     """Page builders in report order (each returns one figure)."""
     source: Results | DynamicResults = dyn if dyn is not None else results
     yield lambda: _title_page(model, results, text)
@@ -253,6 +265,8 @@ def _pages(model: Model, results: Results, dyn: DynamicResults | None, name: str
         yield lambda: _titled(dynamics.plot_summary(dyn), text["g"])
         if dyn.cycle is not None:
             yield lambda: _titled(dynamics.plot_machine_motion(dyn), text["g"])
+    for sheet in sheets or []:
+        yield from sheet_pages(sheet)
     yield lambda: _text_page(text["conclusion"], _conclusion(results, dyn, name, text))
     frame = (dyn.to_frame() if dyn is not None else results.to_frame())
     columns = list(frame.columns)
@@ -261,6 +275,91 @@ def _pages(model: Model, results: Results, dyn: DynamicResults | None, name: str
         for first in range(0, len(frame), APPENDIX_ROWS):
             yield lambda chunk=chunk, first=first: _table_page(
                 text["appendix"], frame[chunk].iloc[first:first + APPENDIX_ROWS])
+
+
+def project_sheets(project: ProjectDocuments, lang: str) -> list[Sheet]:
+    """The course project's sheet 3 (gears) and sheet 4 (cam) of the documents given."""
+    sheets = []
+    if project.gears is not None:
+        from mechloop.views.gear_sheet import gear_sheet
+
+        sheets.append(gear_sheet(project.gears, lang))
+    if project.cam is not None:
+        from mechloop.views.cam_sheet import cam_sheet
+
+        sheets.append(cam_sheet(project.cam, lang))
+    return sheets
+
+
+#: A4 portrait and landscape (inches).
+A4 = (8.27, 11.69)
+
+
+def sheet_pages(sheet: Sheet) -> list[Callable[[], Figure]]:
+    """Page builders of one sheet: its tables and paragraphs on A4 portrait pages, then
+    each figure on an A4 page (landscape when the figure is wider than tall), every table
+    and figure captioned with its number (sheet.k)."""
+    text = TEXT[sheet.lang]
+    pages: list[Callable[[], Figure]] = []
+    tables = [(text["table"].format(number=f"{sheet.number}.{k}"), table)
+              for k, table in enumerate(sheet.tables, start=1)]
+    pages.append(lambda: _sheet_table_page(sheet.title, tables, sheet.paragraphs))
+    for k, item in enumerate(sheet.figures, start=1):
+        caption = f"{text['figure'].format(number=f'{sheet.number}.{k}')} — {item.caption}"
+        pages.append(lambda item=item, caption=caption: _sheet_figure_page(
+            sheet.title, caption, item.draw()))
+    return pages
+
+
+def _sheet_figure_page(title: str, caption: str, figure: Figure) -> Figure:
+    width, height = figure.get_size_inches()
+    figure.set_size_inches(*(A4 if height >= 0.8 * width else A4[::-1]))
+    figure.suptitle(title, fontsize=12, fontweight="bold")
+    figure.supxlabel("\n".join(_wrapped(caption, 110 if width > height else 80)),
+                     fontsize=10)
+    return figure
+
+
+def _sheet_table_page(title: str, tables: list[tuple[str, Table]], paragraphs: list[str]
+                      ) -> Figure:
+    """The sheet's title, its tables one under another and its paragraphs (A4 portrait)."""
+    figure = Figure(figsize=A4)
+    figure.text(0.06, 0.96, title, fontsize=13, fontweight="bold", va="top")
+    row = 0.0165
+    y = 0.92
+    for caption, table in tables:
+        figure.text(0.06, y, caption + ". " + table.caption, fontsize=9.5, va="top")
+        y -= 0.012
+        height = row * (len(table.rows) + 1)
+        ax = figure.add_axes((0.06, y - height, 0.88, height))
+        ax.axis("off")
+        drawn = ax.table(cellText=[list(r) for r in table.rows], colLabels=list(table.header),
+                         loc="upper center", cellLoc="left", bbox=(0, 0, 1, 1))
+        drawn.auto_set_font_size(False)
+        drawn.set_fontsize(7.5)
+        widths = _column_widths(table)
+        for (r, c), cell in drawn.get_celld().items():
+            cell.set_width(widths[c])
+            cell.PAD = 0.012 / widths[c]  # a fixed margin, not a tenth of the column
+            if r == 0:
+                cell.set_text_props(fontweight="bold")
+                cell.set_facecolor("0.92")
+        y -= height + 0.03
+    for paragraph in paragraphs:
+        for line in _wrapped(paragraph, 100):
+            figure.text(0.06, y, line, fontsize=8.5, va="top")
+            y -= 0.0165
+        y -= 0.005
+    return figure
+
+
+def _column_widths(table: Table) -> list[float]:
+    """Column widths (fractions of the table's width) by the longest text in each."""
+    longest = [max(len(str(cell)) for cell in column)
+               for column in zip(table.header, *table.rows, strict=True)]
+    lengths = [max(n, 8) for n in longest]
+    total = sum(lengths)
+    return [n / total for n in lengths]
 
 
 def _intermediate(results: Results) -> int:

@@ -1,0 +1,342 @@
+"""Sheet 3 of the course project, the gear pair and/or the planetary train (a ``mechloop
+gear`` document), as content: the meshing drawing, the geometry table with the ISO 21771
+names and units, the checks (undercut, pointed tooth, interference, contact ratio) and the
+specific sliding; for a planetary train its tooth numbers, the ratio by Willis' formula, the
+conditions (coaxiality, assembly, neighbours) and the velocity plan — in English or Russian.
+
+Every number comes from :mod:`mechloop.gears` (:func:`mechloop.gears.tables.pair_table`,
+:meth:`mechloop.gears.GearPair.checks`, :class:`mechloop.gears.PlanetaryTrain`); lengths
+in mm, angles in degrees, as the gear documents are.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+
+from matplotlib.figure import Figure
+
+from mechloop.errors import HintedError, Problem
+from mechloop.gears.document import pair_of, read_gear_document, train_of
+from mechloop.gears.drawing import draw_mesh, plot_sliding
+from mechloop.gears.pair import GearPair
+from mechloop.gears.planetary import PlanetaryTrain, scheme_of
+from mechloop.gears.tables import pair_table
+from mechloop.gears.velocity_plan import plot_velocity_plan
+from mechloop.model.document import located_error
+from mechloop.views.sheet import FigureItem, Sheet, Table, number_text, translate_figure
+
+
+@dataclass(frozen=True)
+class GearTask:
+    """What a gear document gives the report: the ``pair`` and/or the ``train`` (a train
+    chosen for a target ratio is the best design of the choice), the input ``speed`` of
+    the train (rpm), its ``target`` ratio (or None) and the sections' names."""
+
+    pair: GearPair | None
+    pair_name: str
+    train: PlanetaryTrain | None
+    train_name: str
+    speed: float
+    target: float | None
+
+
+def load_gears(path: str | os.PathLike[str]) -> GearTask:
+    """Read a gear document (``gear_pair:`` and/or ``planetary:``); every problem is a
+    located :class:`~mechloop.errors.ModelError` of that file."""
+    file = str(path)
+    doc, lines = read_gear_document(path)
+    if doc.gear_pair is None and doc.planetary is None:
+        raise located_error([Problem((), "the file has neither a 'gear_pair:' nor a "
+                                     "'planetary:' section", "see examples/gears/", 1)],
+                            file, lines)
+    pair = pair_of(doc.gear_pair, file=file, lines=lines) if doc.gear_pair else None
+    train = None
+    spec = doc.planetary
+    if spec is not None:
+        train = train_of(spec, file=file, lines=lines)
+        if train is None:  # the best design of the choice for the target ratio
+            from mechloop.gears.tooth_search import choose_teeth
+
+            s = spec.search
+            try:
+                choice = choose_teeth(scheme_of(spec.scheme), float(spec.target_ratio),
+                                      spec.planets, teeth_min=s.teeth_min,
+                                      teeth_max=s.teeth_max,
+                                      ring_difference_min=s.ring_difference_min,
+                                      tolerance=s.tolerance, ha=spec.addendum)
+            except HintedError as exc:
+                raise located_error([Problem(("planetary", "search"), exc.message,
+                                             exc.hint)], file, lines) from None
+            if not len(choice):
+                raise located_error([Problem(
+                    ("planetary", "target_ratio"), f"no design of the {spec.scheme} scheme "
+                    f"meets the ratio {spec.target_ratio:g} within "
+                    f"{100 * s.tolerance:g} %", "widen search.tolerance or teeth_max, or "
+                    "change the number of planets or the scheme")], file, lines)
+            train = choice.train(0, spec.module, spec.addendum)
+    return GearTask(pair, (doc.gear_pair.name or "") if doc.gear_pair else "", train,
+                    (spec.name or "") if spec else "", float(spec.input_speed) if spec
+                    else 0.0, None if spec is None else spec.target_ratio)
+
+
+TEXT: dict[str, dict[str, str]] = {
+    "en": {
+        "pair": "Sheet 3. Gear pair", "train": "Sheet 3. Planetary train",
+        "both": "Sheet 3. Gear pair and planetary train",
+        "geometry": "Geometry of the external involute spur gear pair (ISO 21771)",
+        "checks": "Checks of the gear pair",
+        "quantity": "quantity", "symbol": "symbol", "pinion": "pinion", "wheel": "wheel",
+        "unit": "unit", "check": "check", "gear": "gear", "value": "value",
+        "limit": "limit", "result": "result", "ok": "met", "fails": "NOT MET",
+        "all_met": "All checks of the pair are met: no undercut, no pointed tooth, no "
+                   "interference, and the contact ratio is at least 1.",
+        "undercut": "undercut", "pointed tooth": "pointed tooth",
+        "interference": "interference", "contact ratio": "contact ratio", "pair_gear": "pair",
+        "fig_mesh": "Meshing of the gear pair: circles, line of action N1N2, active line A–E",
+        "fig_sliding": "Specific sliding of the pinion and the wheel along the line of "
+                       "action",
+        "train_table": "Planetary train: ratio by Willis' formula and the conditions",
+        "teeth": "Numbers of teeth",
+        "member": "member", "z": "z",
+        "a": "central gear a (input)", "g": "planet g", "f": "planet's second row f",
+        "b": "central gear b (fixed)", "h": "carrier h (output)",
+        "scheme": "scheme", "planets": "number of planets", "module": "module",
+        "willis": "ratio of the train seen from the carrier (Willis)",
+        "ratio": "reduction ratio, b fixed: i_ah = 1 − i_ab^h",
+        "target": "target ratio", "error": "error against the target",
+        "a_w": "centre distance of the planets", "coaxial": "coaxiality (both rows at a_w)",
+        "assembly": "assembly number (whole: the planets can be fitted evenly)",
+        "margin": "clearance between neighbouring planets' tip circles",
+        "speed": "speed of {member}", "rpm": "rpm", "yes": "yes", "no": "no",
+        "cond_ok": "met", "cond_fails": "NOT MET",
+        "cond_coaxial": "Coaxiality: {verdict}.", "cond_assembly": "Assembly: {verdict}.",
+        "cond_neighbours": "Neighbourhood (the planets clear each other): {verdict}.",
+        "fig_plan": "Velocity plan (Kutzbach) of the planetary train",
+        "simple": "simple (a–g–b)", "double_planet": "two-row (a–g, f–b)",
+        "two_rings": "two rings (a–g, f–b)", "two_suns": "two suns (a–g, f–b)",
+    },
+    "ru": {
+        "pair": "Лист 3. Зубчатая передача", "train": "Лист 3. Планетарный механизм",
+        "both": "Лист 3. Зубчатая передача и планетарный механизм",
+        "geometry": "Геометрия внешнего эвольвентного прямозубого зацепления",
+        "checks": "Проверки зубчатой передачи",
+        "quantity": "величина", "symbol": "обозн.", "pinion": "шестерня", "wheel": "колесо",
+        "unit": "ед. изм.", "check": "проверка", "gear": "колесо", "value": "значение",
+        "limit": "предел", "result": "результат", "ok": "выполнена",
+        "fails": "НЕ ВЫПОЛНЕНА",
+        "all_met": "Все проверки передачи выполнены: подрезания, заострения зуба и "
+                   "интерференции нет, коэффициент перекрытия не меньше 1.",
+        "failed": "Проверка «{check}» ({gear}) не выполнена: {value}, предел {limit}.",
+        "beyond": " Линия зацепления выходит за точки касания N1, N2 основных окружностей: "
+                  "вершина зуба сопряжённого колеса заходит в подрезанную ножку.",
+        "undercut": "подрезание", "pointed tooth": "заострение зуба",
+        "interference": "интерференция", "contact ratio": "коэффициент перекрытия",
+        "pair_gear": "передача",
+        "fig_mesh": "Картина зацепления: окружности, линия зацепления N1N2, активная "
+                    "линия A–E",
+        "fig_sliding": "Удельное скольжение шестерни и колеса вдоль линии зацепления",
+        "train_table": "Планетарный механизм: передаточное отношение по формуле Виллиса "
+                       "и условия",
+        "teeth": "Числа зубьев",
+        "member": "звено", "z": "z",
+        "a": "центральное колесо a (вход)", "g": "сателлит g", "f": "второй венец "
+             "сателлита f", "b": "центральное колесо b (неподвижное)",
+        "h": "водило h (выход)",
+        "scheme": "схема", "planets": "число сателлитов", "module": "модуль",
+        "willis": "отношение обращённого механизма (формула Виллиса)",
+        "ratio": "передаточное отношение, b неподвижно: i_ah = 1 − i_ab^h",
+        "target": "заданное передаточное отношение", "error": "отклонение от заданного",
+        "a_w": "межосевое расстояние сателлитов", "coaxial": "соосность (оба ряда на a_w)",
+        "assembly": "число сборки (целое: сборка возможна)",
+        "margin": "зазор между вершинами соседних сателлитов",
+        "speed": "частота вращения {member}", "rpm": "об/мин", "yes": "да", "no": "нет",
+        "cond_ok": "выполнено", "cond_fails": "НЕ ВЫПОЛНЕНО",
+        "cond_coaxial": "Условие соосности: {verdict}.",
+        "cond_assembly": "Условие сборки: {verdict}.",
+        "cond_neighbours": "Условие соседства (сателлиты не задевают друг друга): "
+                           "{verdict}.",
+        "fig_plan": "План линейных скоростей планетарного механизма",
+        "simple": "однорядная (a–g–b)", "double_planet": "двухрядная (a–g, f–b)",
+        "two_rings": "с двумя эпициклами (a–g, f–b)",
+        "two_suns": "с двумя солнечными колёсами (a–g, f–b)",
+    },
+}
+
+#: The gear pair's quantities (mechloop.gears.tables.pair_table) in Russian.
+QUANTITIES_RU: dict[str, str] = {
+    "number of teeth": "число зубьев",
+    "profile shift coefficient": "коэффициент смещения",
+    "least shift without undercut": "наименьшее смещение без подрезания",
+    "reference diameter": "делительный диаметр",
+    "base diameter": "основной диаметр",
+    "working pitch diameter": "начальный диаметр",
+    "tip diameter": "диаметр вершин",
+    "root diameter": "диаметр впадин",
+    "form diameter (involute starts)": "граничный диаметр (начало эвольвенты)",
+    "lowest contact diameter": "диаметр нижней точки активного профиля",
+    "addendum": "высота головки зуба",
+    "dedendum": "высота ножки зуба",
+    "tooth depth": "высота зуба",
+    "tooth thickness, reference circle": "толщина зуба по делительной окружности",
+    "space width, reference circle": "ширина впадины по делительной окружности",
+    "tooth thickness, working pitch circle": "толщина зуба по начальной окружности",
+    "tooth thickness, base circle": "толщина зуба по основной окружности",
+    "tooth thickness, tip circle": "толщина зуба по окружности вершин",
+    "chordal thickness, reference circle": "толщина зуба по хорде делительной окружности",
+    "chordal height, reference circle": "высота до хорды делительной окружности",
+    "tip clearance": "радиальный зазор",
+    "module": "модуль",
+    "pressure angle": "угол профиля исходного контура",
+    "gear ratio": "передаточное число",
+    "reference centre distance": "делительное межосевое расстояние",
+    "centre distance": "межосевое расстояние",
+    "working pressure angle": "угол зацепления",
+    "centre distance modification coefficient": "коэффициент воспринимаемого смещения",
+    "tip shortening coefficient": "коэффициент уравнительного смещения",
+    "pitch": "шаг по делительной окружности",
+    "base pitch": "основной шаг",
+    "line of action N1N2": "теоретическая линия зацепления N1N2",
+    "start of contact from N1": "начало зацепления от N1",
+    "end of contact from N1": "конец зацепления от N1",
+    "length of path of contact": "длина активной линии зацепления",
+    "transverse contact ratio": "коэффициент торцового перекрытия",
+}
+
+#: The words of the gear figures (mechloop.gears.drawing, .velocity_plan) in Russian.
+FIGURE_WORDS_RU: dict[str, str] = {
+    "active line": "активная линия",
+    "the mesh zone": "зона зацепления",
+    "distance from N1 along the line of action": "расстояние от N1 вдоль линии "
+                                                 "зацепления, mm",
+    "specific sliding": "удельное скольжение",
+    "pinion": "шестерня",
+    "wheel": "колесо",
+    "carrier h": "водило h",
+    "b (fixed)": "b (неподвижное)",
+    "planet g": "сателлит g",
+    "linear speed": "линейная скорость",
+    "distance from the central axis": "расстояние от центральной оси",
+}
+
+#: The two numbers each check compares (value, limit).
+CHECK_SYMBOLS = {"undercut": ("x", "x_min"), "pointed tooth": ("s_a", "[s_a]"),
+                 "interference": ("d_Nf", "d_Ff"), "contact ratio": ("ε_α", "1")}
+
+
+def gear_sheet(task: GearTask, lang: str = "en") -> Sheet:
+    """The gear sheet of ``task`` in ``lang`` ('en' or 'ru')."""
+    text = TEXT[lang]
+    tables: list[Table] = []
+    figures: list[FigureItem] = []
+    paragraphs: list[str] = []
+    if task.pair is not None:
+        tables += [_geometry(task.pair, text, lang), _checks(task.pair, text)]
+        paragraphs += _check_words(task.pair, text, lang)
+        figures += [_figure(lambda: draw_mesh(task.pair), text["fig_mesh"], lang),
+                    _figure(lambda: plot_sliding(task.pair), text["fig_sliding"], lang)]
+    if task.train is not None:
+        tables += _train_tables(task, text)
+        train = task.train
+        for key, ok in (("cond_coaxial", train.coaxial), ("cond_assembly", train.assembles),
+                        ("cond_neighbours", train.neighbour_margin > 0)):
+            paragraphs.append(text[key].format(verdict=text["cond_ok" if ok else "cond_fails"]))
+        figures.append(_figure(lambda: _velocity_plan(task, text), text["fig_plan"], lang))
+    title = text["both" if task.pair is not None and task.train is not None else
+                 "pair" if task.pair is not None else "train"]
+    return Sheet(3, title, lang, figures, tables, paragraphs)
+
+
+def _figure(draw, caption: str, lang: str) -> FigureItem:
+    def make() -> Figure:
+        figure = draw()
+        return translate_figure(figure, FIGURE_WORDS_RU) if lang == "ru" else figure
+    return FigureItem(caption, make)
+
+
+def _unit(unit: str) -> str:
+    return "°" if unit == "deg" else unit
+
+
+def _geometry(pair: GearPair, text: dict[str, str], lang: str) -> Table:
+    frame = pair_table(pair)
+    rows = []
+    for quantity, symbol, pinion, wheel, unit in frame.itertuples(index=False):
+        name = QUANTITIES_RU.get(quantity, quantity) if lang == "ru" else quantity
+        rows.append((name, symbol, number_text(pinion),
+                     "" if math.isnan(wheel) else number_text(wheel), _unit(unit)))
+    header = (text["quantity"], text["symbol"], f"{text['pinion']} (1)",
+              f"{text['wheel']} (2)", text["unit"])
+    return Table(text["geometry"], header, rows)
+
+
+def _check_words(pair: GearPair, text: dict[str, str], lang: str) -> list[str]:
+    """The checks in words: that all are met, or each one that fails (in English the
+    gear package's own sentence with its reason)."""
+    failing = [c for c in pair.checks() if not c.ok]
+    if not failing:
+        return [text["all_met"]]
+    if lang == "en":
+        return [f"{c.name} NOT MET: {c.text}" for c in failing]
+    words = []
+    for c in failing:
+        value, limit = CHECK_SYMBOLS.get(c.name, ("", ""))
+        gear = text["pair_gear"] if c.gear is None else text[("pinion", "wheel")[c.gear - 1]]
+        words.append(text["failed"].format(check=text.get(c.name, c.name), gear=gear,
+                                           value=f"{value} = {number_text(c.value)}",
+                                           limit=limit if limit == "1" else
+                                           f"{limit} = {number_text(c.limit)}")
+                     + (text["beyond"] if c.value >= c.limit else ""))
+    return words
+
+
+def _checks(pair: GearPair, text: dict[str, str]) -> Table:
+    rows = []
+    for check in pair.checks():
+        value, limit = CHECK_SYMBOLS.get(check.name, ("", ""))
+        gear = text["pair_gear"] if check.gear is None else \
+            text[("pinion", "wheel")[check.gear - 1]]
+        rows.append((text.get(check.name, check.name), gear,
+                     f"{value} = {number_text(check.value)}",
+                     f"{limit} = {number_text(check.limit)}" if limit != "1" else "1",
+                     text["ok" if check.ok else "fails"]))
+    return Table(text["checks"], (text["check"], text["gear"], text["value"], text["limit"],
+                                  text["result"]), rows)
+
+
+def _train_tables(task: GearTask, text: dict[str, str]) -> list[Table]:
+    train = task.train
+    assert train is not None
+    teeth = [(text[key], f"z_{key}", str(z)) for key, z in train.teeth.items()]
+    head = (text["member"], text["symbol"], text["z"])
+    rows = [(text["scheme"], "", text.get(train.scheme.name, train.scheme.name), ""),
+            (text["planets"], "k", str(train.k), ""),
+            (text["module"], "m", number_text(train.m_n), "mm"),
+            (text["willis"], "i_ab^h", number_text(train.willis), ""),
+            (text["ratio"], "i_ah", number_text(train.ratio), "")]
+    if task.target is not None:
+        rows += [(text["target"], "i_ah*", number_text(task.target), ""),
+                 (text["error"], "Δi", number_text(100 * abs(train.ratio - task.target)
+                                                   / abs(task.target)), "%")]
+    rows += [(text["a_w"], "a_w", number_text(train.a_w), "mm"),
+             (text["coaxial"], "", text["yes" if train.coaxial else "no"], ""),
+             (text["assembly"], "", number_text(train.assembly), ""),
+             (text["margin"], "", number_text(train.neighbour_margin), "mm")]
+    speeds = train.speeds(task.speed * math.pi / 30)
+    for key in ("a", "h", "g"):
+        rows.append((text["speed"].format(member=key), f"n_{key}",
+                     number_text(speeds[key] * 30 / math.pi), text["rpm"]))
+    return [Table(text["teeth"], head, teeth),
+            Table(text["train_table"], (text["quantity"], text["symbol"], text["value"],
+                                        text["unit"]), rows)]
+
+
+def _velocity_plan(task: GearTask, text: dict[str, str]) -> Figure:
+    train = task.train
+    assert train is not None
+    figure = plot_velocity_plan(train, task.speed)
+    figure.axes[0].set_title("z = " + "/".join(f"{k}{v}" for k, v in train.teeth.items())
+                             + f", i_ah = {train.ratio:.6g}, n_a = {task.speed:g} "
+                             f"{text['rpm']}", fontsize=9)
+    return figure
