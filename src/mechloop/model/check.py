@@ -11,6 +11,7 @@ from difflib import get_close_matches
 import numpy as np
 
 from mechloop.errors import ModelError, Problem
+from mechloop.model.display import check_display
 from mechloop.model.dynamic import VectorPoint
 from mechloop.model.intermediate import check_intermediate
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument, Units
@@ -51,6 +52,7 @@ def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     problems += _check_time(model)
     problems += _check_loads(model)
     problems += check_synthesis(model)
+    problems += check_display(model.display)
     return structure, problems
 
 

@@ -25,6 +25,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BeforeValidator, Discriminator, Field, Tag, WithJsonSchema
 from pydantic_core import PydanticCustomError
 
+from mechloop.model.display import DisplaySection
 from mechloop.model.dynamic import (
     Body,
     Force,
@@ -266,6 +267,9 @@ class Model(_Frozen):
     synthesis: SynthesisTask | None = Field(
         None, description="a synthesis task: dimensions to vary, the target, conditions, "
         "search (mechloop synthesize)")
+    display: DisplaySection | None = Field(
+        None, description="units and precision of the results: tables, exports, energy, "
+        "plots (KDAM's units and tolerances panels)")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:
