@@ -229,8 +229,10 @@ def unit_factor(source: str, target: str) -> float:
 
 
 def round_significant(values: NDArray[np.float64], digits: int) -> NDArray[np.float64]:
-    """``values`` rounded to ``digits`` significant digits (NaN, ±inf and 0 as they are):
-    each the double nearest to the decimal ``f"{v:.{digits}g}"`` reads as."""
+    """``values`` rounded to ``digits`` significant digits: each the double nearest to a
+    decimal of at most ``digits`` digits within half a unit of its last digit (a tie
+    either way).  NaN, ±inf and 0 stay, and so does a value whose rounding would pass
+    the largest double."""
     values = np.asarray(values, dtype=float)
     out = values.copy()
     finite = np.isfinite(values) & (values != 0)
@@ -246,8 +248,7 @@ def round_significant(values: NDArray[np.float64], digits: int) -> NDArray[np.fl
     rounded = np.rint(scaled * up / down) * down / up
     if not exact.all():
         rounded[~exact] = [float(f"{v:.{digits}g}") for v in x[~exact]]
-    # the decimal of the product may round across a power of ten: formatting decides
-    out[finite] = rounded
+    out[finite] = np.where(np.isfinite(rounded), rounded, x)  # 1.5e308 to 1 digit: kept
     return out
 
 
