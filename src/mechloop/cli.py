@@ -877,6 +877,7 @@ def sweep_command(
     import numpy as np
 
     from mechloop.model.load import load_model, locate
+    from mechloop.output.display import parse_units
     from mechloop.synthesis.parallel import check_scheduler
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
@@ -885,7 +886,7 @@ def sweep_command(
     from mechloop.views.sweep import plot_sweep
 
     _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
-    display = Display(**dict(item.split("=", 1) for item in _split(units)))
+    display = Display(**parse_units(units))
     check_scheduler(scheduler)
     pairs = [parse_vary(text) for text in vary]
     m = load_model(model)
