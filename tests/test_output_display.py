@@ -302,3 +302,29 @@ def test_json_with_digits_is_short(tmp_path):
     assert path.read_text() == '[\n{"F [kN]":1.23},\n{"F [kN]":null}\n]\n'
     buffer = io.StringIO(path.read_text())
     assert pd.read_json(buffer)["F [kN]"].iloc[0] == 1.23
+
+
+def test_the_reports_appendix_takes_the_models_display():
+    from mechloop.dynamics.analysis import solve_dynamics
+    from mechloop.views import report
+
+    model = mechloop.Model.from_dict(example(
+        "crank_slider_dynamics.yaml", display={"force": "kN", "angular_velocity": "rpm"}))
+    dyn = solve_dynamics(model)
+    pages = report._pages(model, dyn.kinematics, dyn, "r3", report.TEXT["en"],
+                          resolve(model.display))
+    heads: dict[str, str] = {}
+    for make in pages:
+        defaults = make.__defaults__ or ()
+        if len(defaults) == 2 and defaults[1] == 0:  # an appendix page's first rows
+            figure = make()
+            table = figure.axes[0].tables[0]
+            cells = table.get_celld()
+            for (row, col), cell in cells.items():
+                if row == 0:
+                    heads[cell.get_text().get_text()] = cells[(1, col)].get_text().get_text()
+    si = dyn.to_frame()
+    assert "RA [kN]" in heads and "RA [N]" not in heads
+    assert float(heads["RA [kN]"]) == pytest.approx(si["RA [N]"].iloc[0] / 1000, rel=1e-5)
+    assert float(heads["da1 [rpm]"]) == pytest.approx(3000.0, rel=1e-9)
+    assert "M_bal [N*m]" in heads  # moment not named
