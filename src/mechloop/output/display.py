@@ -154,9 +154,16 @@ def parse_units(text: str | None, *, option: str = "--units") -> dict[str, str]:
 
 def unit_problem(kind: str, unit: str) -> tuple[str, str] | None:
     """(message, hint) when ``unit`` is not a unit of ``kind``, else None."""
+    from mechloop.model.numbers import MAX_QUANTITY_CHARS
+    from mechloop.model.units import _plain_powers
     from mechloop.views.display import Display
     from mechloop.views.figure import ViewError
 
+    if not isinstance(unit, str) or len(unit) > MAX_QUANTITY_CHARS \
+            or not _plain_powers(unit):  # pint computes powers of numbers exactly
+        return (f"{str(unit)[:40]!r} is not a unit of at most {MAX_QUANTITY_CHARS} "
+                "characters with small powers", f"{kind} takes a unit like "
+                f"{UNIT_FIELDS[kind]}")
     try:
         Display(**{kind: unit})
     except ViewError as exc:
