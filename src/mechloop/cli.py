@@ -148,6 +148,17 @@ from mechloop.output.paths import TABLE_SUFFIXES as SUFFIXES  # noqa: E402 (no N
 Force = Annotated[bool, typer.Option("--force", help="write the output even when it is the "
                                      "input model file or a CSV table the model reads, "
                                      "which is then replaced")]
+UnitsOption = Annotated[str | None, typer.Option(
+    "--units", help="units of the results as KIND=UNIT pairs, e.g. omega=rpm,force=kN; "
+    "kinds: length, angle, time, velocity, acceleration, angular_velocity (omega), "
+    "angular_acceleration (epsilon), mass, inertia, force, moment, energy (work), power "
+    "(default: the model's display: section, else the tables' own units)")]
+DigitsOption = Annotated[int | None, typer.Option(
+    "--digits", help="significant digits of every number written, Parquet included "
+    "(default: the model's display: section, else every digit)")]
+DecimalsOption = Annotated[int | None, typer.Option(
+    "--decimals", help="digits after the point of every number written, instead of "
+    "--digits (default: none)")]
 
 
 def _outputs(model: Path | None, force: bool, *pairs: tuple[Path | None, tuple[str, ...]]
@@ -170,12 +181,16 @@ def solve(
         "-o", "--output", help="write the table here: .csv, .json, .parquet or .xlsx "
         "(default: print a summary only)")] = None,
     force: Force = False,
+    units: UnitsOption = None,
+    digits: DigitsOption = None,
+    decimals: DecimalsOption = None,
 ) -> None:
     """Solve positions, velocities and accelerations at every position; for a model with
     bodies also the balancing load, reduced characteristics, centres of mass and the
     reaction in every joint.
 
-    Values are in SI units (m, s, N) and degrees, one row per position. Example:
+    Values are in SI units (m, s, N) and degrees, one row per position, unless the
+    model's display: section or --units/--digits say otherwise. Example:
 
     ```
     mechloop solve examples/crank_slider.yaml -o results.csv
@@ -184,12 +199,14 @@ def solve(
     import numpy as np
 
     from mechloop.model.load import load_model
+    from mechloop.output.display import apply_display, resolve
     from mechloop.output.tables import check_table_size
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.solve.results import compress_positions
 
     _outputs(model, force, (output, SUFFIXES))
     m = load_model(model)
+    shown = resolve(m.display, units, digits, decimals)
     if output is not None:
         check_table_size(m.positions + 1, 0, output)
     extra = _intermediate_outputs(m, output)
@@ -215,15 +232,15 @@ def solve(
                   "values of these two positions are joined across a break; refine the "
                   "positions there or change the dimensions")
     if output is None:
-        out.print(frame.to_string(max_rows=20, max_cols=12))
+        out.print(apply_display(frame, shown).to_string(max_rows=20, max_cols=12))
         return
-    _write_frame(frame, output)
+    _write_frame(frame, output, shown)
     rows = len(frame)
     broken = int(results.broken.sum())
     out.print(f"wrote {output} ({rows} positions, {len(frame.columns)} columns"
               + (f", {broken} with a chain break" if broken else "") + ")")
     if extra:
-        _write_intermediate(m, results, *extra)
+        _write_intermediate(m, results, *extra, shown=shown)
 
 
 def _intermediate_outputs(m, output: Path | None) -> tuple[Path, ...]:
@@ -237,7 +254,7 @@ def _intermediate_outputs(m, output: Path | None) -> tuple[Path, ...]:
             output.with_suffix(f".envelopes{output.suffix}"))
 
 
-def _write_intermediate(m, results, long: Path, envelopes: Path) -> None:
+def _write_intermediate(m, results, long: Path, envelopes: Path, shown=None) -> None:
     """Solve over the intermediate argument and write its two tables."""
     from mechloop.output.tables import check_table_size
     from mechloop.solve.intermediate import solve_intermediate
@@ -245,26 +262,30 @@ def _write_intermediate(m, results, long: Path, envelopes: Path) -> None:
     solved = solve_intermediate(m, results=results)
     frame = solved.to_frame()
     check_table_size(len(frame), len(frame.columns), long)
-    _write_frame(frame, long)
+    _write_frame(frame, long, shown)
     bad = int(solved.broken.sum())
     out.print(f"wrote {long} ({solved.broken.shape[0]} positions × {solved.theta.size} "
               f"values of argument {solved.argument}"
               + (f", {bad} with a chain break" if bad else "") + ")")
     table = solved.envelope_frame()
-    _write_frame(table, envelopes)
+    _write_frame(table, envelopes, shown)
     out.print(f"wrote {envelopes} ({len(table)} envelope points of "
               f"{len(solved.envelopes)} envelope(s))")
 
 
-def _write_frame(frame, output: Path) -> None:
+def _write_frame(frame, output: Path, shown=None) -> None:
+    """Write ``frame`` to ``output`` in the units and precision ``shown`` (a
+    :class:`~mechloop.output.display.TableDisplay`; None: as it is)."""
+    from mechloop.output.display import apply_display
     from mechloop.output.tables import write_frame
 
-    write_frame(frame, output)
+    write_frame(apply_display(frame, shown, output.suffix), output)
 
 
 @app.command(cls=_Command)
 @user_errors
-def energy(model: ModelPath) -> None:
+def energy(model: ModelPath, units: UnitsOption = None, digits: DigitsOption = None,
+           decimals: DecimalsOption = None) -> None:
     """Print the summary characteristics of a cycle: work and power of every load and of
     friction, the mechanical loss coefficient and the efficiency; and the machine motion
     and flywheel when the model has a machine: section.
@@ -280,8 +301,11 @@ def energy(model: ModelPath) -> None:
     import numpy as np
 
     from mechloop.model.load import load_model
+    from mechloop.output.display import apply_display, number, resolve
+    from mechloop.output.display import quantity as q
 
     m = load_model(model)
+    shown = resolve(m.display, units, digits, decimals)
     if not m.bodies:
         raise ModelError([Problem(("bodies",), "the model has no bodies, so no loads",
                                   "add bodies with masses, and forces or moments")],
@@ -291,23 +315,23 @@ def energy(model: ModelPath) -> None:
     clock = "s" if not dynamic.static else "argument 1"
     broken = _warn_cycle_breaks(dynamic, "below")
     table = Table(title=f"Summary characteristics — {m.name or model}")
-    for head in ("load", "A+ [J]", "A- [J]", "max N [W]", "min N [W]", "mean N [W]",
-                 "N per kg [W/kg]"):
-        table.add_column(head, justify="left" if head == "load" else "right", no_wrap=True)
-    for row in summary.rows:
-        table.add_row(row.name, *(f"{v:.5g}" for v in (
-            row.positive_work, row.negative_work, row.max_power, row.min_power,
-            row.mean_power, row.specific_power)))
+    rows = apply_display(summary.to_frame(), None if shown is None else
+                         type(shown)(shown.units))  # units here, digits when printed
+    for head in rows.columns:
+        table.add_column(Text(head), justify="left" if head == "load" else "right",
+                         no_wrap=True)
+    for row in rows.itertuples(index=False):
+        table.add_row(row[0], *(number(v, shown, ".5g") for v in row[1:]))
     Console(highlight=False, width=max(out.width, 110)).print(table)
-    out.print(f"total mass {dynamic.mechanism.total_mass:.6g} kg; work over the cycle "
-              f"({clock}): driving {summary.driving_work:.6g} J, friction "
-              f"{summary.friction_work:.6g} J, change of kinetic energy "
-              f"{summary.kinetic_energy_change:.6g} J")
+    out.print(f"total mass {q(dynamic.mechanism.total_mass, 'kg', shown)}; work over the "
+              f"cycle ({clock}): driving {q(summary.driving_work, 'J', shown)}, friction "
+              f"{q(summary.friction_work, 'J', shown)}, change of kinetic energy "
+              f"{q(summary.kinetic_energy_change, 'J', shown)}")
     residual = sum(r.positive_work + r.negative_work for r in summary.rows) \
         - summary.kinetic_energy_change
     largest = max((r.positive_work - r.negative_work for r in summary.rows), default=0.0)
     out.print(f"energy balance: the works of all loads, the drive and friction less the "
-              f"change of kinetic energy leave {residual:.3g} J"
+              f"change of kinetic energy leave {q(residual, 'J', shown, '.3g')}"
               + (f" ({abs(residual) / largest:.2g} of the largest work; the trapezoidal "
                  "rule over the positions)" if largest > 0 else "")
               + (" — positions with a break are left out"
@@ -326,21 +350,23 @@ def energy(model: ModelPath) -> None:
         angle = dynamic.kinematics.argument_kinds[
             dynamic.mechanism.drives[0].argument] == "angle"
         unit, speed, mass = ("N*m", "rad/s", "kg*m^2") if angle else ("N", "m/s", "kg")
-        out.print(f"machine motion: mean speed {cycle.omega_mean:.6g} {speed}; constant "
-                  f"load on the input that balances the cycle {cycle.constant_load:.6g} {unit}"
+        out.print(f"machine motion: mean speed {q(cycle.omega_mean, speed, shown)}; "
+                  "constant load on the input that balances the cycle "
+                  f"{q(cycle.constant_load, unit, shown)}"
                   + ("" if cycle.bare_constant_load is None else
-                     f" (with the flywheel; without it {cycle.bare_constant_load:.6g} {unit})")
+                     " (with the flywheel; without it "
+                     f"{q(cycle.bare_constant_load, unit, shown)})")
                   + ("" if not cycle.iterations else
                      f" — the loads that depend on the speed taken at the cycle's own speed "
                      f"({cycle.iterations} iterations)") + "; "
                   f"without a flywheel δ = {cycle.motion.delta:.4g} "
-                  f"(speed {cycle.motion.omega_min:.6g} … {cycle.motion.omega_max:.6g} "
-                  f"{speed})")
+                  f"(speed {q(cycle.motion.omega_min, speed, shown).split()[0]} … "
+                  f"{q(cycle.motion.omega_max, speed, shown)})")
         if cycle.flywheel is not None:
-            out.print(f"flywheel for δ = {cycle.delta:.4g}: {cycle.flywheel:.6g} {mass} "
-                      f"(approximate method: {cycle.flywheel_approx:.6g} {mass}); speed "
-                      f"{cycle.with_flywheel.omega_min:.6g} … "
-                      f"{cycle.with_flywheel.omega_max:.6g} {speed}")
+            out.print(f"flywheel for δ = {cycle.delta:.4g}: {q(cycle.flywheel, mass, shown)} "
+                      f"(approximate method: {q(cycle.flywheel_approx, mass, shown)}); speed "
+                      f"{q(cycle.with_flywheel.omega_min, speed, shown).split()[0]} … "
+                      f"{q(cycle.with_flywheel.omega_max, speed, shown)}")
 
 
 @app.command(cls=_Command)
@@ -358,6 +384,9 @@ def simulate(
     cycles: Annotated[int | None, typer.Option(
         help="stop after this many cycles (default: the model's simulate.cycles)")] = None,
     force: Force = False,
+    units: UnitsOption = None,
+    digits: DigitsOption = None,
+    decimals: DecimalsOption = None,
 ) -> None:
     """Simulate the machine's motion in time (start-up, run-down, the approach to the
     steady cycle) from the model's simulate: section: a motor on the input, the start
@@ -373,6 +402,7 @@ def simulate(
     """
     from mechloop.dynamics.simulate import simulate as run
     from mechloop.model.load import load_model
+    from mechloop.output.display import resolve
     from mechloop.views.figure import FIGURE_SUFFIXES
 
     _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
@@ -381,6 +411,7 @@ def simulate(
         raise ModelError([Problem(("simulate",), "the model has no simulate: section",
                                   "add simulate: {motor: {kloss: ...}, duration: 5}")],
                          str(model))
+    shown = resolve(m.display, units, digits, decimals)
     settings = m.simulate
     if duration is not None or cycles is not None:
         settings = settings.model_copy(update={
@@ -394,7 +425,7 @@ def simulate(
                                                           total=total or None))
     _print_simulation(sim)
     if output is not None:
-        _write_frame(sim.to_frame(), output)
+        _write_frame(sim.to_frame(), output, shown)
         out.print(f"wrote {output} ({sim.time.size} rows)")
     if plot_file is not None:
         from mechloop.views.figure import save_figure
@@ -522,9 +553,10 @@ def plot(
     polar: Annotated[bool, typer.Option(help="hodograph in polar form (magnitude and "
                                         "angle) instead of x-y")] = False,
     units: Annotated[str | None, typer.Option(help="display units as KIND=UNIT pairs, "
-                     "e.g. length=mm,force=kN; kinds: length, angle, force, moment, power, "
-                     "mass, inertia, time, energy (default: SI units and degrees)")
-                     ] = None,
+                     "e.g. length=mm,force=kN,omega=rpm; kinds: length, angle, time, "
+                     "velocity, acceleration, angular_velocity (omega), angular_acceleration "
+                     "(epsilon), mass, inertia, force, moment, energy, power (default: the "
+                     "model's display: section, else SI units and degrees)")] = None,
     panels: Annotated[bool, typer.Option(help="parameters: one stacked panel per unit "
                       "(default: a y-axis per unit up to 3 units, panels for more)")
                       ] = False,
@@ -544,6 +576,7 @@ def plot(
     ```
     """
     from mechloop.model.load import load_model
+    from mechloop.output.display import plot_display, resolve
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
     from mechloop.views import plan as plans
@@ -554,7 +587,7 @@ def plot(
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
     _outputs(model, force, (output, FIGURE_SUFFIXES))
     m = load_model(model)
-    display = Display(**dict(item.split("=", 1) for item in _split(units)))
+    display = plot_display(resolve(m.display, units)) or Display()
     if kind == "structure":
         save_figure(formula.plot_structure(m), output)
         out.print(f"wrote {output}")
@@ -862,6 +895,7 @@ def sweep_command(
     import numpy as np
 
     from mechloop.model.load import load_model, locate
+    from mechloop.output.display import parse_units
     from mechloop.synthesis.parallel import check_scheduler
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
@@ -870,7 +904,7 @@ def sweep_command(
     from mechloop.views.sweep import plot_sweep
 
     _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
-    display = Display(**dict(item.split("=", 1) for item in _split(units)))
+    display = Display(**parse_units(units))
     check_scheduler(scheduler)
     pairs = [parse_vary(text) for text in vary]
     m = load_model(model)

@@ -11,6 +11,7 @@ from difflib import get_close_matches
 import numpy as np
 
 from mechloop.errors import ModelError, Problem
+from mechloop.model.display import check_display
 from mechloop.model.dynamic import VectorPoint
 from mechloop.model.indicator import IndicatorValue, indicator_problems
 from mechloop.model.intermediate import check_intermediate
@@ -52,6 +53,7 @@ def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     problems += _check_time(model)
     problems += _check_loads(model)
     problems += check_synthesis(model)
+    problems += check_display(model.display)
     return structure, problems
 
 

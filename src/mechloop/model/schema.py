@@ -25,6 +25,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BeforeValidator, Discriminator, Field, Tag, WithJsonSchema
 from pydantic_core import PydanticCustomError
 
+from mechloop.model.display import DisplaySection
 from mechloop.model.dynamic import (
     Body,
     Force,
@@ -270,6 +271,9 @@ class Model(_Frozen):
     project: Project | None = Field(
         None, description="the course project's cam (sheet 4) and gear pair or planetary "
         "train (sheet 3) documents, for mechloop report")
+    display: DisplaySection | None = Field(
+        None, description="units and precision of the results: tables, exports, energy, "
+        "plots (KDAM's units and tolerances panels)")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:

@@ -54,6 +54,23 @@ DERIVED_KINDS: dict[str, str] = {
     "specific_power": "power/mass",
 }
 
+#: Derived kinds whose unit can be named on its own (instead of following the base units):
+#: the quotient and the Display field that names it.
+OVERRIDES: dict[str, str] = {
+    "angle/time": "angular_velocity",
+    "angle/time^2": "angular_acceleration",
+    "length/time": "velocity",
+    "length/time^2": "acceleration",
+}
+#: The SI unit of each derived kind that can be named on its own.
+SI_DERIVED: dict[str, str] = {"angle/time": "rad/s", "angle/time^2": "rad/s^2",
+                              "length/time": "m/s", "length/time^2": "m/s^2"}
+#: Units that work for the derived kinds that can be named on their own.
+DERIVED_EXAMPLES: dict[str, str] = {"angular_velocity": "rad/s, rpm, deg/s",
+                                    "angular_acceleration": "rad/s^2, deg/s^2",
+                                    "velocity": "m/s, mm/s, km/h",
+                                    "acceleration": "m/s^2, mm/s^2, g0"}
+
 _FACTOR = re.compile(r"^([a-z_]+)(?:\^(\d+))?$")
 
 
@@ -95,8 +112,8 @@ def _power(unit: str, exponent: int) -> str:
 
 def _check_unit(name: str, unit: str, kind: str) -> None:
     """ViewError unless ``unit`` is a pint unit of ``kind``."""
-    si = BASE_KINDS[kind][0] if kind in BASE_KINDS else "rad/s"
-    works = BASE_KINDS[kind][1] if kind in BASE_KINDS else "rad/s, deg/s, rpm"
+    si = BASE_KINDS[kind][0] if kind in BASE_KINDS else SI_DERIVED[DERIVED_KINDS[kind]]
+    works = BASE_KINDS[kind][1] if kind in BASE_KINDS else DERIVED_EXAMPLES[kind]
     try:
         parsed = _unit(str(unit).strip())
     except (pint.errors.PintError, AttributeError, TypeError, ValueError,
@@ -109,7 +126,7 @@ def _check_unit(name: str, unit: str, kind: str) -> None:
         raise ViewError(f"display unit {name}={unit!r} is not a unit of {kind}",
                         f"{name} takes a {kind} unit: {works}") from exc
     plain = parsed.dimensionless and str(parsed) in ("dimensionless", "")
-    if kind in ("angle", "angular_velocity") and plain:
+    if kind in ("angle", "angular_velocity", "angular_acceleration") and plain:
         raise ViewError(f"display unit {name}={unit!r} is not a unit of {kind}",
                         f"{name} takes a {kind} unit: {works}")
 
@@ -135,23 +152,31 @@ class Display:
     digits: int = 4
     energy: str = "J"
     angular_velocity: str | None = None
+    angular_acceleration: str | None = None
+    velocity: str | None = None
+    acceleration: str | None = None
 
     def __post_init__(self) -> None:
         for f in fields(self):
             value = getattr(self, f.name)
             if f.name in BASE_KINDS:
                 _check_unit(f.name, value, f.name)
-        if self.angular_velocity is not None:
-            _check_unit("angular_velocity", self.angular_velocity, "angular_velocity")
+            elif f.name in OVERRIDES.values() and value is not None:
+                _check_unit(f.name, value, f.name)
         if not isinstance(self.digits, int) or not 1 <= self.digits <= 15:
             raise ViewError(f"digits={self.digits!r} is not a number of significant digits",
                             "use an integer from 1 to 15")
 
+    def _override(self, kind: str) -> str | None:
+        """The unit named for a derived kind (``angular_velocity="rpm"``), or None."""
+        name = OVERRIDES.get(DERIVED_KINDS.get(kind, kind).replace(" ", ""))
+        return None if name is None else getattr(self, name)
+
     def _units(self, kind: str) -> tuple[str, str]:
         """(SI unit, display unit) of ``kind`` as pint-readable text."""
-        if DERIVED_KINDS.get(kind, kind).replace(" ", "") == "angle/time" \
-                and self.angular_velocity is not None:
-            return "rad/s", self.angular_velocity
+        named = self._override(kind)
+        if named is not None:
+            return SI_DERIVED[DERIVED_KINDS.get(kind, kind).replace(" ", "")], named
         top, bottom = _parse_kind(kind)
 
         def text(factors, unit_of) -> str:
@@ -183,9 +208,9 @@ class Display:
 
     def label(self, kind: str) -> str:
         """The display unit of ``kind`` as it is printed: ``'deg/s^2'``, ``'kgf'``."""
-        if DERIVED_KINDS.get(kind, kind).replace(" ", "") == "angle/time" \
-                and self.angular_velocity is not None:
-            return self.angular_velocity
+        named = self._override(kind)
+        if named is not None:
+            return named
         top, bottom = _parse_kind(kind)
         num = "*".join(_power(getattr(self, k), n) for k, n in top) or "1"
         if not bottom:

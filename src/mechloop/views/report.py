@@ -29,9 +29,11 @@ from mechloop.dynamics.cycle_validity import cycle_breaks
 from mechloop.model.formula import describe_structure
 from mechloop.model.project import ProjectDocuments
 from mechloop.model.schema import Model
+from mechloop.output.display import TableDisplay, apply_display, plot_display, resolve
 from mechloop.solve.kinematics import solve
 from mechloop.solve.results import Results
 from mechloop.views import curves, dynamics, formula, plan
+from mechloop.views.display import DEFAULT_DISPLAY
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.sheet import Sheet, Table
 
@@ -217,7 +219,8 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
     if warn is not None and broken is not None:
         warn(TEXT["en"]["cycle_breaks"].format(where=broken.where()))
     sheets = project_sheets(project, lang) if project is not None else []
-    pages = list(_pages(model, results, dyn, name, TEXT[lang], sheets))
+    pages = list(_pages(model, results, dyn, name, TEXT[lang], sheets,
+                        resolve(model.display)))
     with atomic_file(target) as handle, \
             PdfPages(handle, metadata={"Title": model.name or TEXT[lang]["title"],
                                        "Creator": "mechloop"}) as pdf:
@@ -232,43 +235,52 @@ def write_report(model: Model, path: str | os.PathLike[str], *, lang: str = "en"
 
 
 def _pages(model: Model, results: Results, dyn: DynamicResults | None, name: str,
-           text: dict[str, str], sheets: list[Sheet] | None = None
-           ) -> Iterator[Callable[[], Figure]]:
-    """Page builders in report order (each returns one figure)."""
+           text: dict[str, str], sheets: list[Sheet] | None = None,
+           shown: TableDisplay | None = None) -> Iterator[Callable[[], Figure]]:
+    """Page builders in report order (each returns one figure); ``shown``: the units and
+    precision of the model's display: section, for the plots and the appendix."""
     source: Results | DynamicResults = dyn if dyn is not None else results
+    display = plot_display(shown) or DEFAULT_DISPLAY
+    length_unit = None if shown is None else shown.units.get("length")
     yield lambda: _title_page(model, results, text)
     yield lambda: _text_page(text["a"], _parameters(model, dyn, text))
     yield lambda: _titled(plan.plot_plan(source, _intermediate(results)), text["a_plan"])
     yield lambda: _titled(formula.plot_structure(model), text["b"])
     yield lambda: _text_page(text["b"], describe_structure(model).splitlines())
-    yield lambda: _titled(curves.plot_increment(source, name, 0),
+    yield lambda: _titled(curves.plot_increment(source, name, 0, display=display),
                           text["c"].format(name=name))
     for pair in _angle_pairs(results)[:6]:
-        yield lambda pair=pair: _titled(curves.plot_angle_between(source, *pair), text["d"])
+        yield lambda pair=pair: _titled(curves.plot_angle_between(source, *pair,
+                                                                       display=display),
+                                                      text["d"])
     against = f"arg{min(results.arguments)}" if results.arguments else "position"
     yield lambda: _titled(curves.plot_parameters(source, [name, f"d{name}"],
-                                                 against=against), text["e"])
+                                                 against=against, display=display),
+                          text["e"])
     if dyn is not None:
         yield lambda: _text_page(text["f"], _dynamic_parameters(model, dyn, text))
         if dyn.reduced is not None:
-            yield lambda: _titled(dynamics.plot_reduced(dyn), text["g"])
-        yield lambda: _titled(dynamics.plot_balancing(dyn), text["g_bal"])
-        yield lambda: _titled(dynamics.plot_reactions(dyn), text["h"])
+            yield lambda: _titled(dynamics.plot_reduced(dyn, display=display), text["g"])
+        yield lambda: _titled(dynamics.plot_balancing(dyn, display=display), text["g_bal"])
+        yield lambda: _titled(dynamics.plot_reactions(dyn, display=display), text["h"])
         for joint in dyn.forces.reactions:
-            yield lambda joint=joint: _titled(dynamics.plot_hodograph(dyn, joint),
+            yield lambda joint=joint: _titled(dynamics.plot_hodograph(dyn, joint,
+                                                                          display=display),
                                               text["h_hod"].format(name=joint))
         centres = [f"S{b}" for b in dyn.centers]
         if centres:
             yield lambda: _titled(plan.plot_trajectories(dyn, centres[:6],
-                                                         position=_intermediate(results)),
+                                                         position=_intermediate(results),
+                                                         length_unit=length_unit),
                                   text["i"])
-        yield lambda: _titled(dynamics.plot_summary(dyn), text["g"])
+        yield lambda: _titled(dynamics.plot_summary(dyn, display=display), text["g"])
         if dyn.cycle is not None:
-            yield lambda: _titled(dynamics.plot_machine_motion(dyn), text["g"])
+            yield lambda: _titled(dynamics.plot_machine_motion(dyn, display=display),
+                                  text["g"])
     for sheet in sheets or []:
         yield from sheet_pages(sheet)
     yield lambda: _text_page(text["conclusion"], _conclusion(results, dyn, name, text))
-    frame = (dyn.to_frame() if dyn is not None else results.to_frame())
+    frame = apply_display(dyn.to_frame() if dyn is not None else results.to_frame(), shown)
     columns = list(frame.columns)
     for start in range(1, len(columns), APPENDIX_COLUMNS):
         chunk = [columns[0], *columns[start:start + APPENDIX_COLUMNS]]
