@@ -37,6 +37,11 @@ HAND = {
     # crankshaft 1 with two throws, each with a rod and a piston (RRP dyads)
     "16_two_cylinder_compressor.yaml": (5, 7, 0, 1, "L0(1) → L2(2,4) → L2(3,5)", 2),
     "18_two_stage_compressor.yaml": (5, 7, 0, 1, "L0(1) → L2(2,4) → L2(3,5)", 2),
+    # crank 1; plunger 2 pinned to the crank pin, sliding in the cylinder 3 that swings on
+    # its trunnion: an RPR dyad (pins A and C, the slide between): n = 3, p5 = 4
+    "17_oil_pump.yaml": (3, 4, 0, 1, "L0(1) → L3(2,3)", 2),
+    # crank 1, coupler 2, rocker with arm 3 (RRR), rod 4 and ram 5 (RRP): n = 5, p5 = 7
+    "19_gear_shaper.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L2(4,5)", 2),
 }
 
 
