@@ -42,6 +42,14 @@ HAND = {
     "17_oil_pump.yaml": (3, 4, 0, 1, "L0(1) → L3(2,3)", 2),
     # crank 1, coupler 2, rocker with arm 3 (RRR), rod 4 and ram 5 (RRP): n = 5, p5 = 7
     "19_gear_shaper.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L2(4,5)", 2),
+    # ring 1 driven along its slide, link 2 and flap 3 (RRR): n = 3, p5 = 4 (slide, R, L, P)
+    "14_nozzle_ring.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # primary flap 1 turned by the cylinder (a drive, not a link), divergent flap 2 and
+    # strut 3 (RRR): n = 3, p5 = 4 (P, T, E, Q)
+    "15_nozzle_flaps.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # slider 1 driven along its guide; link 2 + left door 3, link 4 + right door 5 (RRR
+    # each): n = 5, p5 = 7 (slide, P twice, BL, BR, HL, HR)
+    "20_solar_panel_doors.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L1(4,5)", 2),
 }
 
 
