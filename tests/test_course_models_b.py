@@ -237,3 +237,39 @@ def test_gas_tables_are_the_stated_indicator_diagrams(name: str):
     for force, spec in GAS[name].items():
         expected = gas_force(res, spec)
         assert np.abs(tables[force] - expected).max() <= 0.0005 + 1e-9, force
+
+
+def test_the_ranges_the_headers_state():
+    def solved(name: str) -> mechloop.Results:
+        return mechloop.solve(_load(name))
+
+    def deg(res: mechloop.Results, name: str) -> np.ndarray:
+        return np.degrees(res.value(name))
+
+    # 12: the articulated piston's dead centres fall a little off those of a central
+    # slider-crank at 60 deg (60 and 240 deg of the crank): found on a dense copy
+    data = yaml.safe_load((COURSE / "12_v_engine_articulated.yaml").read_text())
+    for key in ("bodies", "forces", "gravity", "machine"):
+        data.pop(key)
+    data["positions"], data["arguments"][1] = 7200, {"table": {0: 0, 7200: 720}}
+    dense = mechloop.solve(mechloop.Model.from_dict(data))
+    s, crank = dense.value("r7"), np.degrees(dense.arguments[1])
+    top, bottom = crank[np.argmax(s)], crank[np.argmin(s)]
+    assert 60.5 < top < 63 and 235 < bottom < 239.5
+    assert np.ptp(dense.value("r3")) * 1e3 == pytest.approx(170, abs=1e-9)
+    # 14: the flap turns from 25 deg inwards to about in line with the axis
+    door = deg(solved("14_nozzle_ring.yaml"), "a6") - 360
+    assert door[0] == pytest.approx(-25, abs=0.05) and -1 < door[-1] < 0
+    # 15: the primary flap from 30 to 12 deg inwards, the divergent one out from 5 to 9 deg
+    res = solved("15_nozzle_flaps.yaml")
+    primary, divergent = deg(res, "a4"), deg(res, "a5")
+    assert primary[[0, -1]] == pytest.approx([-30, -12], abs=0.05)
+    assert np.round(divergent[[0, -1]]).tolist() == [5, 9]
+    # 19: the ram moves down (r7 grows) over more of the crank's turn than up: quick return
+    rate = solved("19_gear_shaper.yaml").rate("r7")
+    assert (rate > 0).sum() > (rate < 0).sum() + 4
+    # 20: the doors open from flat to 119 deg, mirror images of each other
+    res = solved("20_solar_panel_doors.yaml")
+    left, right = deg(res, "a9"), 180 - (deg(res, "a11") % 360)
+    assert round(left[0]) == 0 and round(left[-1]) == 119 and np.all(np.diff(left) > 0)
+    assert np.allclose(left, right, atol=1e-9)

@@ -73,9 +73,14 @@ def _header(path: Path) -> str:
     return "\n".join(lines)
 
 
+def _example_files() -> list[Path]:
+    """The example files, those of the course projects (examples/course/) included."""
+    return sorted(p for p in EXAMPLES.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+
+
 def _paragraphs_of_headers() -> list[tuple[str, str, str]]:
     out = []
-    for path in sorted(EXAMPLES.iterdir()):
+    for path in _example_files():
         header = _header(path)
         for block in re.split(r"\n\s*\n", header):
             if block.strip():
@@ -88,7 +93,7 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 def _pool() -> set[float]:
     """Numbers of the examples' data (outside comments) and of the README's code blocks."""
-    texts = [line.split("#")[0] for p in EXAMPLES.iterdir()
+    texts = [line.split("#")[0] for p in _example_files()
              for line in p.read_text(encoding="utf-8").splitlines()]
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
@@ -410,12 +415,16 @@ FIGURES: list[tuple[str, str, tuple]] = [
     ("sparse_argument.yaml", r"(?P<fig>0\.1667) 0\.2133", ("computed", "sparse 4")),
     ("sparse_argument.yaml", r"0\.1667 (?P<fig>0\.2133)", ("computed", "sparse 5")),
     ("sparse_argument.yaml", r"0\.26 (?P<fig>0\.24) 0\.22", ("computed", "sparse 7")),
+    ("20_solar_panel_doors.yaml", r"to (?P<fig>119) deg open",
+     ("test", "tests/test_course_models_b.py::test_the_ranges_the_headers_state")),
     ("sparse_argument.yaml", r"at (?P<fig>81\.6) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
     ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
 ]
 
+COURSE_DIAGRAM = "the assumed indicator diagram behind the gas-force tables (checked in " \
+    "tests/test_course_models_b.py)"
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
@@ -470,6 +479,17 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("slider_crank_stroke_synthesis.yaml", r"\(200, 1\.4,|K = 1\.4|\b230°", "the task"),
     ("sparse_argument.yaml", r"0\.24 0\.22", "given values of the table"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
+    # the course models of examples/course/ (tasks 5, 12-20 of seed 000 sec. 3)
+    (None, r"n = 1\.3\b", COURSE_DIAGRAM),
+    ("12_v_engine_articulated.yaml", r"bore 148 mm|6\.5 MPa at 370 deg|n = 1\.27|"
+     r"0\.11 MPa from 540 deg|(at|fires) 420 deg", COURSE_DIAGRAM),
+    ("13_v_engine_fork_and_blade.yaml", r"bore 84 mm|0\.09 MPa|n = 1\.25|0\.11 MPa from 540 deg",
+     COURSE_DIAGRAM),
+    ("18_two_stage_compressor.yaml", r"0\.33( MPa)?", COURSE_DIAGRAM),
+    ("17_oil_pump.yaml", r"area 706\.86 mm²", "the plunger's area, pi (30 mm)^2 / 4"),
+    (None, r"law in 2 s|law in 20 s", "the argument's law ends at that time"),
+    ("20_solar_panel_doors.yaml", r"turned 115 deg", "the lug's angle to its door, the "
+     "delta of a9 (-65 deg) less 180 deg"),
 ]
 
 
