@@ -12,6 +12,7 @@ piston that no longer moves as the diagram assumed fails
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -182,13 +183,20 @@ def format_table(values: np.ndarray, indent: int) -> str:
 FILES = sorted(HAND)
 
 
+@functools.cache
 def _load(name: str) -> mechloop.Model:
     return mechloop.load_model(COURSE / name)
 
 
+@functools.cache
+def _solved(name: str) -> mechloop.Results:
+    """The kinematics of a model, solved once for the tests of this file (read only)."""
+    return mechloop.solve(_load(name))
+
+
 @pytest.mark.parametrize("name", FILES)
 def test_solves_without_a_break_over_the_working_range(name: str):
-    res = mechloop.solve(_load(name))
+    res = _solved(name)
     assert not res.broken.any() and not res.breaks and not res.breaks_between
     for key, value in res.values.items():
         assert np.all(np.isfinite(value)), key
@@ -228,8 +236,7 @@ def test_mobility_and_groups_are_the_hand_count(name: str):
 
 @pytest.mark.parametrize("name", sorted(GAS))
 def test_gas_tables_are_the_stated_indicator_diagrams(name: str):
-    model = _load(name)
-    res = mechloop.solve(model)
+    res = _solved(name)
     data = yaml.safe_load((COURSE / name).read_text(encoding="utf-8"))
     tables = {f["name"]: np.asarray(f["value"]["table"], float) for f in data["forces"]
               if f["name"] in GAS[name]}
@@ -240,8 +247,7 @@ def test_gas_tables_are_the_stated_indicator_diagrams(name: str):
 
 
 def test_the_ranges_the_headers_state():
-    def solved(name: str) -> mechloop.Results:
-        return mechloop.solve(_load(name))
+    solved = _solved
 
     def deg(res: mechloop.Results, name: str) -> np.ndarray:
         return np.degrees(res.value(name))
