@@ -33,7 +33,8 @@ import mechloop
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
-EXAMPLE_FILES = sorted(p for p in EXAMPLES.rglob("*") if p.is_file())  # examples/course too
+EXAMPLE_FILES = sorted(p for p in EXAMPLES.rglob("*")  # examples/course, cams, gears too
+                       if p.is_file() and "__pycache__" not in p.parts)
 SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 NUMBER = re.compile(r"(?<![\w.\-/])(\d+(?:,\d{3})*(?:\.\d+)?(?:e[-+]?\d+|·10[⁻⁰-⁹¹²³]+)?)"
                     r"(?![a-zA-Z_\d])")
@@ -432,6 +433,8 @@ FIGURES: list[tuple[str, str, tuple]] = [
     ("sparse_argument.yaml", r"(?P<fig>0\.1667) 0\.2133", ("computed", "sparse 4")),
     ("sparse_argument.yaml", r"0\.1667 (?P<fig>0\.2133)", ("computed", "sparse 5")),
     ("sparse_argument.yaml", r"0\.26 (?P<fig>0\.24) 0\.22", ("computed", "sparse 7")),
+    ("20_solar_panel_doors.yaml", r"to (?P<fig>119) deg open",
+     ("test", "tests/test_course_models_b.py::test_the_ranges_the_headers_state")),
     ("sparse_argument.yaml", r"at (?P<fig>81\.6) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
     ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
@@ -452,6 +455,8 @@ FIGURES += [(R, f"`{law}` \\|" + _CELL * column + r" (?P<fig>[\d.]+) \|",
             for law in ("harmonic", "cycloidal", "poly345", "poly4567", "modified_trapezoidal",
                         "modified_sine") for column in range(3)]
 
+COURSE_DIAGRAM = "the assumed indicator diagram behind the gas-force tables (checked in " \
+    "tests/test_course_models_b.py)"
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
@@ -526,6 +531,17 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"in \d+ s \(3-4-5 polynomial law", "the time of the argument's law (its end "
      "position over the model's time table)"),
     (None, r"\d+(\.\d+)? kPa on \d+ m × 0\.8 m", "an assumed wind pressure on an area"),
+    # the course models of examples/course/ (tasks 5, 12-20 of seed 000 sec. 3)
+    (None, r"n = 1\.3\b", COURSE_DIAGRAM),
+    ("12_v_engine_articulated.yaml", r"bore 148 mm|6\.5 MPa at 370 deg|n = 1\.27|"
+     r"0\.11 MPa from 540 deg|(at|fires) 420 deg", COURSE_DIAGRAM),
+    ("13_v_engine_fork_and_blade.yaml", r"bore 84 mm|0\.09 MPa|n = 1\.25|0\.11 MPa from 540 deg",
+     COURSE_DIAGRAM),
+    ("18_two_stage_compressor.yaml", r"0\.33( MPa)?", COURSE_DIAGRAM),
+    ("17_oil_pump.yaml", r"area 706\.86 mm²", "the plunger's area, pi (30 mm)^2 / 4"),
+    (None, r"law in 2 s|law in 20 s", "the argument's law ends at that time"),
+    ("20_solar_panel_doors.yaml", r"turned 115 deg", "the lug's angle to its door, the "
+     "delta of a9 (-65 deg) less 180 deg"),
 ]
 
 
