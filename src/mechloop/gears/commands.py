@@ -16,6 +16,8 @@ from rich.table import Table
 from mechloop.errors import HintedError, ModelError, Problem
 from mechloop.gears.document import (
     GearDocument,
+    choice_of,
+    no_design,
     pair_of,
     read_gear_document,
     section,
@@ -115,25 +117,14 @@ def run_planetary(path: Path | None, options: dict[str, Any], *, out: Console,
     train = train_of(spec, file=file, lines=lines)
     frame = None
     if train is None:
-        from mechloop.gears.planetary import scheme_of
-        from mechloop.gears.tooth_search import choose_teeth
-
+        choice = choice_of(spec, file=file, lines=lines)
         s = spec.search
-        try:
-            choice = choose_teeth(scheme_of(spec.scheme), float(spec.target_ratio),
-                                  spec.planets, teeth_min=s.teeth_min,
-                                  teeth_max=s.teeth_max,
-                                  ring_difference_min=s.ring_difference_min,
-                                  tolerance=s.tolerance, ha=spec.addendum)
-        except HintedError as exc:
-            raise located_error([exc.at(("planetary", "search")).problems[0]], file,
-                                lines) from None
         frame = choice_table(choice, s.show)
         out.print(f"{choice.tried:,} combinations of teeth tried, {len(choice):,} meet the "
                   f"ratio {spec.target_ratio:g} ± {100 * s.tolerance:g} % with "
                   f"{spec.planets} planets (coaxial, assembled, clear of each other)")
         if not len(choice):
-            raise located_error([_no_design(spec)], file, lines)
+            raise located_error([no_design(spec)], file, lines)
         _print_frame(out, frame, f"Designs of the {choice.scheme.name} scheme, best first")
         train = choice.train(0, spec.module, spec.addendum)
         out.print("the best design is analysed below")
@@ -168,10 +159,3 @@ def run_planetary(path: Path | None, options: dict[str, Any], *, out: Console,
         atomic_write_text(model, yaml.safe_dump(data, sort_keys=False, allow_unicode=True))
         out.print(f"wrote {model} (the train as a vector model: mechloop solve {model})")
 
-
-def _no_design(spec) -> Problem:
-    return Problem(("planetary", "target_ratio"),
-                   f"no design of the {spec.scheme} scheme meets the ratio "
-                   f"{spec.target_ratio:g} within {100 * spec.search.tolerance:g} %",
-                   "widen search.tolerance or teeth_max, change the number of planets, or "
-                   "try another scheme")

@@ -182,6 +182,34 @@ def train_of(spec: PlanetarySpec, *, file: str | None = None,
                             lines or {}) from None
 
 
+def choice_of(spec: PlanetarySpec, *, file: str | None = None,
+              lines: LineMap | None = None):
+    """The tooth numbers a ``planetary:`` section's ``target_ratio`` and ``search:`` ask
+    for (a :class:`~mechloop.gears.tooth_search.ToothChoice`, best first, possibly empty);
+    a bad search is told at its key and line."""
+    from mechloop.gears.planetary import scheme_of
+    from mechloop.gears.tooth_search import choose_teeth
+
+    s = spec.search
+    try:
+        return choose_teeth(scheme_of(spec.scheme), float(spec.target_ratio), spec.planets,
+                            teeth_min=s.teeth_min, teeth_max=s.teeth_max,
+                            ring_difference_min=s.ring_difference_min,
+                            tolerance=s.tolerance, ha=spec.addendum)
+    except HintedError as exc:
+        raise located_error([Problem(("planetary", "search"), exc.message, exc.hint)],
+                            file, lines or {}) from None
+
+
+def no_design(spec: PlanetarySpec) -> Problem:
+    """The problem of a choice that found no tooth numbers."""
+    return Problem(("planetary", "target_ratio"),
+                   f"no design of the {spec.scheme} scheme meets the ratio "
+                   f"{spec.target_ratio:g} within {100 * spec.search.tolerance:g} %",
+                   "widen search.tolerance or teeth_max, change the number of planets, or "
+                   "try another scheme")
+
+
 def section(doc: GearDocument, key: str, file: str, lines: LineMap) -> Any:
     """The ``gear_pair`` or ``planetary`` section of a document, or a located error."""
     value = getattr(doc, key)

@@ -17,11 +17,17 @@ from dataclasses import dataclass
 
 from matplotlib.figure import Figure
 
-from mechloop.errors import HintedError, Problem
-from mechloop.gears.document import pair_of, read_gear_document, train_of
+from mechloop.errors import Problem
+from mechloop.gears.document import (
+    choice_of,
+    no_design,
+    pair_of,
+    read_gear_document,
+    train_of,
+)
 from mechloop.gears.drawing import draw_mesh, plot_sliding
 from mechloop.gears.pair import GearPair
-from mechloop.gears.planetary import PlanetaryTrain, scheme_of
+from mechloop.gears.planetary import PlanetaryTrain
 from mechloop.gears.tables import pair_table
 from mechloop.gears.velocity_plan import plot_velocity_plan
 from mechloop.model.document import located_error
@@ -57,24 +63,9 @@ def load_gears(path: str | os.PathLike[str]) -> GearTask:
     if spec is not None:
         train = train_of(spec, file=file, lines=lines)
         if train is None:  # the best design of the choice for the target ratio
-            from mechloop.gears.tooth_search import choose_teeth
-
-            s = spec.search
-            try:
-                choice = choose_teeth(scheme_of(spec.scheme), float(spec.target_ratio),
-                                      spec.planets, teeth_min=s.teeth_min,
-                                      teeth_max=s.teeth_max,
-                                      ring_difference_min=s.ring_difference_min,
-                                      tolerance=s.tolerance, ha=spec.addendum)
-            except HintedError as exc:
-                raise located_error([Problem(("planetary", "search"), exc.message,
-                                             exc.hint)], file, lines) from None
+            choice = choice_of(spec, file=file, lines=lines)
             if not len(choice):
-                raise located_error([Problem(
-                    ("planetary", "target_ratio"), f"no design of the {spec.scheme} scheme "
-                    f"meets the ratio {spec.target_ratio:g} within "
-                    f"{100 * s.tolerance:g} %", "widen search.tolerance or teeth_max, or "
-                    "change the number of planets or the scheme")], file, lines)
+                raise located_error([no_design(spec)], file, lines)
             train = choice.train(0, spec.module, spec.addendum)
     return GearTask(pair, (doc.gear_pair.name or "") if doc.gear_pair else "", train,
                     (spec.name or "") if spec else "", float(spec.input_speed) if spec
