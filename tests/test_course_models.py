@@ -184,6 +184,16 @@ def test_examples_command_prints_numbers_and_both_titles():
     assert "crank_slider.yaml" in full.output and "Offset slider-crank" in full.output
 
 
+def test_readme_table_names_every_course_model_with_its_title():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme.split("\n## Course project\n")[1].split("\n## ")[0]
+    rows = re.findall(r"^\| (\d+) \| (.+?) \| `([^`]+)` \| .+ \|$", section, flags=re.M)
+    course = examples(course_only=True)
+    assert [(int(n), f) for n, _, f in rows] == [(e.number, e.path.name) for e in course]
+    for (_, title, _), e in zip(rows, course, strict=True):
+        assert title.startswith(e.title_ru.split(" (")[0]), (title, e.title_ru)
+
+
 @pytest.mark.parametrize("name", ["1", "01", "01_an10_landing_gear",
                                   "01_an10_landing_gear.yaml", "01_an10"])
 def test_new_finds_by_number_stem_file_or_prefix(name):

@@ -526,6 +526,7 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
     ("README.md", r"^\| (1[3-9]|20) \| ", "a course task's number (seed 000 sec. 3)"),
     (None, r"task No\. \d+ ", "a course task's number (seed 000 sec. 3)"),
+    (R, r"tasks 5, 12, 13 and 16–19", "course task numbers (seed 000 sec. 3)"),
     # the course models of examples/course/: the drawing's points (the frame vectors are
     # computed from them), the time the argument's law takes, assumed air loads
     (None, r"\b[A-Z]\d? \(-?\d+, ?-?\d+\)", "a point of a course model's drawing, mm"),
