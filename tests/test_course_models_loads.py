@@ -1,10 +1,13 @@
 """The loads of the course-project engines and compressors (examples/course/, tasks 5, 12,
 13, 16, 18) and the machine cycle of every course model with a ``machine:`` section.
 
-Every gas-force table is the indicator diagram its header states, recomputed here from the
-model's own piston positions.  The gas tables are inputs of the models; the diagrams below
-are written out independently of mechloop (polytropes between the piston's dead centres),
-so a table edited by hand or a piston that no longer moves as the diagram assumed fails
+Every gas force is the indicator diagram its header states, recomputed here from the
+model's own piston positions: the compressors' (5, 16, 18) are mechloop's indicator loads
+(README "Engine and compressor indicator diagrams"), the engines' (12, 13) tables, inputs
+of the models.  The diagrams below are written out independently of mechloop (polytropes
+between the piston's dead centres), so a table edited by hand, an indicator load given
+other numbers or a piston that no longer moves as the diagram assumed fails
+``test_indicator_loads_are_the_stated_indicator_diagrams`` or
 ``test_gas_tables_are_the_stated_indicator_diagrams``.  With ``machine: {delta: ...}`` the
 speed with the flywheel found varies by that δ over the cycle.
 
@@ -185,8 +188,38 @@ def course() -> _Course:
     return _Course()
 
 
-@pytest.mark.parametrize("name", sorted(GAS))
+#: file: {force of GAS: ((the model's indicator load, its sign towards the crank), ...)}
+INDICATOR: dict[str, dict[str, tuple[tuple[str, float], ...]]] = {
+    # double-acting: the head end's load pushes towards the crank, the crank end's away
+    "05_compressor.yaml": {"gas": (("gas head end", 1.0), ("gas crank end", -1.0))},
+    "16_two_cylinder_compressor.yaml": {"gas 1": (("gas 1", 1.0),),
+                                        "gas 2": (("gas 2", 1.0),)},
+    "18_two_stage_compressor.yaml": {"LP gas": (("LP gas", 1.0),),
+                                     "HP gas": (("HP gas", 1.0),)},
+}
+
+
+@pytest.mark.parametrize("name", sorted(INDICATOR))
+def test_indicator_loads_are_the_stated_indicator_diagrams(course: _Course, name: str):
+    """mechloop's indicator load (the dead centres from the interpolated kinematics, the
+    volume from the piston's position) gives the force recomputed here; the cylinders are
+    central and the crank steps 5 deg, so both find the dead centres at the same
+    positions and agree to rounding."""
+    from mechloop.dynamics.indicator import model_indicators
+
+    res = course.solved(name)
+    loads = {i.name: i.gas.force / 1e3 for i in model_indicators(course.model(name))}  # kN
+    assert loads.keys() == {load for parts in INDICATOR[name].values() for load, _ in parts}
+    for force, parts in INDICATOR[name].items():
+        expected = gas_force(res, GAS[name][force])
+        got = sum(sign * loads[load] for load, sign in parts)
+        assert np.abs(got - expected).max() <= 1e-9 * np.abs(expected).max(), force
+
+
+@pytest.mark.parametrize("name", sorted(set(GAS) - set(INDICATOR)))
 def test_gas_tables_are_the_stated_indicator_diagrams(course: _Course, name: str):
+    """The engines' diagrams (a linear pressure rise around the firing dead centre) are
+    not the indicator load's mixed cycle: their gas forces stay tables."""
     res = course.solved(name)
     data = yaml.safe_load((COURSE / name).read_text(encoding="utf-8"))
     tables = {f["name"]: np.asarray(f["value"]["table"], float) for f in data["forces"]
@@ -198,7 +231,7 @@ def test_gas_tables_are_the_stated_indicator_diagrams(course: _Course, name: str
 
 
 def test_every_engine_and_compressor_has_its_diagram_here():
-    assert set(GAS) <= set(MACHINES)
+    assert set(GAS) <= set(MACHINES) and set(INDICATOR) <= set(GAS)
     assert set(GAS) == {p.name for p in COURSE.glob("*.yaml")
                         if re.search(r"compressor|engine", p.name)}
 
