@@ -154,7 +154,7 @@ def test_the_report_says_its_cycle_figures_are_not_valid(tmp_path: Path, monkeyp
 
     # the report's own conclusion page only (a whole report takes half a minute to draw;
     # tests/test_report_and_cli_views.py draws whole ones)
-    def conclusion_only(model, results, dyn, name, text):
+    def conclusion_only(model, results, dyn, name, text, *_):
         yield lambda: report._text_page(text["conclusion"],
                                         report._conclusion(results, dyn, name, text))
 

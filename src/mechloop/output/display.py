@@ -252,9 +252,15 @@ def round_significant(values: NDArray[np.float64], digits: int) -> NDArray[np.fl
     scaled = np.where(exact, x, 0.0)
     up = np.where(shift >= 0, 10.0 ** np.clip(shift, 0, 22), 1.0)
     down = np.where(shift < 0, 10.0 ** np.clip(-shift, 0, 22), 1.0)
-    rounded = np.rint(scaled * up / down) * down / up
-    if not exact.all():
-        rounded[~exact] = [float(f"{v:.{digits}g}") for v in x[~exact]]
+    q = scaled * up / down
+    rounded = np.rint(q) * down / up
+    # q carries the error of a product and a quotient (a few units of its last place): near
+    # a half it may round the wrong way, so those few values are rounded by their decimal
+    # text, which Python rounds exactly
+    tie = np.abs(np.abs(q - np.trunc(q)) - 0.5) <= 8 * np.spacing(np.abs(q))
+    slow = ~exact | tie
+    if slow.any():
+        rounded[slow] = [float(f"{v:.{digits}g}") for v in x[slow]]
     out[finite] = np.where(np.isfinite(rounded), rounded, x)  # 1.5e308 to 1 digit: kept
     return out
 
