@@ -200,3 +200,24 @@ def test_new_copies_the_project_documents_so_the_copy_still_reports(tmp_path):
     assert not (tmp_path / "01_an10_landing_gear.yaml").exists()
     assert not (tmp_path / "project" / "01_gears.yaml").exists()
     assert (tmp_path / "project" / "01_cam.yaml").read_text(encoding="utf-8") == "cam: {}\n"
+
+
+def test_a_group_files_bad_project_reference_is_located_in_it(tmp_path):
+    """Group files (tasks 6 and 9) take ``project:`` as vector models do, errors
+    located at its key and line."""
+    from mechloop.errors import ModelError
+
+    text = (COURSE_DIR / "06_landing_gear_four_bar.yaml").read_text(encoding="utf-8")
+    broken = tmp_path / "gear.yaml"
+    broken.write_text(text.replace("project/06_cam.yaml", "project/missing.yaml"),
+                      encoding="utf-8")
+    (tmp_path / "project").mkdir()
+    (tmp_path / "project" / "06_gears.yaml").write_bytes(
+        (COURSE_DIR / "project" / "06_gears.yaml").read_bytes())
+    model = mechloop.load_model(broken)
+    assert model.project.gears == "project/06_gears.yaml"
+    with pytest.raises(ModelError) as info:
+        project_documents(model, broken)
+    problem, = info.value.problems
+    assert problem.path == ("project", "cam") and "missing.yaml" in problem.message
+    assert problem.line == len(text.splitlines())
