@@ -434,7 +434,7 @@ FIGURES: list[tuple[str, str, tuple]] = [
     ("sparse_argument.yaml", r"0\.1667 (?P<fig>0\.2133)", ("computed", "sparse 5")),
     ("sparse_argument.yaml", r"0\.26 (?P<fig>0\.24) 0\.22", ("computed", "sparse 7")),
     ("20_solar_panel_doors.yaml", r"to (?P<fig>119) deg open",
-     ("test", "tests/test_course_models_b.py::test_the_ranges_the_headers_state")),
+     ("test", "tests/test_course_models.py::test_course_headers_12_to_20_state_what_they_do")),
     ("sparse_argument.yaml", r"at (?P<fig>81\.6) deg",
      ("test", "tests/test_examples.py::test_sparse_argument_positions_by_law_of_cosines")),
     ("sparse_argument.yaml", r"to (?P<fig>120\.4) deg",
@@ -456,7 +456,7 @@ FIGURES += [(R, f"`{law}` \\|" + _CELL * column + r" (?P<fig>[\d.]+) \|",
                         "modified_sine") for column in range(3)]
 
 COURSE_DIAGRAM = "the assumed indicator diagram behind the gas-force tables (checked in " \
-    "tests/test_course_models_b.py)"
+    "tests/test_course_models_loads.py)"
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
@@ -525,6 +525,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     ("four_bar_break_ahead.yaml", r"390 mm", "coupler + rocker, 140 + 250 mm"),
     ("eighteen_points_timing_synthesis.yaml", r"i = 1 \.\.\. 18", "the source's targets"),
     ("README.md", r"^\| (1[3-9]|20) \| ", "a course task's number (seed 000 sec. 3)"),
+    (None, r"task No\. \d+ ", "a course task's number (seed 000 sec. 3)"),
+    (R, r"tasks 5, 12, 13 and 16–19", "course task numbers (seed 000 sec. 3)"),
     # the course models of examples/course/: the drawing's points (the frame vectors are
     # computed from them), the time the argument's law takes, assumed air loads
     (None, r"\b[A-Z]\d? \(-?\d+, ?-?\d+\)", "a point of a course model's drawing, mm"),

@@ -128,6 +128,8 @@ COURSE_HAND = {
     "03_tu154_landing_gear.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L1(4,5)", 2),
     # the bell crank 1 (pin B) driven by the cylinder, lower brace 2 and leg 3 a dyad
     "04_an10_landing_gear_b.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # crank 1, rod 2, crosshead with piston 3: RRP dyad
+    "05_compressor.yaml": (3, 4, 0, 1, "L0(1) → L2(2,3)", 2),
     # the leg held by two links and the cylinder (its own pin C): pins O1, A, O2, B; the
     # drive between the ground and the leg keeps all three links in one group (class III)
     "06_landing_gear_four_bar.yaml": (3, 4, 0, 1, "L0(1,2,3)", 3),
@@ -143,7 +145,34 @@ COURSE_HAND = {
     "10_cable_mast.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
     # the boom alone, pinned at O and driven by the cylinder: W = 3 − 2 = 1
     "11_erector.yaml": (1, 1, 0, 1, "L0(1)", 2),
+    # crank 1, master rod 2 + piston 4 (RRP), articulated rod 3 + piston 5 hung on the
+    # master rod's knuckle pin (RRP): n = 5, p5 = 7 (O, A, C, B1, B2, two slides)
+    "12_v_engine_articulated.yaml": (5, 7, 0, 1, "L0(1) → L2(2,4) → L2(3,5)", 2),
+    # crank 1, fork rod 2 + piston 4 (RRP), blade rod 3 + piston 5 pinned to the fork's
+    # big end (RRP): n = 5, p5 = 7 (O, A crank-fork, A fork-blade, B1, B2, two slides)
+    "13_v_engine_fork_and_blade.yaml": (5, 7, 0, 1, "L0(1) → L2(2,4) → L2(3,5)", 2),
+    # ring 1 driven along its slide, link 2 and flap 3 (RRR): n = 3, p5 = 4 (slide, R, L, P)
+    "14_nozzle_ring.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # primary flap 1 turned by the cylinder (a drive, not a link), divergent flap 2 and
+    # strut 3 (RRR): n = 3, p5 = 4 (P, T, E, Q)
+    "15_nozzle_flaps.yaml": (3, 4, 0, 1, "L0(1) → L1(2,3)", 2),
+    # crankshaft 1 with two throws, each with a rod and a piston (RRP dyads)
+    "16_two_cylinder_compressor.yaml": (5, 7, 0, 1, "L0(1) → L2(2,4) → L2(3,5)", 2),
+    # crank 1; plunger 2 pinned to the crank pin, sliding in the cylinder 3 that swings on
+    # its trunnion: an RPR dyad (pins A and C, the slide between): n = 3, p5 = 4
+    "17_oil_pump.yaml": (3, 4, 0, 1, "L0(1) → L3(2,3)", 2),
+    # as No. 16, the cylinders at right angles (L-type), both rods on one crank pin
+    "18_two_stage_compressor.yaml": (5, 7, 0, 1, "L0(1) → L2(2,4) → L2(3,5)", 2),
+    # crank 1, coupler 2, rocker with arm 3 (RRR), rod 4 and ram 5 (RRP): n = 5, p5 = 7
+    "19_gear_shaper.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L2(4,5)", 2),
+    # slider 1 driven along its guide; link 2 + left door 3, link 4 + right door 5 (RRR
+    # each): n = 5, p5 = 7 (slide, P twice, BL, BR, HL, HR)
+    "20_solar_panel_doors.yaml": (5, 7, 0, 1, "L0(1) → L1(2,3) → L1(4,5)", 2),
 }
+
+
+def test_every_course_model_has_its_hand_analysis():
+    assert {p.name for p in COURSE.glob("*.yaml")} == COURSE_HAND.keys()
 
 
 @pytest.mark.parametrize("name", sorted(COURSE_HAND))

@@ -725,7 +725,7 @@ def report(
 ) -> None:
     """Write the course-project report (PDF): model, formula, kinematics of the output
     link, angle differences, dynamics, reactions, centres of mass, the gears and the cam
-    (sheets 3 and 4, from the model's `project:` section or --gears/--cam), conclusion, and
+    (sheets 3 and 4, from the model's project: section or --gears/--cam), conclusion, and
     the values at every position.
 
     Example:
