@@ -1307,8 +1307,9 @@ def new_command(
                                                   "or file to write", show_default=False)
                       ] = None,
 ) -> None:
-    """Copy a bundled example (mechloop examples lists them) to start a model from; an
-    existing file is never overwritten.
+    """Copy a bundled example (mechloop examples lists them) to start a model from, with
+    the cam and gear documents its project: section names; an existing file is never
+    overwritten.
 
     Example:
 
@@ -1321,6 +1322,10 @@ def new_command(
     example, path = new_model(name, target)
     title = example.title + (f" — {example.title_ru}" if example.title_ru else "")
     out.print(f"wrote {path} ({title})")
+    from mechloop.bundled.start import project_references
+
+    for reference in project_references(path):
+        out.print(f"  with its project document {path.parent / reference}")
 
 
 

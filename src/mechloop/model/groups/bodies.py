@@ -35,7 +35,7 @@ class BodySteps(NameSteps):
             "vectors": vectors, "contours": self.contours, "bodies": self.bodies(),
             "joints": self.joints(), "friction": mech.friction,
         }
-        for key in ("gravity", "machine"):
+        for key in ("gravity", "machine", "project"):
             if getattr(mech, key) is not None:
                 data[key] = getattr(mech, key)
         data["forces"] = self.forces()

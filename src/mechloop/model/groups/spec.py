@@ -17,6 +17,7 @@ from mechloop.model.dynamic import (
     LoadValue,
     Machine,
 )
+from mechloop.model.project import Project
 from mechloop.model.schema import Units
 from mechloop.model.signals import MAX_POSITIONS, Argument, Number, Scalar, Time, _Frozen
 from mechloop.model.synthesis import (
@@ -370,7 +371,7 @@ class GroupSynthesisTask(SynthesisTask):
 class GroupMechanism(_Frozen):
     """A planar mechanism as an input group plus class-II Assur groups (see the module
     docstring for points, lines and variants).  ``units``, ``positions``, ``time``,
-    ``arguments``, ``gravity``, ``friction`` and ``machine`` are those of
+    ``arguments``, ``gravity``, ``friction``, ``machine`` and ``project`` are those of
     :class:`~mechloop.model.schema.Model`."""
 
     name: str = ""
@@ -395,6 +396,9 @@ class GroupMechanism(_Frozen):
     gravity: Gravity | None = None
     friction: Friction = Friction()
     machine: Machine | None = None
+    project: Project | None = Field(
+        None, description="the course project's cam (sheet 4) and gear pair or planetary "
+        "train (sheet 3) documents, paths relative to this file (as in a vector model)")
     synthesis: GroupSynthesisTask | None = Field(
         None, description="a synthesis task that varies the dimensions by their names "
         "(mechloop synthesize)")
