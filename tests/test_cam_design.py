@@ -466,3 +466,35 @@ def test_the_vector_model_written_from_a_design_gives_its_profile(follower, radi
     x, y = solve_intermediate(mechloop.load_model(path)).envelopes["profile"].curve(-1)
     assert np.isfinite(x).all()
     assert np.abs(np.stack([x, y], axis=1) - design.cam.cycle(360).profile).max() < 1e-12
+
+
+@pytest.mark.parametrize("rise_law, return_law", [
+    ("harmonic", "cycloidal"), ("poly345", "poly4567"),
+    ("modified_trapezoidal", "modified_sine"), ("cycloidal", "modified_trapezoidal")])
+def test_a_flat_cam_at_its_smallest_convex_radius_is_not_called_undercut(
+        tmp_path, rise_law, return_law):
+    """At the smallest base radius for a convex profile ρ_min equals the allowed radius up
+    to rounding: the design is sound; a hair smaller is not."""
+    from mechloop.cams import load_cam
+
+    for rise, rho in ((8, 3), (10, 6), (15, 6)):
+        path = tmp_path / "flat.yaml"
+        path.write_text(f"""cam:
+  units: {{length: mm, angle: deg}}
+  follower: {{type: translating_flat}}
+  min_curvature_radius: {rho}
+  segments:
+    - {{rise: {rise}, angle: 110, law: {rise_law}}}
+    - {{dwell: 70}}
+    - {{return: {rise}, angle: 120, law: {return_law}}}
+    - {{dwell: 60}}
+""", encoding="utf-8")
+        design = load_cam(path)
+        summary = design.summary()
+        assert summary.base_radius == summary.minimum
+        assert summary.rho.value == pytest.approx(rho * 1e-3, rel=1e-9)
+        assert not summary.undercut
+        smaller = path.read_text().replace("segments:", f"base_radius: "
+                                           f"{summary.minimum * 1e3 * (1 - 1e-6)!r}\n  segments:")
+        path.write_text(smaller, encoding="utf-8")
+        assert load_cam(path).summary().undercut

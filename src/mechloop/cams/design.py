@@ -99,8 +99,8 @@ class CamDesign:
         program = self.program
         rho = min_curvature_radius(self.cam)
         flat = self.follower.flat
-        if flat:
-            undercut = rho.value < self.min_curvature
+        if flat:  # at the smallest base radius ρ equals the allowed but for rounding
+            undercut = rho.value < self.min_curvature - 1e-9 * self.cam.base_radius
         else:
             undercut = rho.value <= 0
         pressure = (None if isinstance(self.follower, TranslatingFlat)
