@@ -5,8 +5,11 @@ machine with several inputs
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from matplotlib.figure import Figure
+from numpy.typing import NDArray
 
 from mechloop.dynamics.motors import RPM
 from mechloop.dynamics.simulate import Simulation
@@ -25,12 +28,7 @@ def plot_simulation(sim: Simulation, *, title: str = "") -> Figure:
     if not isinstance(sim, Simulation):
         raise ViewError(f"expected a Simulation, got {type(sim).__name__}",
                         "pass the result of mechloop.simulate(...)")
-    figure = new_figure(10.0, 7.5)
-    axes = figure.subplots(2, 2)
-    t = sim.time
-    panels = ((axes[0, 0], sim.q / (2 * np.pi), "q", "input angle [turns]"),
-              (axes[0, 1], sim.omega / RPM, "omega", "speed n [rpm]"),
-              (axes[1, 0], sim.epsilon, "epsilon", "acceleration ε [rad/s²]"))
+    figure, axes, t, panels = _panels(sim)
     for ax, values, gid, label in panels:
         ax.plot(t, values, color="C0", linewidth=1.0, gid=gid)
         ax.set_xlabel("time [s]")
@@ -49,6 +47,17 @@ def plot_simulation(sim: Simulation, *, title: str = "") -> Figure:
     figure.suptitle(title or f"motion in time — ended: {sim.end.kind} at "
                              f"{sim.end.t:.4g} s")
     return figure
+
+
+def _panels(sim) -> tuple[Figure, Any, NDArray[np.float64], tuple]:
+    """The 2×2 figure of a motion in time, its axes, the times and the three time panels
+    (axes, values in turns, rpm and rad/s², gid, label); the fourth is the phase portrait."""
+    figure = new_figure(10.0, 7.5)
+    axes = figure.subplots(2, 2)
+    panels = ((axes[0, 0], sim.q / (2 * np.pi), "q", "input angle [turns]"),
+              (axes[0, 1], sim.omega / RPM, "omega", "speed n [rpm]"),
+              (axes[1, 0], sim.epsilon, "epsilon", "acceleration ε [rad/s²]"))
+    return figure, axes, sim.time, panels
 
 
 def _phase(ax, sim: Simulation) -> None:
@@ -77,12 +86,7 @@ def _plot_inputs(sim, *, title: str = "") -> Figure:
     over time, one line per input (gid ``'q<k>'``, ``'omega<k>'``, ``'epsilon<k>'``,
     ``k`` its argument number), the motors' switch-offs marked, and each input's phase
     portrait ω(q) (gid ``'phase<k>'``)."""
-    figure = new_figure(10.0, 7.5)
-    axes = figure.subplots(2, 2)
-    t = sim.time
-    panels = ((axes[0, 0], sim.q / (2 * np.pi), "q", "input angle [turns]"),
-              (axes[0, 1], sim.omega / RPM, "omega", "speed n [rpm]"),
-              (axes[1, 0], sim.epsilon, "epsilon", "acceleration ε [rad/s²]"))
+    figure, axes, t, panels = _panels(sim)
     for ax, values, gid, label in panels:
         for i, k in enumerate(sim.inputs):
             ax.plot(t, values[i], color=f"C{i}", linewidth=1.0, gid=f"{gid}{k}",
