@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from oracles.dynamic_models import four_bar_data
 from typer.testing import CliRunner
 
 import mechloop
@@ -81,20 +82,7 @@ def _four_bar_between(tmp_path: Path, **extra) -> Path:
     """A four-bar whose crank (0.1 m; coupler 0.149999, rocker 0.25, frame 0.3 m) loses
     its turn for 0.6 deg around 180 deg, between positions 36 and 37 of 73: every position
     assembles, no friction — the works alone would claim an efficiency of 100 %."""
-    data = {"name": "four-bar, break between positions", "units": {"length": "m",
-                                                                      "angle": "deg"},
-            "positions": 73, "time": {"rpm": 60},
-            "arguments": {1: {"table": {0: 0, 73: 360}}},
-            "vectors": {1: {"r": 0.1, "a": {"argument": 1}},
-                        2: {"r": 0.149999, "a": "function"},
-                        3: {"r": 0.25, "a": "function"}, 4: {"r": 0.3, "a": 180}},
-            "contours": [{"vectors": [1, 2, 3, 4], "variant": 1}],
-            "bodies": {1: {"vectors": [1], "mass": 1, "inertia": 0.001,
-                           "center": {"vector": 1, "share": 0.5}},
-                       2: {"vectors": [2], "mass": 0.5, "inertia": "rod",
-                           "center": {"vector": 2, "share": 0.5}},
-                       3: {"vectors": [3], "mass": 0.8, "inertia": "rod",
-                           "center": {"vector": 3, "share": 0.5}}},
+    data = {"name": "four-bar, break between positions", **four_bar_data(0.149999, 73),
             "moments": [{"name": "resistance", "body": 3, "value": -2.0}], **extra}
     path = tmp_path / "four_bar_between.yaml"
     path.write_text(yaml.safe_dump(data))

@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from oracles.dynamic_models import four_bar_data
 from typer.testing import CliRunner
 
 import mechloop
@@ -24,18 +25,7 @@ def _four_bar(coupler: float, positions: int = 72, **simulate_section) -> mechlo
     """A four-bar driven at the crank (0.1 m; frame 0.3 m, rocker 0.25 m): with
     ``coupler + rocker < crank + frame`` the crank cannot pass the angle where the crank
     pin is ``coupler + rocker`` from the rocker's pivot."""
-    data = {"units": {"length": "m", "angle": "deg"}, "positions": positions,
-            "time": {"rpm": 60}, "arguments": {1: {"table": {0: 0, positions: 360}}},
-            "vectors": {1: {"r": CRANK, "a": {"argument": 1}},
-                        2: {"r": coupler, "a": "function"},
-                        3: {"r": ROCKER, "a": "function"}, 4: {"r": FRAME, "a": 180}},
-            "contours": [{"vectors": [1, 2, 3, 4], "variant": 1}],
-            "bodies": {1: {"vectors": [1], "mass": 1, "inertia": 0.001,
-                           "center": {"vector": 1, "share": 0.5}},
-                       2: {"vectors": [2], "mass": 0.5, "inertia": "rod",
-                           "center": {"vector": 2, "share": 0.5}},
-                       3: {"vectors": [3], "mass": 0.8, "inertia": "rod",
-                           "center": {"vector": 3, "share": 0.5}}},
+    data = {**four_bar_data(coupler, positions, crank=CRANK, frame=FRAME, rocker=ROCKER),
             "simulate": {"motor": {"constant": 0.5}, "duration": 5, **TIGHT,
                          **simulate_section}}
     return mechloop.Model.from_dict(data)

@@ -229,3 +229,23 @@ def landing_gear(n: int = 400) -> dict:
                  "along": 4}],
         gravity={"g": 9.81},
     )
+
+
+def four_bar_data(coupler: float, positions: int = 72, *, crank: float = 0.1,
+                  frame: float = 0.3, rocker: float = 0.25) -> dict[str, Any]:
+    """A crank-rocker four-bar model (m, deg) driven at its crank over one turn in
+    ``positions`` steps at 60 rpm, three rod-like bodies; with ``coupler + rocker <
+    crank + frame`` the crank cannot pass the angle where its pin is ``coupler + rocker``
+    from the rocker's pivot (the chain breaks there)."""
+    return {"units": {"length": "m", "angle": "deg"}, "positions": positions,
+            "time": {"rpm": 60}, "arguments": {1: {"table": {0: 0, positions: 360}}},
+            "vectors": {1: {"r": crank, "a": {"argument": 1}},
+                        2: {"r": coupler, "a": "function"},
+                        3: {"r": rocker, "a": "function"}, 4: {"r": frame, "a": 180}},
+            "contours": [{"vectors": [1, 2, 3, 4], "variant": 1}],
+            "bodies": {1: {"vectors": [1], "mass": 1, "inertia": 0.001,
+                           "center": {"vector": 1, "share": 0.5}},
+                       2: {"vectors": [2], "mass": 0.5, "inertia": "rod",
+                           "center": {"vector": 2, "share": 0.5}},
+                       3: {"vectors": [3], "mass": 0.8, "inertia": "rod",
+                           "center": {"vector": 3, "share": 0.5}}}}
