@@ -234,6 +234,9 @@ def test_the_command_prints_writes_and_draws(tmp_path: Path):
                                       "-o", str(table), "--plot", str(figure)])
     assert result.exit_code == 0, result.output
     assert "-147.512" in result.output and "0.840352" in result.output
+    for name in ("stroke [mm]", "swept volume V_h [cm³]", "clearance volume V_c [cm³]",
+                 "∮p dV, closed form [J]", "peak pressure [MPa]"):
+        assert name in result.output  # every figure with its unit
     import pandas as pd
 
     frame = pd.read_csv(table)

@@ -1246,7 +1246,7 @@ def indicator(
                 ("∮p dV over the positions [J]", item.sampled_work),
                 ("mean indicated pressure [MPa]", item.loop_work / gas.swept / 1e6),
                 ("peak pressure [MPa]", gas.pressure.max() / 1e6)):
-            rows.add_row(name, f"{value:.6g}")
+            rows.add_row(escape(name), f"{value:.6g}")  # [mm] is no markup tag
         if compressor:
             rows.add_row("volumetric efficiency λ_V", f"{volumetric_efficiency(cycle):.6g}")
         out.print(rows)
