@@ -20,7 +20,8 @@ from typing import Literal
 
 from mechloop.views.sheet import FigureItem, Table
 
-__all__ = ["Block", "Document", "FigureItem", "Paragraph", "Section", "Table", "TitlePage"]
+__all__ = ["Block", "Document", "FigureItem", "Numbered", "Paragraph", "Section", "Table",
+           "TitlePage", "Words", "caption", "heading", "numbered", "walk"]
 
 
 @dataclass(frozen=True)
@@ -107,3 +108,64 @@ def walk(blocks: list[Block]):
         yield block
         if isinstance(block, Section):
             yield from walk(block.blocks)
+
+
+@dataclass(frozen=True)
+class Numbered:
+    """A block with its number as the typesetters print it.
+
+    ``number``: '2', '2.1', '2.1.3' for a section (or 'А', 'А.1' in an appendix); '3.2'
+    for a figure or a table (counted per top-level section or appendix, figures and
+    tables apart); '' for a paragraph. ``depth``: 1 for a top-level section or appendix, 2
+    for its subsection, …; for other blocks the depth of the section holding them.
+    ``appendix``: whether the block is in an appendix."""
+
+    block: Block
+    number: str
+    depth: int
+    appendix: bool
+
+
+def numbered(document: Document):
+    """Every block of ``document`` in order with its number (:class:`Numbered`)."""
+    tops = [(str(k), s, False) for k, s in enumerate(document.sections, start=1)]
+    tops += [(document.words.letters[k], s, True) for k, s in enumerate(document.appendices)]
+    for top, section, appendix in tops:
+        yield Numbered(section, top, 1, appendix)
+        counts = {"figure": 0, "table": 0}
+        yield from _numbered_blocks(section.blocks, top, top, 2, appendix, counts)
+
+
+def _numbered_blocks(blocks, top: str, prefix: str, depth: int, appendix: bool,
+                     counts: dict[str, int]):
+    sub = 0
+    for block in blocks:
+        if isinstance(block, Section):
+            sub += 1
+            number = f"{prefix}.{sub}"
+            yield Numbered(block, number, depth, appendix)
+            yield from _numbered_blocks(block.blocks, top, number, depth + 1, appendix,
+                                        counts)
+        elif isinstance(block, FigureItem | Table):
+            kind = "figure" if isinstance(block, FigureItem) else "table"
+            counts[kind] += 1
+            yield Numbered(block, f"{top}.{counts[kind]}", depth - 1, appendix)
+        else:
+            yield Numbered(block, "", depth - 1, appendix)
+
+
+def caption(document: Document, item: Numbered) -> str:
+    """The caption line of a numbered figure or table: 'Figure 3.1 — …' /
+    'Рисунок 3.1 — …', 'Table 2.1 — …' / 'Таблица 2.1 — …' (GOST 2.105: a table's caption
+    above it, a figure's below)."""
+    word = (document.words.figure if isinstance(item.block, FigureItem)
+            else document.words.table)
+    return f"{word} {item.number} — {item.block.caption}"
+
+
+def heading(document: Document, item: Numbered) -> str:
+    """The heading line of a numbered section: '3.1 Title'; an appendix:
+    'Appendix A. Title' / 'Приложение А. Title'."""
+    if item.appendix and item.depth == 1:
+        return f"{document.words.appendix} {item.number}. {item.block.title}"
+    return f"{item.number} {item.block.title}"

@@ -35,6 +35,7 @@ from mechloop.solve.results import Results
 from mechloop.views import curves, dynamics, formula, plan
 from mechloop.views.display import DEFAULT_DISPLAY
 from mechloop.views.figure import ViewError, new_figure
+from mechloop.views.russian import RUSSIAN_WORDS, translate  # noqa: F401 (re-exported)
 from mechloop.views.sheet import Sheet, Table
 
 TEXT: dict[str, dict[str, str]] = {
@@ -124,55 +125,6 @@ TEXT: dict[str, dict[str, str]] = {
         "table": "Таблица {number}",
     },
 }
-
-#: Words of the figures' titles, labels and legends in Russian (the course's terms), longest
-#: first so that a phrase is replaced before the words in it.
-RUSSIAN_WORDS: dict[str, str] = {
-    "balancing load: kinetostatics (solid) and virtual power (dashed)":
-        "уравновешивающая нагрузка: кинетостатика (сплошная) и метод мощностей (штрих)",
-    "argument (α near tail, r near head)": "аргумент (α у начала, r у конца)",
-    "function (α near tail, r near head)": "функция (α у начала, r у конца)",
-    "reduced inertia and its derivative": "приведённый момент инерции и его производная",
-    "machine motion over the cycle": "движение машины за цикл",
-    "hodograph of the reaction in": "годограф реакции в шарнире",
-    "summary characteristics": "сводные характеристики",
-    "reactions in the joints": "реакции в шарнирах",
-    "angle from vector": "угол от вектора",
-    "without flywheel": "без маховика",
-    "with flywheel": "с маховиком",
-    "reduced load": "приведённая нагрузка",
-    "centre of mass": "центр масс",
-    "chain break at position": "разрыв цепи в положении",
-    "increment of": "приращение",
-    "reference:": "базовое:",
-    "from position": "от положения",
-    "of 0..": "из 0..",
-    "to vector": "к вектору",
-    "reaction": "реакция",
-    "position": "положение",
-    "ground": "стойка",
-    "origin": "начало",
-    "joint": "шарнир",
-    "mean": "среднее",
-    "time": "время",
-}
-
-
-def translate(figure: Figure, lang: str) -> Figure:
-    """Put the words of a figure's texts (titles, labels, legends, tables) in ``lang``."""
-    if lang != "ru":
-        return figure
-    from matplotlib.text import Text
-
-    for text in figure.findobj(Text):
-        content = text.get_text()
-        if not content:
-            continue
-        for english, russian in RUSSIAN_WORDS.items():
-            content = content.replace(english, russian)
-        text.set_text(content)
-    return figure
-
 
 #: Rows and columns of one appendix page.
 APPENDIX_ROWS = 40
