@@ -18,6 +18,8 @@ ENGLISH_SHORT = {"of", "the", "and", "at", "to", "in", "no", "on", "by", "for", 
                  "bad", "low", "high", "from", "with", "mean", "peak", "left", "right"}
 
 WORD = re.compile(r"[A-Za-z][A-Za-z0-9_']*")
+#: A word of Cyrillic and Latin letters together ("положениеs").
+MIXED = re.compile(r"\w*(?:[А-Яа-яЁё][A-Za-z]|[A-Za-z][А-Яа-яЁё])\w*")
 
 
 def latin_words(text: str, names: Iterable[str] = ()) -> list[str]:
@@ -29,7 +31,7 @@ def latin_words(text: str, names: Iterable[str] = ()) -> list[str]:
     allowed = set(UNITS)
     for name in names:
         allowed.update(WORD.findall(name))
-    found = []
+    found = MIXED.findall(text)
     for word in WORD.findall(text):
         if word in allowed or word.replace("'", "") in allowed:
             continue
