@@ -40,6 +40,7 @@ from mechloop.model.dynamic import (
 from mechloop.model.elements import Damper, Spring
 from mechloop.model.gearing import GearMesh
 from mechloop.model.project import Project
+from mechloop.model.report_info import ReportInfo
 from mechloop.model.roles import FUNCTION
 from mechloop.model.signals import (  # noqa: F401  (re-exported: part of the model)
     MAX_POSITIONS,
@@ -274,6 +275,9 @@ class Model(_Frozen):
     display: DisplaySection | None = Field(
         None, description="units and precision of the results: tables, exports, energy, "
         "plots (KDAM's units and tolerances panels)")
+    report: ReportInfo | None = Field(
+        None, description="the title page of mechloop report: university, department, "
+        "course, title, student, group, supervisor, city, year")
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, file: str | None = None) -> Model:

@@ -1,0 +1,85 @@
+"""The appendix of the report: the values of every parameter at every position, the
+results table (:meth:`Results.to_frame` / :meth:`DynamicResults.to_frame`) in the display
+units, as tables of at most :data:`COLUMNS` columns (the position and seven more), each
+header 'name, unit'.
+
+A column with no value at any position is left out; the chain-break column only when the
+chain breaks somewhere, as a word of the report's language; every column's numbers are
+printed to the precision of its largest value (zero to that precision is 0); a broken
+row's values are '—'."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pandas as pd
+
+from mechloop.output.display import apply_display
+from mechloop.report.document import Table
+from mechloop.report.numbers import Shown, unit_text
+from mechloop.report.values import symbol
+
+#: Columns of one appendix table, the position's included.
+COLUMNS = 8
+
+_HEADER = re.compile(r"^(.*) \[([^\[\]]+)\]$")
+_ANGLE = re.compile(r"d{0,2}a\d+")
+#: Column names that are words, as symbols.
+_NAMES = {"time": "t", "omega": "ω", "epsilon": "ε", "omega_fw": "ω_fw",
+          "epsilon_fw": "ε_fw", "friction_loss": "P_fr"}
+_TO = re.compile(r"^(R\w+?)_to_a(\d+)$")
+
+
+def header_text(column: str, lang: str) -> str:
+    """'r3 [m]' -> 'r3, m'; 'da2 [rad/s]' -> 'dα2, rad/s' ('рад/с' in Russian)."""
+    match = _HEADER.match(column)
+    if match is None:
+        return column
+    name, unit = match.groups()
+    to = _TO.match(name)
+    shown = (symbol(name) if _ANGLE.fullmatch(name) else
+             f"∠({to.group(1)}, α{to.group(2)})" if to else _NAMES.get(name, name))
+    return f"{shown}, {unit_text(unit, lang)}"
+
+
+def shown_frame(frame: pd.DataFrame, shown: Shown) -> pd.DataFrame:
+    """``frame`` in the display units, its empty columns left out (the chain-break
+    column too when nothing breaks)."""
+    converted = apply_display(frame, shown.td, ".report")
+    keep = []
+    for column in converted.columns:
+        values = converted[column]
+        if column == "chain_break":
+            if values.any():
+                keep.append(column)
+        elif values.dtype.kind in "biu" or np.isfinite(values.to_numpy(dtype=float)).any():
+            keep.append(column)
+    return converted[keep]
+
+
+def appendix_tables(frame: pd.DataFrame, shown: Shown, w: dict[str, str]) -> list[Table]:
+    """The appendix's tables of ``frame`` (a results table in SI headers)."""
+    data = shown_frame(frame, shown)
+    broken = data["chain_break"].to_numpy(dtype=bool) if "chain_break" in data \
+        else np.zeros(len(data), dtype=bool)
+    texts: dict[str, list[str]] = {}
+    for column in data.columns:
+        values = data[column]
+        if column == "chain_break":
+            texts[w["chain_break"]] = [w["chain_break"] if b else "" for b in broken]
+        elif values.dtype.kind in "biu":
+            texts[header_text(column, shown.lang)] = [str(int(v)) for v in values]
+        else:
+            texts[header_text(column, shown.lang)] = shown.column(
+                values.to_numpy(dtype=float))
+    first, *rest = list(texts)
+    parts = [rest[i:i + COLUMNS - 1] for i in range(0, len(rest), COLUMNS - 1)]
+    first_name = w["h_position"]
+    tables = []
+    for k, part in enumerate(parts, start=1):
+        columns = [first, *part]
+        rows = [tuple(texts[c][i] for c in columns) for i in range(len(data))]
+        tables.append(Table(w["t_appendix"].format(part=k, parts=len(parts)),
+                            (first_name, *part), rows))
+    return tables
