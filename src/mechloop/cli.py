@@ -710,48 +710,61 @@ def animate(
 @user_errors
 def report(
     model: ModelPath,
-    output: Annotated[Path, typer.Option("-o", "--output", help="the report, .pdf (no "
-                                         "default)")],
+    output: Annotated[list[Path], typer.Option("-o", "--output", help="the report: .pdf "
+                                               "or .docx; repeat for both (-o r.pdf -o "
+                                               "r.docx)")],
     lang: Annotated[str, typer.Option(help="language: en or ru")] = "en",
     parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
                          "the first contour's length function, else its last angle)")
                          ] = None,
+    position: Annotated[int | None, typer.Option(help="the intermediate position of the "
+                        "vector scheme and the trajectories (default: one near the "
+                        "first third of the cycle where the chain assembles)")] = None,
     cam: Annotated[Path | None, typer.Option(help="the course project's cam (a mechloop "
                    "cam document): adds sheet 4; default: the model's project.cam")] = None,
     gears: Annotated[Path | None, typer.Option(help="the course project's gear pair or "
                      "planetary train (a mechloop gear document): adds sheet 3; default: "
                      "the model's project.gears")] = None,
+    student: Annotated[str | None, typer.Option(help="title page: the student (default: "
+                       "the model's report.student)")] = None,
+    group: Annotated[str | None, typer.Option(help="title page: the group")] = None,
+    supervisor: Annotated[str | None, typer.Option(help="title page: the supervisor")
+                          ] = None,
+    university: Annotated[str | None, typer.Option(help="title page: the university")
+                          ] = None,
+    department: Annotated[str | None, typer.Option(help="title page: the department")
+                          ] = None,
+    city: Annotated[str | None, typer.Option(help="title page: the city")] = None,
+    year: Annotated[int | None, typer.Option(help="title page: the year (default: this "
+                    "year)")] = None,
     force: Force = False,
 ) -> None:
-    """Write the course-project report (PDF): model, formula, kinematics of the output
-    link, angle differences, dynamics, reactions, centres of mass, the gears and the cam
-    (sheets 3 and 4, from the model's project: section or --gears/--cam), conclusion, and
-    the values at every position.
+    """Write the course-project report (PDF and/or editable DOCX): title page, model
+    parameters, formula, kinematics of the output link, angle differences, dynamics,
+    reactions, centres of mass, the gears and the cam (sheets 3 and 4, from the model's
+    project: section or --gears/--cam), conclusion, and the values at every position.
+    The title page takes the model's report: section; the options override it.
 
     Example:
 
     ```
-    mechloop report examples/crank_slider_dynamics.yaml -o report.pdf --lang ru
+    mechloop report examples/crank_slider_dynamics.yaml -o report.pdf -o report.docx --lang ru
     ```
     """
     from mechloop.model.load import load_model, locate
     from mechloop.model.project import project_documents
-    from mechloop.views.report import write_report
+    from mechloop.report.cli import run_report
 
-    _outputs(model, force, (output, (".pdf",)))
+    _outputs(model, force, *((path, (".pdf", ".docx")) for path in output))
     m = load_model(model)
     project = project_documents(m, model, cam=cam, gears=gears)
+    title = dict(student=student, group=group, supervisor=supervisor,
+                 university=university, department=department, city=city, year=year)
     try:
-        with _progress("pages") as bar:
-            task = bar.add_task("pages", total=None)
-            path = write_report(m, output, lang=lang, output=parameter, project=project,
-                                progress=lambda done, total: bar.update(
-                                    task, completed=done, total=total),
-                                warn=lambda text: err.print(f"[bold yellow]warning:[/] "
-                                                            f"{text}"))
+        run_report(m, output, lang=lang, parameter=parameter, position=position,
+                   title=title, project=project, progress=_progress, out=out, err=err)
     except ModelError as exc:
         raise locate(exc, model) from None
-    out.print(f"wrote {path}")
 
 
 

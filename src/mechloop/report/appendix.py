@@ -15,7 +15,7 @@ import re
 import numpy as np
 import pandas as pd
 
-from mechloop.output.display import apply_display
+from mechloop.output.display import convert_frame
 from mechloop.report.document import Table
 from mechloop.report.numbers import Shown, unit_text
 from mechloop.report.values import symbol
@@ -31,12 +31,19 @@ _NAMES = {"time": "t", "omega": "ω", "epsilon": "ε", "omega_fw": "ω_fw",
 _TO = re.compile(r"^(R\w+?)_to_a(\d+)$")
 
 
-def header_text(column: str, lang: str) -> str:
-    """'r3 [m]' -> 'r3, m'; 'da2 [rad/s]' -> 'dα2, rad/s' ('рад/с' in Russian)."""
+def header_text(column: str, lang: str, names: tuple[str, ...] = ()) -> str:
+    """'r3 [m]' -> 'r3, m'; 'da2 [rad/s]' -> 'dα2, rad/s' ('рад/с' in Russian); a
+    reaction or mesh column of a joint or mesh of ``names`` longer than two letters with
+    the name in brackets ('Gmesh_n [N]' -> 'G(mesh)_n, N')."""
     match = _HEADER.match(column)
     if match is None:
         return column
     name, unit = match.groups()
+    for joint in sorted(names, key=len, reverse=True):
+        if len(joint) > 2 and name[:1] in "RG" and name[1:].startswith(joint) \
+                and name[1 + len(joint):][:1] in ("", "_"):
+            name = f"{name[0]}({joint}){name[1 + len(joint):]}"
+            break
     to = _TO.match(name)
     shown = (symbol(name) if _ANGLE.fullmatch(name) else
              f"∠({to.group(1)}, α{to.group(2)})" if to else _NAMES.get(name, name))
@@ -46,7 +53,9 @@ def header_text(column: str, lang: str) -> str:
 def shown_frame(frame: pd.DataFrame, shown: Shown) -> pd.DataFrame:
     """``frame`` in the display units, its empty columns left out (the chain-break
     column too when nothing breaks)."""
-    converted = apply_display(frame, shown.td, ".report")
+    # converted only: the cells are rounded once, to their column's precision
+    converted = convert_frame(frame, shown.td) if shown.td is not None and shown.td.units \
+        else frame
     keep = []
     for column in converted.columns:
         values = converted[column]
@@ -58,8 +67,10 @@ def shown_frame(frame: pd.DataFrame, shown: Shown) -> pd.DataFrame:
     return converted[keep]
 
 
-def appendix_tables(frame: pd.DataFrame, shown: Shown, w: dict[str, str]) -> list[Table]:
-    """The appendix's tables of ``frame`` (a results table in SI headers)."""
+def appendix_tables(frame: pd.DataFrame, shown: Shown, w: dict[str, str],
+                    names: tuple[str, ...] = ()) -> list[Table]:
+    """The appendix's tables of ``frame`` (a results table in SI headers); ``names``:
+    the joints and gear meshes (see :func:`header_text`)."""
     data = shown_frame(frame, shown)
     broken = data["chain_break"].to_numpy(dtype=bool) if "chain_break" in data \
         else np.zeros(len(data), dtype=bool)
@@ -69,9 +80,9 @@ def appendix_tables(frame: pd.DataFrame, shown: Shown, w: dict[str, str]) -> lis
         if column == "chain_break":
             texts[w["chain_break"]] = [w["chain_break"] if b else "" for b in broken]
         elif values.dtype.kind in "biu":
-            texts[header_text(column, shown.lang)] = [str(int(v)) for v in values]
+            texts[header_text(column, shown.lang, names)] = [str(int(v)) for v in values]
         else:
-            texts[header_text(column, shown.lang)] = shown.column(
+            texts[header_text(column, shown.lang, names)] = shown.column(
                 values.to_numpy(dtype=float))
     first, *rest = list(texts)
     parts = [rest[i:i + COLUMNS - 1] for i in range(0, len(rest), COLUMNS - 1)]

@@ -30,7 +30,7 @@ from mechloop.output.display import plot_display, resolve
 from mechloop.report.appendix import appendix_tables
 from mechloop.report.breaks import break_lines
 from mechloop.report.conclusion import conclusion_blocks
-from mechloop.report.document import Document, FigureItem, Paragraph, Section
+from mechloop.report.document import Document, FigureItem, Paragraph, Section, Table
 from mechloop.report.dynamic_parameters import masses_section
 from mechloop.report.formula import formula_section
 from mechloop.report.numbers import Shown
@@ -98,6 +98,24 @@ def angle_pairs(results: Results) -> list[tuple[int, int]]:
             if finite.size and np.ptp(finite) > 1e-9:
                 pairs.append((a, b))
     return pairs
+
+
+def compact(blocks: list) -> list:
+    """``blocks`` with every table's empty columns left out (a name column where no
+    vector or contour is named), in the subsections too."""
+    out = []
+    for block in blocks:
+        if isinstance(block, Section):
+            block = Section(block.title, compact(block.blocks))
+        elif isinstance(block, Table) and block.rows:
+            keep = [k for k in range(len(block.header))
+                    if any(row[k] for row in block.rows)]
+            if len(keep) < len(block.header):
+                block = Table(block.caption, tuple(block.header[k] for k in keep),
+                              [tuple(row[k] for k in keep) for row in block.rows],
+                              block.values)
+        out.append(block)
+    return out
 
 
 def _figure(caption: str, draw: Callable, lang: str) -> FigureItem:
@@ -226,7 +244,8 @@ def build_document(model: Model, *, lang: str, output: str | None = None,
     sections.append(Section(w["s_conclusion"], list(conclusion_blocks(
         results, dyn, name, shown, w))))
     frame = dyn.to_frame() if dyn is not None else results.to_frame()
-    appendix = Section(w["s_appendix"], list(appendix_tables(frame, shown, w)))
+    names = () if dyn is None else (*dyn.forces.reactions, *dyn.forces.meshes)
+    appendix = Section(w["s_appendix"], list(appendix_tables(frame, shown, w, names)))
     return Document(lang=lang, name=model.name or w["title"],
                     title=title_page(model, title_info(model, title), w),
-                    sections=sections, appendices=[appendix])
+                    sections=compact(sections), appendices=[appendix])
