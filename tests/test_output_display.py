@@ -317,27 +317,16 @@ def test_json_with_digits_is_short(tmp_path):
 
 
 def test_the_reports_appendix_takes_the_models_display():
-    from mechloop.dynamics.analysis import solve_dynamics
-    from mechloop.views import report
+    from mechloop.report.content import build_document
 
     model = mechloop.Model.from_dict(example(
         "crank_slider_dynamics.yaml", display={"force": "kN", "angular_velocity": "rpm"}))
-    dyn = solve_dynamics(model)
-    pages = report._pages(model, dyn.kinematics, dyn, "r3", report.TEXT["en"],
-                          shown=resolve(model.display))
-    heads: dict[str, str] = {}
-    for make in pages:
-        defaults = make.__defaults__ or ()
-        if len(defaults) == 2 and defaults[1] == 0:  # an appendix page's first rows
-            figure = make()
-            texts = figure.axes[0].texts  # cell (i, j): x in (j, j + 1), y = i + 0.5
-            cell = {(int(t.get_position()[1]), int(t.get_position()[0])): t.get_text()
-                    for t in texts}
-            for (row, col), label in cell.items():
-                if row == 0:
-                    heads[label] = cell[(1, col)]
+    dyn = mechloop.solve_dynamics(model)
+    heads: dict[str, str] = {}  # header -> the cell of position 0
+    for table in build_document(model, lang="en").appendices[0].blocks:
+        heads |= dict(zip(table.header, table.rows[0], strict=True))
     si = dyn.to_frame()
-    assert "RA [kN]" in heads and "RA [N]" not in heads
-    assert float(heads["RA [kN]"]) == pytest.approx(si["RA [N]"].iloc[0] / 1000, rel=1e-5)
-    assert float(heads["da1 [rpm]"]) == pytest.approx(3000.0, rel=1e-9)
-    assert "M_bal [N*m]" in heads  # moment not named
+    assert "RA, kN" in heads and "RA, N" not in heads
+    assert float(heads["RA, kN"]) == pytest.approx(si["RA [N]"].iloc[0] / 1000, rel=1e-4)
+    assert float(heads["dα1, rpm"]) == pytest.approx(3000.0, rel=1e-9)
+    assert "M_bal, N·m" in heads  # moment not named

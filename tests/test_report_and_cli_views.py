@@ -15,18 +15,23 @@ from typer.testing import CliRunner
 
 import mechloop
 from mechloop.cli import PLOTS, app
-from mechloop.views.report import APPENDIX_COLUMNS, APPENDIX_ROWS, TEXT, write_report
+from mechloop.report.appendix import COLUMNS
+from mechloop.report.content import build_document
+from mechloop.report.document import Paragraph
+from mechloop.report.words import TEXT
+from mechloop.views.report import write_report
 
 ROOT = Path(__file__).resolve().parents[1]
 DYNAMIC = ROOT / "examples/crank_slider_dynamics.yaml"
 KINEMATIC = ROOT / "examples/crank_slider.yaml"
 
-SECTIONS = ("a", "b", "c", "d", "e", "conclusion", "appendix")
-DYNAMIC_SECTIONS = ("f", "g", "h", "i")
+SECTIONS = ("s_parameters", "s_formula", "s_increment", "s_angles", "s_dependence",
+            "s_conclusion", "s_appendix")
+DYNAMIC_SECTIONS = ("s_masses", "s_reduced", "s_reactions", "s_centres")
 
 
 def pdf_text(path: Path) -> list[str]:
-    return [page.extract_text() for page in pypdf.PdfReader(path).pages]
+    return [" ".join(page.extract_text().split()) for page in pypdf.PdfReader(path).pages]
 
 
 def heading(lang: str, key: str) -> str:
@@ -35,6 +40,7 @@ def heading(lang: str, key: str) -> str:
 
 @pytest.fixture(scope="module", params=["en", "ru"])
 def dynamic_report(request, tmp_path_factory) -> tuple[str, Path]:
+    """The whole report typeset (end to end: content, Typst)."""
     path = tmp_path_factory.mktemp("report") / f"report_{request.param}.pdf"
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -48,28 +54,31 @@ def test_report_has_every_section_of_the_course_project(dynamic_report):
     for key in SECTIONS + DYNAMIC_SECTIONS:
         assert heading(lang, key) in text, f"section {key!r} missing from the {lang} report"
     other = "ru" if lang == "en" else "en"
-    assert heading(other, "conclusion") not in text
+    assert heading(other, "s_conclusion") not in text
 
 
-def test_report_appendix_holds_every_position_and_column(dynamic_report):
-    lang, path = dynamic_report
+def test_report_appendix_holds_every_position_and_column():
+    document = build_document(mechloop.load_model(DYNAMIC), lang="en")
     frame = mechloop.solve_dynamics(mechloop.load_model(DYNAMIC)).to_frame()
-    pages = pdf_text(path)
-    appendix = [p for p in pages if heading(lang, "appendix") in p]
-    chunks = math.ceil((len(frame.columns) - 1) / APPENDIX_COLUMNS)
-    assert len(appendix) == chunks * math.ceil(len(frame) / APPENDIX_ROWS)
+    tables = document.appendices[0].blocks
+    # every column but the position (in each table) and the empty chain-break column
+    assert len(tables) == math.ceil((len(frame.columns) - 2) / (COLUMNS - 1))
+    assert sum(len(t.header) - 1 for t in tables) == len(frame.columns) - 2
+    assert all(len(t.rows) == len(frame) for t in tables)
     # the value of r3 at the last position is printed in the appendix
-    last = f"{frame['r3 [m]'].iloc[-1]:.6g}"
-    assert any(last in p for p in appendix)
+    r3 = next(t for t in tables if "r3, m" in t.header)
+    cell = r3.rows[-1][r3.header.index("r3, m")]
+    assert float(cell) == pytest.approx(frame["r3 [m]"].iloc[-1], abs=5e-6)
 
 
 def test_report_conclusion_states_the_stroke_and_the_peak_balancing_moment(dynamic_report):
-    _lang, path = dynamic_report
+    lang, path = dynamic_report
     dyn = mechloop.solve_dynamics(mechloop.load_model(DYNAMIC))
     r3 = dyn.kinematics.value("r3")
-    text = "\n".join(pdf_text(path)).replace("\n", " ")
-    assert f"{r3.max() - r3.min():.6g} m" in text
-    assert f"{np.abs(dyn.forces.balancing[1]).max():.6g} N*m" in text
+    text = " ".join(pdf_text(path))
+    metre, newton_metre = ("m", "N·m") if lang == "en" else ("м", "Н·м")
+    assert f"{r3.max() - r3.min():.5g} {metre}" in text
+    assert f"{np.abs(dyn.forces.balancing[1]).max():.5g} {newton_metre}" in text
 
 
 def test_report_pages_render_to_images(dynamic_report):
@@ -81,22 +90,33 @@ def test_report_pages_render_to_images(dynamic_report):
         assert pixels.min() < 128 < pixels.max(), f"page {index + 1} is blank"
 
 
-def test_kinematic_report_has_no_dynamic_sections(tmp_path):
-    path = write_report(mechloop.load_model(KINEMATIC), tmp_path / "k.pdf", lang="ru")
-    text = "\n".join(pdf_text(path))
-    assert heading("ru", "c") in text
+def test_the_docx_report_holds_the_same_sections(tmp_path):
+    import docx
+
+    path = write_report(mechloop.load_model(KINEMATIC), tmp_path / "k.docx", lang="ru")
+    text = "\n".join(p.text for p in docx.Document(str(path)).paragraphs)
+    for key in SECTIONS:
+        assert heading("ru", key) in text, key
+
+
+def test_kinematic_report_has_no_dynamic_sections():
+    document = build_document(mechloop.load_model(KINEMATIC), lang="ru")
+    titles = [s.title for s in document.sections]
+    assert titles[2].startswith(heading("ru", "s_increment"))
     for key in DYNAMIC_SECTIONS:
-        assert heading("ru", key) not in text
+        assert not any(t.startswith(heading("ru", key)) for t in titles)
+    assert isinstance(document.sections[-1].blocks[0], Paragraph)
 
 
 def test_report_errors(tmp_path):
     model = mechloop.load_model(KINEMATIC)
     with pytest.raises(mechloop.MechloopError, match="use 'en' or 'ru'"):
         write_report(model, tmp_path / "x.pdf", lang="de")
-    with pytest.raises(mechloop.MechloopError, match=r"ending in \.pdf"):
+    with pytest.raises(mechloop.MechloopError, match=r"ending in \.pdf or \.docx"):
         write_report(model, tmp_path / "x.png")
     with pytest.raises(mechloop.MechloopError, match="not a varying parameter"):
         write_report(model, tmp_path / "x.pdf", output="r1")
+    assert not list(tmp_path.iterdir())
 
 
 KIND_OPTIONS = {

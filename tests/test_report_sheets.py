@@ -9,7 +9,6 @@ import math
 import re
 from pathlib import Path
 
-import pypdf
 import pytest
 from matplotlib.text import Text
 from typer.testing import CliRunner
@@ -20,9 +19,10 @@ from mechloop.cli import app
 from mechloop.errors import ModelError
 from mechloop.gears.tables import pair_table
 from mechloop.model.project import project_documents
+from mechloop.report.document import Document, FigureItem, Table, TitlePage, caption, numbered
+from mechloop.report.sheets import sheet_section
 from mechloop.views.cam_sheet import cam_sheet
 from mechloop.views.gear_sheet import gear_sheet, load_gears
-from mechloop.views.report import A4, sheet_pages
 
 ROOT = Path(__file__).resolve().parents[1]
 CAMS = ROOT / "examples/cams"
@@ -126,22 +126,23 @@ def test_russian_sheet_has_no_english_words(name):
     assert [r[0] for r in english.tables[0].rows] != [r[0] for r in sheet.tables[0].rows]
 
 
-def test_sheet_pages_are_a4_with_numbered_captions(roller):
+def test_a_sheet_is_a_report_section_with_numbered_captions(roller):
     sheet = cam_sheet(roller, "ru")
-    pages = sheet_pages(sheet)
-    assert len(pages) == 1 + len(sheet.figures) == 5
-    first = pages[0]()
-    assert tuple(first.get_size_inches()) == pytest.approx(A4)
-    words = [t.get_text() for t in first.findobj(Text)]
-    assert "Таблица 4.1. Параметры кулачкового механизма" in words
-    assert "Таблица 4.2. Фазы закона движения" in words
-    cells = [cell.get_text().get_text() for ax in first.axes for table in ax.tables
-             for cell in table.get_celld().values()]
+    section = sheet_section(sheet)
+    assert section.title == "Лист 4. Кулачковый механизм"
+    tables = [b for b in section.blocks if isinstance(b, Table)]
+    figures = [b for b in section.blocks if isinstance(b, FigureItem)]
+    assert len(tables) == len(sheet.tables) == 2 and len(figures) == len(sheet.figures) == 4
+    title = TitlePage([], "", "", "", "", [], "")
+    document = Document("ru", "", title, [section, section, section, section])
+    captions = [caption(document, n) for n in numbered(document)
+                if n.number.startswith("4.") and isinstance(n.block, Table | FigureItem)]
+    assert "Таблица 4.1 — Параметры кулачкового механизма" in captions
+    assert "Таблица 4.2 — Фазы закона движения" in captions
+    assert any(c.startswith("Рисунок 4.2 — Профиль кулачка") for c in captions)
+    cells = [cell for table in tables for row in table.rows for cell in row]
     assert "37" in cells and "26.073" in cells and "синусоидальный (циклоидальный)" in cells
-    profile = pages[2]()
-    assert sorted(profile.get_size_inches()) == pytest.approx(sorted(A4))
-    assert any(t.get_text().startswith("Рис. 4.2 — Профиль кулачка")
-               for t in profile.findobj(Text))
+    assert [p.text for p in section.blocks if hasattr(p, "text")] == sheet.paragraphs
 
 
 def test_model_project_section_reads_the_cam_relative_to_the_model():
@@ -189,22 +190,37 @@ def test_bad_cam_references_are_located_in_the_model_file(tmp_path):
     assert "Traceback" not in result.output
 
 
-def test_report_with_cam_and_gears_options_has_both_sheets(tmp_path):
-    """One report through the command line (a kinematic model, so it is quick)."""
+def test_report_with_cam_and_gears_options_has_both_sheets(tmp_path, monkeypatch):
+    """One report through the command line (a kinematic model, so it is quick); the
+    document is caught before it is typeset."""
+    import mechloop.report.write as write
+
+    made = []
+
+    def capture(document, path, *, progress=None):
+        made.append(document)
+        return Path(path)
+
+    monkeypatch.setattr(write, "write_document", capture)
     out = tmp_path / "report.pdf"
     result = CliRunner().invoke(app, ["report", str(ROOT / "examples/crank_slider.yaml"),
                                       "--cam", str(CAMS / "roller.yaml"), "--gears",
                                       str(GEARS / "gear_pair.yaml"), "-o", str(out),
                                       "--lang", "ru"])
     assert result.exit_code == 0, result.output
-    pages = [p.extract_text() for p in pypdf.PdfReader(out).pages]
-    sheet = [k for k, p in enumerate(pages) if "Лист 4. Кулачковый механизм" in p]
-    conclusion = [k for k, p in enumerate(pages) if "Вывод о работе механизма" in p]
-    gears = [k for k, p in enumerate(pages) if "Лист 3. Зубчатая передача" in p]
-    assert len(gears) == 3 and gears[-1] + 1 == sheet[0]
-    assert "коэффициент торцового перекрытия" in pages[gears[0]]
-    assert len(sheet) == 5 and sheet[-1] < conclusion[0]
-    assert "26.073" in pages[sheet[0]] and "Подрезания нет" in pages[sheet[0]]
+    [document] = made
+    titles = [s.title for s in document.sections]
+    gears = titles.index("Лист 3. Зубчатая передача")
+    assert titles[gears + 1] == "Лист 4. Кулачковый механизм"
+    assert titles[gears + 2] == "Вывод о работе механизма"
+    gear_cells = " ".join(c for b in document.sections[gears].blocks
+                          if isinstance(b, Table) for row in b.rows for c in row)
+    assert "коэффициент торцового перекрытия" in gear_cells
+    cam = document.sections[gears + 1]
+    cam_text = " ".join([*(c for b in cam.blocks if isinstance(b, Table)
+                           for row in b.rows for c in row),
+                         *(b.text for b in cam.blocks if hasattr(b, "text"))])
+    assert "26.073" in cam_text and "Подрезания нет" in cam_text
 
 
 def test_gear_pair_sheet_holds_the_gear_packages_geometry_and_checks():
