@@ -31,8 +31,8 @@ import mechloop
 from mechloop.bundled import examples, examples_dir, find_example
 from mechloop.cli import app
 from mechloop.errors import HintedError
-from mechloop.structure.analysis import analyze
 from mechloop.report.words import TEXT
+from mechloop.structure.analysis import analyze
 from mechloop.views.report import write_report
 
 ROOT = Path(__file__).resolve().parents[1]
