@@ -1,5 +1,6 @@
 """Views from Python: a position plan, trajectories, parameter plots, a hodograph, an
-animation and the course-project report.  Files go to ./views_out/.
+animation and the course-project report (PDF and an editable DOCX, its title page from the
+model's report: section and from Python).  Files go to ./views_out/.
 
 Run from the repository root:  python examples/views_api.py
 """
@@ -11,7 +12,7 @@ from mechloop.views import curves, dynamics, plan
 from mechloop.views.animation import animate
 from mechloop.views.display import Display
 from mechloop.views.figure import save_figure
-from mechloop.views.report import write_report
+from mechloop.report.write import write_report
 
 HERE = Path(__file__).parent
 OUT = Path("views_out")
@@ -32,5 +33,7 @@ save_figure(curves.plot_parameters(dyn, ["r3", "dr3"], against="arg1", display=m
 save_figure(curves.plot_increment(dyn, "r3", 0), OUT / "increment.png")
 save_figure(dynamics.plot_hodograph(dyn, "A", display=mm), OUT / "hodograph_A.pdf")
 save_figure(dynamics.plot_reduced(dyn), OUT / "reduced.png")
-write_report(model, OUT / "report_ru.pdf", lang="ru")
+write_report(model, OUT / "report_ru.pdf", lang="ru", position=12)     # scheme at 12
+write_report(model, OUT / "report_en.docx", lang="en",                  # editable Word
+             title={"student": "J. Smith", "group": "MT-21"})   # over the report: section
 print(f"wrote {len(list(OUT.iterdir()))} files to {OUT}/")
