@@ -398,3 +398,22 @@ def test_report_section_is_checked_where_it_is_written(tmp_path):
     with pytest.raises(mechloop.ModelError) as caught:
         mechloop.Model.from_dict(data)
     assert caught.value.problems[0].path[:2] == ("report", "grade")
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_a_machine_gets_its_motion_flywheel_and_efficiency(lang):
+    model = mechloop.load_model(EXAMPLES / "single_cylinder_engine.yaml")
+    dyn = mechloop.solve_dynamics(model)
+    document = build_document(model, lang=lang)
+    w = TEXT[lang]
+    assert [s.title for s in document.sections[6].blocks] == [
+        w["s_reduced_sub"], w["s_balancing"], w["s_summary"], w["s_motion"]]
+    conclusion = [p.text for p in document.sections[-1].blocks]
+    flywheel = next(p for p in conclusion if p.startswith(w["flywheel"][:12]))
+    delta, value = NUMBER.findall(flywheel.split("δ = ")[1])
+    _close(delta, dyn.cycle.delta)
+    _close(value, float(dyn.cycle.flywheel))
+    assert flywheel.endswith(("kg·m².", "кг·м²."))
+    efficiency = next(p for p in conclusion if "η = " in p)
+    _close(NUMBER.findall(efficiency.split("η = ")[1])[0], 100 * float(dyn.summary.efficiency))
+    assert efficiency.endswith(" %.")
