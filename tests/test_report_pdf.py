@@ -39,9 +39,9 @@ TOLERANCE = 1 * MM
 
 
 def normal(text: str) -> str:
-    """``text`` with the marks of hyphenated line ends dropped and white space as single
-    spaces."""
-    return " ".join(text.replace("\ufffe", "").split())
+    """``text`` with the marks of hyphenated line ends and the zero-width spaces that
+    break long words dropped and white space as single spaces."""
+    return " ".join(text.replace("\ufffe", "").replace("\u200b", "").split())
 
 
 def page_texts(path) -> list[str]:
@@ -258,6 +258,21 @@ def test_any_text_is_printed_as_it_is(text, tmp_path):
         assert piece in body
     # the heading, the paragraph, the caption, the cell, the warning and the formula
     assert body.count(want) >= 6
+
+
+def test_long_words_and_lines_wrap_inside_the_page(tmp_path):
+    base = sample_document("en")
+    word = "very_long_model_name_" * 9 + "/" + "x" * 70
+    formula = "F = " + " + ".join(f"m{i}·a{i}" for i in range(60))
+    blocks = [Paragraph(f"In {word} the\ttab."), Paragraph(word, "formula"),
+              Paragraph(formula, "formula"), Table(word, ("name", "value"), [(word, "1.5")])]
+    path = write_pdf(Document("en", "long", base.title, [Section(word, blocks)]),
+                     tmp_path / "long.pdf")
+    check_text_area(path)
+    body = normal(" ".join(page_texts(path)[2:]))
+    solid = body.replace(" ", "")  # a line may break inside a long word
+    assert solid.count(word) == 5
+    assert f"In{word}thetab." in solid and normal(formula) in body
 
 
 def test_a_sign_without_a_font_is_a_user_error_and_leaves_no_file(tmp_path):

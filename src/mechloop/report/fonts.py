@@ -50,9 +50,9 @@ def _fonts(role: str, bold: bool):
 
 def missing_glyphs(text: str, *, role: str = "text", bold: bool = False) -> set[str]:
     """The characters of ``text`` that no font of ``role`` ('text' or 'mono') in the
-    weight has (white space aside)."""
+    weight has (white space and zero-width spaces aside)."""
     fonts = _fonts(role, bold)
-    return {c for c in set(text) if not c.isspace()
+    return {c for c in set(text) if not c.isspace() and c != "\u200b"
             and not any(ord(c) in cmap for cmap, _ in fonts)}
 
 

@@ -10,6 +10,8 @@ figure's image file and size.
 
 from __future__ import annotations
 
+import re
+
 from mechloop.errors import HintedError
 from mechloop.report.document import (
     Document,
@@ -33,8 +35,25 @@ class TypesetError(HintedError):
     """The report cannot be typeset (a sign no font has, Typst failing)."""
 
 
-def _plain(text: str) -> str:
-    return text.replace("\r\n", "\n").replace("\r", "\n")
+#: A word longer than this many characters (a path, a long name) gets a line break
+#: opportunity (a zero-width space, U+200B, which the PDF's text holds) every
+#: :data:`CHUNK` characters, so that it wraps inside the page instead of running off it.
+LONG_WORD = 60
+CHUNK = 20
+_LONG = re.compile(rf"\S{{{LONG_WORD + 1},}}")
+
+
+def _breakable(word: re.Match) -> str:
+    text = word.group()
+    return "\u200b".join(text[k:k + CHUNK] for k in range(0, len(text), CHUNK))
+
+
+def _plain(text: str, *, tabs: int = 0) -> str:
+    """``text`` with its line ends as ``\\n``, tabs as spaces (to the next multiple of
+    ``tabs`` columns, or one space) and long words breakable."""
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = text.expandtabs(tabs) if tabs else text.replace("\t", " ")
+    return _LONG.sub(_breakable, text)
 
 
 def table_data(document: Document, item: Numbered) -> list[dict]:
@@ -47,8 +66,8 @@ def table_data(document: Document, item: Numbered) -> list[dict]:
     rows = [row + ("",) * (width - len(row)) for row in rows]
     parts = []
     for k, part in enumerate(table_parts(header, rows)):
-        title = caption(document, item) if k == 0 else CONTINUED[document.lang].format(
-            word=document.words.table, number=item.number)
+        title = _plain(caption(document, item)) if k == 0 else CONTINUED[
+            document.lang].format(word=document.words.table, number=item.number)
         parts.append({
             "kind": "table", "caption": title, "size": part.size, "widths": part.widths,
             "header": [header[j] for j in part.columns],
@@ -77,7 +96,8 @@ def document_data(document: Document, figure_files: dict[int, tuple[str, float, 
             blocks.append({"kind": "figure", "caption": text, "file": file,
                            "width": width, "height": height})
         elif isinstance(block, Paragraph):
-            blocks.append({"kind": block.kind, "text": _plain(block.text)})
+            tabs = 4 if block.kind == "formula" else 0
+            blocks.append({"kind": block.kind, "text": _plain(block.text, tabs=tabs)})
     title = document.title
     data = {
         "lang": document.lang, "name": document.name, "contents": document.words.contents,

@@ -35,6 +35,8 @@ SAFETY = 1.04
 #: The room kept on a figure's page for its caption's gaps and a heading above it, pt.
 FIGURE_ROOM = 60.0
 
+#: What a line may break at: white space and zero-width spaces.
+_WORDS = re.compile(r"[\s\u200b]+")
 _NUMBER = re.compile(r"[+\-−]?(\d[\d\u00a0\u202f]*([.,]\d*)?|[.,]\d+)([eE][+\-−]?\d+)?%?")
 
 
@@ -61,8 +63,8 @@ def _column_widths(header, rows, columns, *, bold_header=True):
     least, natural = [], []
     for j in columns:
         cells = [row[j] for row in rows]
-        words = [w for cell in cells for w in cell.split()]
-        head_words = header[j].split()
+        words = [w for cell in cells for w in _WORDS.split(cell)]
+        head_words = _WORDS.split(header[j])
         low = max([text_width(w) for w in words]
                   + [text_width(w, bold=bold_header) for w in head_words] + [0.5])
         high = max([text_width(line) for cell in cells for line in cell.splitlines()]
