@@ -136,6 +136,31 @@ def test_headings_and_captions_come_in_document_order_with_their_numbers(sample)
     assert re.search(r"(Table|Таблица) (A|А)\.1 — ", body)
 
 
+def test_top_level_sections_start_a_page_and_no_heading_ends_one(tmp_path):
+    base = sample_document("en")
+    filler = "The reactions are found at every position of the cycle. " * 4
+    sections = [Section(f"Section {k}", [
+        *(Paragraph(filler) for _ in range(k % 4)),
+        *(Section(f"Part {k}.{m}", [*(Paragraph(filler) for _ in range(m + k % 3)),
+                                    Table(f"t{k}.{m}", ("a", "b"), [("1", "2")] * (3 + m)),
+                                    *(Paragraph(filler[:40 * j]) for j in range(1, m % 4)),
+                                    Table(f"u{k}.{m}", ("a", "b"), [("1", "2")] * 3)])
+          for m in range(1, 9))]) for k in range(1, 5)]
+    document = Document("en", "h", base.title, sections, [Section("More", [Paragraph("x")])])
+    pages = page_texts(write_pdf(document, tmp_path / "h.pdf"))[2:]
+    headings = [heading(document, item) for item in numbered(document)
+                if isinstance(item.block, Section)]
+    tops = [heading(document, item) for item in numbered(document) if item.depth == 1
+            and isinstance(item.block, Section)]
+    starts = [normal(p) for p in pages]
+    for text in tops:
+        assert sum(p.startswith(text) for p in starts) == 1, text
+    for page in pages:
+        lines = [line.strip() for line in page.splitlines() if line.strip()]
+        # the last line is the page number; a heading or caption keeps to what follows
+        assert lines[-2] not in headings and not lines[-2].startswith("Table")
+
+
 def test_table_caption_is_above_it_and_figure_caption_below_it(sample):
     document, path, _ = sample
     items = {}
@@ -205,7 +230,7 @@ def wide_document(rows=70, columns=30, lang="ru"):
 
 
 def test_a_wide_table_is_split_in_parts_that_fit_each_with_the_first_column(tmp_path):
-    document = wide_document()
+    document = wide_document(rows=40)
     table = document.appendices[0].blocks[0]
     parts = table_parts(table.header, table.rows)
     assert len(parts) > 1
@@ -290,7 +315,7 @@ def test_a_typst_failure_is_a_user_error_and_keeps_the_old_file(tmp_path, monkey
     target.write_bytes(b"old")
     monkeypatch.setattr(pdf_module, "template_text", lambda: '#let x = json("none.json")')
     with pytest.raises(TypesetError, match="Typst could not typeset"):
-        write_pdf(sample_document("en", rows=3), target)
+        write_pdf(wide_document(rows=3, columns=3), target)
     assert target.read_bytes() == b"old"
     assert list(tmp_path.iterdir()) == [target]
 
