@@ -133,6 +133,7 @@ def test_headings_and_captions_come_in_document_order_with_their_numbers(sample)
         assert found >= 0, text
         at = found + 1
     assert "Figure 1.1 —" in body or "Рисунок 1.1 —" in body
+    assert "φ1, deg" in body  # the figures' texts are text
     assert re.search(r"(Table|Таблица) (A|А)\.1 — ", body)
 
 
@@ -180,6 +181,30 @@ def test_table_caption_is_above_it_and_figure_caption_below_it(sample):
     figure = items[FigureItem]
     assert top(caption(document, figure)[:20]) < top("φ1, deg")
     pdf.close()
+
+
+def tall_figure():
+    from matplotlib.figure import Figure
+
+    figure = Figure(figsize=(4, 16), layout="constrained")
+    axes = figure.subplots(6, 1)
+    for k, ax in enumerate(axes):
+        ax.plot([0, 1], [0, k])
+        ax.set_xlabel(f"top label {k}" if k == 0 else f"label {k}")
+    axes[-1].set_xlabel("bottom label")
+    return figure
+
+
+def test_a_tall_figure_is_scaled_down_to_fit_a_page_with_its_caption(tmp_path):
+    base = sample_document("en")
+    long = "Displacement, velocity and acceleration of the follower over the cycle " * 3
+    document = Document("en", "tall", base.title, [Section("S", [
+        Paragraph("Text before the figure."), FigureItem(long, tall_figure)])])
+    path = write_pdf(document, tmp_path / "tall.pdf")
+    check_text_area(path)
+    pages = [normal(p) for p in page_texts(path)]
+    [page] = [p for p in pages if "bottom label" in p]
+    assert "top label 0" in page and f"Figure 1.1 — {normal(long)}" in page
 
 
 def test_the_appendix_table_spans_pages_with_its_header_on_each(sample):
