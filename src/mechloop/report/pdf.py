@@ -29,8 +29,8 @@ def template_text() -> str:
 
 
 def _figures(document: Document) -> list[FigureItem]:
-    blocks = [*(s for s in document.sections), *(s for s in document.appendices)]
-    return [b for b in walk(blocks) if isinstance(b, FigureItem)]
+    return [block for block in walk([*document.sections, *document.appendices])
+            if isinstance(block, FigureItem)]
 
 
 def typeset(document: Document, folder: Path, *,
