@@ -29,6 +29,7 @@ from typer.testing import CliRunner
 
 import mechloop
 from mechloop.bundled import examples, examples_dir, find_example
+from mechloop import cli
 from mechloop.cli import app
 from mechloop.errors import HintedError
 from mechloop.report.words import TEXT
@@ -176,7 +177,10 @@ def test_catalogue_lists_every_course_model_and_every_example():
     assert examples(course_only=True) == course
 
 
-def test_examples_command_prints_numbers_and_both_titles():
+def test_examples_command_prints_numbers_and_both_titles(monkeypatch):
+    # the console's width is fixed when it was made if COLUMNS was set then (by another
+    # test in the same process): set it for this test
+    monkeypatch.setattr(cli.out, "width", 250)
     result = CliRunner().invoke(app, ["examples", "--course"], env={"COLUMNS": "250"})
     assert result.exit_code == 0, result.output
     for e in examples(course_only=True):
