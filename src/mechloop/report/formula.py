@@ -12,30 +12,32 @@ from mechloop.report.numbers import Shown
 from mechloop.report.parameters import role_text
 from mechloop.report.values import module_text, symbol
 from mechloop.solve.results import Results
-from mechloop.views.russian import translate
+
+#: Constants on one line of the formula (the lines are kept as they are).
+CONSTANTS_PER_LINE = 3
 
 WORDS = {
     "en": {"head": "planar model: {contours} contour(s), {vectors} vectors, positions "
                    "0…{n}",
            "order": "solving order: {order}", "contour": "contour {n}",
-           "vectors": "vectors {list}", "structure": "structure formula:  {text}",
+           "vectors": "vectors {list}", "structure": "structure formula: {text}",
            "links": "links: {list}", "parametric": "parametric formula: {text}",
            "constants_only": "constants only",
            "solutions": "({count} solution(s))",
            "block": "(coupled block {n}: contours {list} solved together for {unknowns} "
                     "by Newton's method)",
-           "constants": "constants:          {list}", "needs": "needs contours:     {list}"},
+           "constants": "constants: {list}", "needs": "needs contours: {list}"},
     "ru": {"head": "плоская модель: контуров {contours}, векторов {vectors}, положения "
                    "0…{n}",
            "order": "порядок решения: {order}", "contour": "контур {n}",
-           "vectors": "векторы {list}", "structure": "структурная формула:    {text}",
+           "vectors": "векторы {list}", "structure": "структурная формула: {text}",
            "links": "связи: {list}", "parametric": "параметрическая формула: {text}",
            "constants_only": "только константы",
            "solutions": "(решений: {count})",
            "block": "(связанный блок {n}: контуры {list} решаются совместно "
                     "относительно {unknowns} методом Ньютона)",
-           "constants": "константы:              {list}",
-           "needs": "нужны контуры:          {list}"},
+           "constants": "константы: {list}",
+           "needs": "нужны контуры: {list}"},
 }
 
 
@@ -72,13 +74,16 @@ def formula_text(model: Model, results: Results, shown: Shown, w: dict[str, str]
             tail = f["block"].format(n=block.number,
                                      list=", ".join(map(str, block.contours)),
                                      unknowns=", ".join(map(symbol, block.unknowns)))
-        lines.append("  " + f["parametric"].format(text=f"{formula} {tail}"))
+        lines.append("  " + f["parametric"].format(text=formula))
+        lines.append("    " + tail)
         known = [f"{symbol(p)} = {_constant(results, p, shown)}"
                  for n in info.vectors for p in (f"r{n}", f"a{n}")
                  if p not in info.functions and p not in info.arguments
                  and p not in info.links]
-        if known:
-            lines.append("  " + f["constants"].format(list=", ".join(known)))
+        for k in range(0, len(known), CONSTANTS_PER_LINE):
+            chunk = ", ".join(known[k:k + CONSTANTS_PER_LINE])
+            lines.append("  " + (f["constants"].format(list=chunk) if k == 0
+                                 else " " * (len(f["constants"]) - 6) + chunk))
         if info.needs:
             lines.append("  " + f["needs"].format(list=", ".join(map(str, info.needs))))
     return "\n".join(lines)
@@ -97,10 +102,9 @@ def _constant(results: Results, name: str, shown: Shown) -> str:
 def formula_section(model: Model, results: Results, shown: Shown, w: dict[str, str]
                     ) -> Section:
     """Section 2: the structure figure and the formulas."""
-    from mechloop.views import formula
+    from mechloop.report.structure_figure import structure_figure
 
     lang = shown.lang
     return Section(w["s_formula"], [
-        FigureItem(w["f_structure"], lambda: translate(formula.plot_structure(model),
-                                                       lang)),
+        FigureItem(w["f_structure"], lambda: structure_figure(model, lang)),
         Paragraph(formula_text(model, results, shown, w), "formula")])
