@@ -26,7 +26,7 @@ from mechloop.errors import HintedError
 from mechloop.model.project import ProjectDocuments
 from mechloop.model.report_info import ReportInfo
 from mechloop.model.schema import Model
-from mechloop.output.display import plot_display, resolve
+from mechloop.output.display import TableDisplay, plot_display, resolve
 from mechloop.report.appendix import appendix_tables
 from mechloop.report.breaks import break_lines
 from mechloop.report.conclusion import conclusion_blocks
@@ -222,7 +222,8 @@ def build_document(model: Model, *, lang: str, output: str | None = None,
     position = check_position(results, position, w)
     td = resolve(model.display)
     shown = Shown(td, lang)
-    display = plot_display(td) or DEFAULT_DISPLAY
+    # the plots in the units of the tables (angular velocities in rad/s unless named)
+    display = plot_display(td or TableDisplay({})) or DEFAULT_DISPLAY
     length_unit = None if td is None else td.units.get("length")
     if warn is not None:
         broken = cycle_breaks(dyn) if dyn is not None else None
