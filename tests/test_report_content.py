@@ -417,3 +417,20 @@ def test_a_machine_gets_its_motion_flywheel_and_efficiency(lang):
     efficiency = next(p for p in conclusion if "η = " in p)
     _close(NUMBER.findall(efficiency.split("η = ")[1])[0], 100 * float(dyn.summary.efficiency))
     assert efficiency.endswith(" %.")
+
+
+def test_the_plots_take_the_units_of_the_tables():
+    """Angular velocities in rad/s (as the tables and the conclusion) unless the display
+    names another unit."""
+    import matplotlib.pyplot as plt
+    from matplotlib.text import Text
+
+    for display, unit in ((None, "rad/s"), ({"angular_velocity": "rpm"}, "rpm")):
+        data = yaml.safe_load((EXAMPLES / "four_bar.yaml").read_text())
+        if display:
+            data["display"] = display
+        document = build_document(mechloop.Model.from_dict(data), lang="en")
+        figure = document.sections[2].blocks[0].draw()
+        labels = [t.get_text() for t in figure.findobj(Text) if t.get_text().startswith("da3")]
+        plt.close(figure)
+        assert labels and all(unit in label and "deg/s" not in label for label in labels)
