@@ -434,3 +434,13 @@ def test_the_plots_take_the_units_of_the_tables():
         labels = [t.get_text() for t in figure.findobj(Text) if t.get_text().startswith("da3")]
         plt.close(figure)
         assert labels and all(unit in label and "deg/s" not in label for label in labels)
+
+
+@pytest.mark.parametrize("path", RUSSIAN_MODELS, ids=lambda p: p.stem)
+def test_the_english_document_has_no_russian_words(path):
+    model = mechloop.load_model(path)
+    project = project_documents(model, path) if model.project else None
+    document = build_document(model, lang="en", project=project)
+    found = [text for text in texts(document) if re.search("[А-Яа-яЁё]", text)
+             and not (model.description and model.description in text)]
+    assert not found, found[:3]
