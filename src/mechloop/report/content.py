@@ -74,14 +74,12 @@ def check_position(results: Results, position: int | None, w: dict[str, str]) ->
         return intermediate(results)
     good = compress_positions(np.flatnonzero(~results.broken))
     count = results.broken.size
-    hint = (f"use a position where the chain assembles: {good}" if good else
-            "the chain breaks at every position: fix the model first")
+    hint = w["e_position_hint"].format(good=good) if good else w["e_all_broken"]
     if not isinstance(position, int | np.integer) or not 0 <= position < count:
-        raise HintedError(f"--position {position} is not a calculation position "
-                          f"(0 to {count - 1})", hint)
-    if results.broken[position]:
-        raise HintedError(f"--position {position}: the chain breaks at that position",
+        raise HintedError(w["e_position_range"].format(position=position, last=count - 1),
                           hint)
+    if results.broken[position]:
+        raise HintedError(w["e_position_broken"].format(position=position), hint)
     return int(position)
 
 

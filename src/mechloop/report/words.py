@@ -144,6 +144,11 @@ TEXT: dict[str, dict[str, str]] = {
                         "first.",
         "chain_break": "break",
         # the report command
+        "e_position_range": "--position {position} is not a calculation position (0 to "
+                            "{last})",
+        "e_position_broken": "--position {position}: the chain breaks at that position",
+        "e_position_hint": "use a position where the chain assembles: {good}",
+        "e_all_broken": "the chain breaks at every position: fix the model first",
         "progress": "figures",
         "wrote": "wrote {path}",
         "warning": "warning",
@@ -280,6 +285,11 @@ TEXT: dict[str, dict[str, str]] = {
                         "сводных характеристик пропущены шаги рядом с разрывами. Сначала "
                         "устраните разрыв.",
         "chain_break": "разрыв",
+        "e_position_range": "--position {position}: такого расчётного положения нет (0 … "
+                            "{last})",
+        "e_position_broken": "--position {position}: в этом положении цепь разрывается",
+        "e_position_hint": "укажите положение, в котором цепь собирается: {good}",
+        "e_all_broken": "цепь разрывается во всех положениях: сначала исправьте модель",
         "progress": "рисунки",
         "wrote": "записан {path}",
         "warning": "предупреждение",

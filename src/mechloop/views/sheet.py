@@ -2,8 +2,9 @@
 its figures (each a caption and a function that draws it), its tables (a caption, a header
 and rows of text) and its paragraphs, all in one language.
 
-The report (:mod:`mechloop.views.report`) lays a :class:`Sheet` out on pages; another
-typesetter can take the same content (the figures as images, the tables as tables).
+The report (:mod:`mechloop.report.sheets`) makes a :class:`Sheet` a section of its
+document, which the PDF and DOCX typesetters lay out (the figures as images, the tables as
+tables).
 """
 
 from __future__ import annotations
