@@ -727,14 +727,16 @@ def report(
                      "the model's project.gears")] = None,
     student: Annotated[str | None, typer.Option(help="title page: the student (default: "
                        "the model's report.student)")] = None,
-    group: Annotated[str | None, typer.Option(help="title page: the group")] = None,
-    supervisor: Annotated[str | None, typer.Option(help="title page: the supervisor")
-                          ] = None,
-    university: Annotated[str | None, typer.Option(help="title page: the university")
-                          ] = None,
-    department: Annotated[str | None, typer.Option(help="title page: the department")
-                          ] = None,
-    city: Annotated[str | None, typer.Option(help="title page: the city")] = None,
+    group: Annotated[str | None, typer.Option(help="title page: the group (default: the "
+                     "model's report.group)")] = None,
+    supervisor: Annotated[str | None, typer.Option(help="title page: the supervisor "
+                          "(default: the model's report.supervisor)")] = None,
+    university: Annotated[str | None, typer.Option(help="title page: the university "
+                          "(default: the model's report.university)")] = None,
+    department: Annotated[str | None, typer.Option(help="title page: the department "
+                          "(default: the model's report.department)")] = None,
+    city: Annotated[str | None, typer.Option(help="title page: the city (default: the "
+                    "model's report.city)")] = None,
     year: Annotated[int | None, typer.Option(help="title page: the year (default: this "
                     "year)")] = None,
     force: Force = False,
