@@ -444,3 +444,22 @@ def test_the_english_document_has_no_russian_words(path):
     found = [text for text in texts(document) if re.search("[А-Яа-яЁё]", text)
              and not (model.description and model.description in text)]
     assert not found, found[:3]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_a_break_between_two_positions_is_explained_with_its_angles(lang):
+    from oracles.dynamic_models import four_bar_data
+
+    data = {"name": "four-bar, break between positions", **four_bar_data(0.149999, 73),
+            "moments": [{"name": "resistance", "body": 3, "value": -2.0}]}
+    model = mechloop.Model.from_dict(data)
+    [found] = mechloop.solve(model).breaks_between
+    document = build_document(model, lang=lang)
+    [text] = [p.text for p in document.sections[-1].blocks
+              if p.text.startswith(("Contour 1 (Pl4)", "Контур 1 (Пл4)"))]
+    assert f"{found.after} {'and' if lang == 'en' else 'и'} {found.after + 1}" in text
+    numbers = re.findall(r"(-?\d+(?:\.\d+)?)°", text)
+    expected = np.degrees([*found.at, found.start, found.stop])
+    assert len(numbers) == 4
+    for printed, value in zip(numbers, expected, strict=True):
+        _close(printed, value)
