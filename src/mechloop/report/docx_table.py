@@ -1,0 +1,139 @@
+"""A report table as a Word table: the grid style, the header row bold and repeated on
+every page the table runs onto, rows never split across pages, numbers right-aligned, the
+columns fitted to the text width and the font made smaller (12 pt down to 8 pt) only as far
+as the longest unbreakable words need.
+
+The table is written as one piece of XML (python-docx builds cell by cell, which is slow
+for the appendix tables of every position: hundreds of rows).
+"""
+
+from __future__ import annotations
+
+import re
+
+from docx.oxml import parse_xml
+from docx.oxml.ns import nsdecls
+
+from mechloop.report.docx_ooxml import clean, runs_xml
+
+__all__ = ["column_widths", "is_number", "table_element", "text_em"]
+
+#: Font sizes tried for a table, points, largest first.
+SIZES = (12, 11, 10, 9, 8)
+#: Left and right margin inside a cell, twentieths of a point (1.5 mm).
+CELL_MARGIN = 85
+
+_NUMBER = re.compile(r"[+-]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][+-]?\d+)?%?")
+_SPACES = re.compile(r"[\s\u00a0\u2009\u202f]")
+
+
+def is_number(text: str) -> bool:
+    """Whether a cell's ``text`` is one number (with a sign '-', '+' or the Unicode minus
+    '−', a decimal point or comma, an exponent, thin spaces between digit groups, a
+    trailing '%'); such cells are right-aligned."""
+    text = _SPACES.sub("", text.replace("−", "-"))
+    return bool(_NUMBER.fullmatch(text))
+
+
+def text_em(text: str) -> float:
+    """An estimate of the width of ``text`` in Times New Roman, in em (font sizes):
+    digits and lower-case letters half an em, capitals and wide letters 0.7, spaces and
+    punctuation 0.25."""
+    width = 0.0
+    for char in text:
+        if char in " .,:;'!|()[]ilIfjt":
+            width += 0.28
+        elif char in "—…%@mwMWЖжШшЩщЮюМмФф":
+            width += 0.9
+        elif char.isupper():
+            width += 0.7
+        else:
+            width += 0.5
+    return width
+
+
+def column_widths(header: tuple[str, ...], rows: list[tuple[str, ...]],
+                  width: int) -> tuple[int, list[int]]:
+    """The font size (points) and the column widths (twentieths of a point, summing to
+    ``width``) of a table: the largest size of :data:`SIZES` at which every column holds
+    its longest word; the columns then get their whole lines where the width allows,
+    the rest shared in proportion to what each still lacks."""
+    count = len(header)
+    words = [0.0] * count   # the longest unbreakable word, em
+    lines = [0.0] * count   # the longest line, em
+    for k, name in enumerate(header):
+        for line in name.split("\n"):
+            words[k] = max(words[k], *(1.05 * text_em(w) for w in line.split() or [""]))
+            lines[k] = max(lines[k], 1.05 * text_em(line))
+    for row in rows:
+        for k, cell in enumerate(row):
+            for line in cell.split("\n"):
+                em = text_em(line)
+                lines[k] = max(lines[k], em)
+                words[k] = max(words[k], *(text_em(w) for w in line.split() or [""]))
+    padding = 2 * CELL_MARGIN + 20
+    for size in SIZES:
+        least = [w * size * 20 + padding for w in words]
+        if sum(least) <= width:
+            break
+    else:
+        scale = width / sum(least)
+        return size, _whole([w * scale for w in least], width)
+    full = [max(a, line * size * 20 + padding) for a, line in zip(least, lines, strict=True)]
+    if sum(full) <= width:
+        spare = width - sum(full)
+        total = sum(full)
+        return size, _whole([f + spare * f / total for f in full], width)
+    lack = [f - a for f, a in zip(full, least, strict=True)]
+    share = (width - sum(least)) / sum(lack)
+    return size, _whole([a + share * d for a, d in zip(least, lack, strict=True)], width)
+
+
+def _whole(widths: list[float], total: int) -> list[int]:
+    """``widths`` rounded to integers summing to ``total``."""
+    whole = [int(w) for w in widths]
+    whole[-1] += total - sum(whole)
+    return whole
+
+
+def table_element(header: tuple[str, ...], rows: list[tuple[str, ...]], *, width: int,
+                  styles: dict[str, str]):
+    """The ``w:tbl`` element of a table with ``header`` and ``rows`` (cell texts),
+    ``width`` twentieths of a point wide; ``styles``: the style ids of 'grid' (the table
+    style), 'cell' and 'header' (paragraph styles)."""
+    header = tuple(clean(h) for h in header)
+    rows = [tuple(clean(c) for c in row) for row in rows]
+    for k, row in enumerate(rows):
+        if len(row) > len(header):
+            raise ValueError(f"row {k} of the table has {len(row)} cells, its header "
+                             f"{len(header)}: {row!r}")
+    size, widths = column_widths(header, rows, width)
+    rpr = "" if size == 12 else f'<w:rPr><w:sz w:val="{2 * size}"/><w:szCs w:val="{2 * size}"/></w:rPr>'
+    grid = "".join(f'<w:gridCol w:w="{w}"/>' for w in widths)
+    parts = [f'<w:tbl {nsdecls("w")}><w:tblPr><w:tblStyle w:val="{styles["grid"]}"/>'
+             f'<w:tblW w:w="{width}" w:type="dxa"/><w:tblLayout w:type="fixed"/>'
+             f'<w:tblCellMar><w:left w:w="{CELL_MARGIN}" w:type="dxa"/>'
+             f'<w:right w:w="{CELL_MARGIN}" w:type="dxa"/></w:tblCellMar>'
+             '<w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" w:firstColumn="0" '
+             'w:lastColumn="0" w:noHBand="1" w:noVBand="1"/></w:tblPr>'
+             f"<w:tblGrid>{grid}</w:tblGrid>"]
+    parts.append(_row(header, widths, styles["header"], rpr, header=True))
+    for row in rows:
+        cells = tuple(row) + ("",) * (len(header) - len(row))
+        parts.append(_row(cells[:len(header)], widths, styles["cell"], rpr, header=False))
+    parts.append("</w:tbl>")
+    return parse_xml("".join(parts))
+
+
+def _row(cells: tuple[str, ...], widths: list[int], style: str, rpr: str, *,
+         header: bool) -> str:
+    trpr = "<w:trPr><w:cantSplit/><w:tblHeader/></w:trPr>" if header else \
+        "<w:trPr><w:cantSplit/></w:trPr>"
+    out = [f"<w:tr>{trpr}"]
+    for text, width in zip(cells, widths, strict=True):
+        align = '<w:jc w:val="right"/>' if not header and is_number(text) else ""
+        out.append(f'<w:tc><w:tcPr><w:tcW w:w="{width}" w:type="dxa"/></w:tcPr>'
+                   f'<w:p><w:pPr><w:pStyle w:val="{style}"/>{align}</w:pPr>'
+                   f"{runs_xml(text, rpr) if text else ''}</w:p></w:tc>")
+    out.append("</w:tr>")
+    return "".join(out)
