@@ -12,8 +12,8 @@ from docx.oxml import OxmlElement
 from docx.oxml.ns import qn
 from docx.shared import Mm, Pt
 
-from mechloop.report.docx_ooxml import clean, field_begin, field_end, simple_field
 from mechloop.report.document import TitlePage
+from mechloop.report.docx_ooxml import clean, field_begin, field_end, simple_field
 
 __all__ = ["TOC_CODE", "bookmark", "contents_page", "page_numbers", "title_page"]
 

@@ -108,7 +108,8 @@ def table_element(header: tuple[str, ...], rows: list[tuple[str, ...]], *, width
             raise ValueError(f"row {k} of the table has {len(row)} cells, its header "
                              f"{len(header)}: {row!r}")
     size, widths = column_widths(header, rows, width)
-    rpr = "" if size == 12 else f'<w:rPr><w:sz w:val="{2 * size}"/><w:szCs w:val="{2 * size}"/></w:rPr>'
+    rpr = "" if size == 12 else \
+        f'<w:rPr><w:sz w:val="{2 * size}"/><w:szCs w:val="{2 * size}"/></w:rPr>'
     grid = "".join(f'<w:gridCol w:w="{w}"/>' for w in widths)
     parts = [f'<w:tbl {nsdecls("w")}><w:tblPr><w:tblStyle w:val="{styles["grid"]}"/>'
              f'<w:tblW w:w="{width}" w:type="dxa"/><w:tblLayout w:type="fixed"/>'
