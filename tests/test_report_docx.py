@@ -309,3 +309,38 @@ def test_columns_fit_the_width_and_hold_their_longest_words():
     long = [("a long text " * 20,)]
     size, widths = column_widths(words, long, width)
     assert size == 12 and widths == [width]  # a long text wraps, the font stays
+
+
+def test_a_table_too_wide_for_portrait_goes_on_landscape_pages(tmp_path):
+    """Twelve columns of nine-character numbers do not fit 165 mm even at 8 pt: the
+    table gets landscape pages of its own (bound by their top edge), numbered on."""
+    base = sample_document("en", rows=3, columns=3)
+    numbers = tuple(f"{(k + 1) * 123.456:.3f}".replace("-", "−") for k in range(12))
+    wide = Table("Wide", tuple(f"quantity {k}, unit" for k in range(12)), [numbers] * 4)
+    narrow = Table("Narrow", ("a", "b"), [("1", "2")])
+    document = dataclasses.replace(base, sections=[
+        Section("Tables", [narrow, wide, wide, Paragraph("after")]),
+        Section("Wide first", [Section("Its subsection", [wide])]), *base.sections])
+    doc = docx.Document(str(write_docx(document, tmp_path / "wide.docx")))
+    sections = doc.sections
+    assert [round(s.page_width.mm) for s in sections] == [210, 297, 210, 297, 210]
+    assert sections[1].orientation == docx.enum.section.WD_ORIENT.LANDSCAPE
+    assert sections[1].top_margin.mm == pytest.approx(30, abs=0.05)
+    assert [s.different_first_page_header_footer for s in sections] == [True] + [False] * 4
+    assert [s.footer.is_linked_to_previous for s in sections] == [False] + [True] * 4
+    body = _body(doc)
+    breaks = [k for k, part in enumerate(body) if isinstance(part, docx.text.paragraph.Paragraph)
+              and part._p.find(f"{qn('w:pPr')}/{qn('w:sectPr')}") is not None]
+    tables = [k for k, part in enumerate(body) if isinstance(part, docx.table.Table)]
+    assert breaks[0] < tables[1] < tables[2] < breaks[1] < tables[3]  # both wide ones
+    assert tables[0] < breaks[0]
+    # the headings above a wide table go with it onto the landscape page
+    headings = [k for k, part in enumerate(body)
+                if isinstance(part, docx.text.paragraph.Paragraph)
+                and part.style.name.startswith("Heading")]
+    assert breaks[2] < headings[1] < headings[2] < tables[3] < breaks[3] < headings[3]
+    assert [body[k].text for k in headings[1:3]] == ["2 Wide first", "2.1 Its subsection"]
+    size, widths = column_widths(wide.header, wide.rows, 14570)  # 257 mm
+    assert size >= 9
+    grid = [int(c.get(qn("w:w"))) for c in body[tables[1]]._tbl.iter(qn("w:gridCol"))]
+    assert grid == widths

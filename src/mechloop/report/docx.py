@@ -19,6 +19,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 
 import docx
+from docx.enum.section import WD_SECTION
 from docx.enum.text import WD_ALIGN_PARAGRAPH
 from docx.oxml.ns import qn
 from docx.shared import Emu, Pt
@@ -39,12 +40,13 @@ from mechloop.report.docx_front import bookmark, contents_page, page_numbers, ti
 from mechloop.report.docx_ooxml import clean, set_settings
 from mechloop.report.docx_styles import (
     FIGURE_HEIGHT,
+    LANDSCAPE_WIDTH,
     LANGUAGES,
     TEXT_WIDTH,
     set_page,
     set_styles,
 )
-from mechloop.report.docx_table import table_element
+from mechloop.report.docx_table import cleaned, fits, table_element
 
 __all__ = ["DPI", "write_docx"]
 
@@ -96,14 +98,18 @@ def build_docx(document: Document, *, progress: Progress | None = None):
            "header": doc.styles["Table Header"].style_id}
     done = 0
     after_table = False
-    for k, item in enumerate(items):
+    landscape = False
+    for k, (item, wide) in enumerate(zip(items, _landscape(items), strict=True)):
         block = item.block
+        if wide != landscape:  # a table too wide for A4 portrait: on landscape pages
+            set_page(doc.add_section(WD_SECTION.NEW_PAGE), landscape=wide, first=False)
+            landscape = wide
         if isinstance(block, Section):
             _heading(doc, document, item, marks[id(item)], k)
         elif isinstance(block, Paragraph):
             _paragraph(doc, block, space_before=after_table)
         elif isinstance(block, Table):
-            _table(doc, document, item, ids)
+            _table(doc, document, item, ids, LANDSCAPE_WIDTH if wide else TEXT_WIDTH)
         else:
             _figure(doc, document, item)
             done += 1
@@ -111,6 +117,19 @@ def build_docx(document: Document, *, progress: Progress | None = None):
                 progress(done, total)
         after_table = isinstance(block, Table)
     return doc
+
+
+def _landscape(items: list[Numbered]) -> list[bool]:
+    """Per block, whether it goes on a landscape page: a table too wide for the portrait
+    text width even at the smallest font, and the headings just above it (a heading
+    stays with its table)."""
+    out = [isinstance(item.block, Table)
+           and not fits(*cleaned(item.block.header, item.block.rows), int(TEXT_WIDTH / 635))
+           for item in items]
+    for k in range(len(items) - 2, -1, -1):
+        if isinstance(items[k].block, Section) and out[k + 1]:
+            out[k] = True
+    return out
 
 
 def _properties(doc, document: Document, language: str) -> None:
@@ -153,15 +172,16 @@ def _paragraph(doc, block: Paragraph, *, space_before: bool) -> None:
         paragraphs[0].paragraph_format.space_before = Pt(12)
 
 
-def _table(doc, document: Document, item: Numbered, ids: dict[str, str]) -> None:
-    """The caption above the table (kept with it), then the table."""
+def _table(doc, document: Document, item: Numbered, ids: dict[str, str], width) -> None:
+    """The caption above the table (kept with it), then the table ``width`` (EMU)
+    wide."""
     table: Table = item.block
     line = doc.add_paragraph(clean(caption(document, item)), style="Caption")
     line.alignment = WD_ALIGN_PARAGRAPH.LEFT
     line.paragraph_format.keep_with_next = True
     line.paragraph_format.space_before = Pt(12)
     line.paragraph_format.space_after = Pt(3)
-    element = table_element(table.header, table.rows, width=int(TEXT_WIDTH / 635),
+    element = table_element(table.header, table.rows, width=int(width / 635),
                             styles=ids)
     line._p.addnext(element)
 

@@ -10,6 +10,7 @@ of the whole note in one place.
 
 from __future__ import annotations
 
+from docx.enum.section import WD_ORIENT
 from docx.enum.style import WD_STYLE_TYPE
 from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_LINE_SPACING, WD_TAB_ALIGNMENT, WD_TAB_LEADER
 from docx.oxml.ns import qn
@@ -17,7 +18,8 @@ from docx.shared import Mm, Pt, RGBColor
 
 from mechloop.report.docx_ooxml import paragraph_border, set_fonts, set_language
 
-__all__ = ["BODY_PT", "FIGURE_HEIGHT", "LANGUAGES", "SERIF", "TABLE_PT", "TEXT_WIDTH",
+__all__ = ["BODY_PT", "FIGURE_HEIGHT", "LANDSCAPE_WIDTH", "LANGUAGES", "SERIF", "TABLE_PT",
+           "TEXT_WIDTH",
            "set_page", "set_styles"]
 
 SERIF = "Times New Roman"
@@ -27,8 +29,13 @@ TABLE_PT = 12
 INDENT = Mm(12.5)
 PAGE = dict(width=Mm(210), height=Mm(297), left=Mm(30), right=Mm(15), top=Mm(20),
             bottom=Mm(20))
+#: A landscape page for a table too wide for the portrait one: its top edge (30 mm)
+#: is the one bound with the portrait pages' left edge.
+LANDSCAPE = dict(width=Mm(297), height=Mm(210), left=Mm(20), right=Mm(20), top=Mm(30),
+                 bottom=Mm(20))
 #: The width of the text between the margins, EMU.
 TEXT_WIDTH = PAGE["width"] - PAGE["left"] - PAGE["right"]
+LANDSCAPE_WIDTH = LANDSCAPE["width"] - LANDSCAPE["left"] - LANDSCAPE["right"]
 #: The largest height of a figure, EMU: the text height (257 mm) less room for its
 #: caption (two lines) and the spaces around it.
 FIGURE_HEIGHT = Mm(210)
@@ -36,19 +43,22 @@ FIGURE_HEIGHT = Mm(210)
 LANGUAGES = {"en": "en-US", "ru": "ru-RU"}
 
 
-def set_page(section) -> None:
-    """A4 portrait with the margins of GOST 7.32; the footer 10 mm from the page's edge;
-    the first page (the title page) with a footer of its own (no page number)."""
-    section.page_width = PAGE["width"]
-    section.page_height = PAGE["height"]
-    section.left_margin = PAGE["left"]
-    section.right_margin = PAGE["right"]
-    section.top_margin = PAGE["top"]
-    section.bottom_margin = PAGE["bottom"]
+def set_page(section, *, landscape: bool = False, first: bool = True) -> None:
+    """A4 portrait with the margins of GOST 7.32 (or ``landscape``, see
+    :data:`LANDSCAPE`); the footer 10 mm from the page's edge; with ``first`` the first
+    page (the title page) has a footer of its own (no page number)."""
+    page = LANDSCAPE if landscape else PAGE
+    section.orientation = WD_ORIENT.LANDSCAPE if landscape else WD_ORIENT.PORTRAIT
+    section.page_width = page["width"]
+    section.page_height = page["height"]
+    section.left_margin = page["left"]
+    section.right_margin = page["right"]
+    section.top_margin = page["top"]
+    section.bottom_margin = page["bottom"]
     section.header_distance = Mm(10)
     section.footer_distance = Mm(10)
     section.gutter = 0
-    section.different_first_page_header_footer = True
+    section.different_first_page_header_footer = first
 
 
 def set_styles(document, lang: str) -> None:

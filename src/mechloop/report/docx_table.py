@@ -16,7 +16,7 @@ from docx.oxml.ns import nsdecls
 
 from mechloop.report.docx_ooxml import clean, runs_xml
 
-__all__ = ["column_widths", "is_number", "table_element", "text_em"]
+__all__ = ["column_widths", "fits", "is_number", "table_element", "text_em"]
 
 #: Font sizes tried for a table, points, largest first.
 SIZES = (12, 11, 10, 9, 8)
@@ -37,19 +37,49 @@ def is_number(text: str) -> bool:
 
 def text_em(text: str) -> float:
     """An estimate of the width of ``text`` in Times New Roman, in em (font sizes):
-    digits and lower-case letters half an em, capitals and wide letters 0.7, spaces and
-    punctuation 0.25."""
+    digits and most lower-case letters half an em, capitals 0.72, wide letters 0.9,
+    narrow letters, spaces and punctuation 0.28–0.33."""
     width = 0.0
     for char in text:
-        if char in " .,:;'!|()[]ilIfjt":
+        if char in " .,:;'!|ilIj":
             width += 0.28
-        elif char in "—…%@mwMWЖжШшЩщЮюМмФф":
+        elif char in "ft()[]-r/":
+            width += 0.34
+        elif char in "—…%@mwMWЖжШшЩщЮюМмФфы":
             width += 0.9
         elif char.isupper():
-            width += 0.7
+            width += 0.72
         else:
-            width += 0.5
+            width += 0.56 if char == "−" else 0.5
     return width
+
+
+def _measure(header: tuple[str, ...], rows: list[tuple[str, ...]]):
+    """Per column, the widths (em) of its longest unbreakable word and of its longest
+    line (the header in bold)."""
+    count = len(header)
+    words = [0.0] * count
+    lines = [0.0] * count
+    for k, name in enumerate(header):
+        for line in name.split("\n"):
+            words[k] = max(words[k], *(1.1 * text_em(w) for w in line.split() or [""]))
+            lines[k] = max(lines[k], 1.1 * text_em(line))
+    for row in rows:
+        for k, cell in enumerate(row):
+            for line in cell.split("\n"):
+                lines[k] = max(lines[k], text_em(line))
+                words[k] = max(words[k], *(text_em(w) for w in line.split() or [""]))
+    return words, lines
+
+
+#: The room a column needs beside its text: the cell's margins and the grid line, twips.
+PADDING = 2 * CELL_MARGIN + 20
+
+
+def fits(header: tuple[str, ...], rows: list[tuple[str, ...]], width: int) -> bool:
+    """Whether a table's longest words fit in ``width`` twips at the smallest size."""
+    words, _ = _measure(header, rows)
+    return sum(w * SIZES[-1] * 20 + PADDING for w in words) <= width
 
 
 def column_widths(header: tuple[str, ...], rows: list[tuple[str, ...]],
@@ -57,29 +87,17 @@ def column_widths(header: tuple[str, ...], rows: list[tuple[str, ...]],
     """The font size (points) and the column widths (twentieths of a point, summing to
     ``width``) of a table: the largest size of :data:`SIZES` at which every column holds
     its longest word; the columns then get their whole lines where the width allows,
-    the rest shared in proportion to what each still lacks."""
-    count = len(header)
-    words = [0.0] * count   # the longest unbreakable word, em
-    lines = [0.0] * count   # the longest line, em
-    for k, name in enumerate(header):
-        for line in name.split("\n"):
-            words[k] = max(words[k], *(1.05 * text_em(w) for w in line.split() or [""]))
-            lines[k] = max(lines[k], 1.05 * text_em(line))
-    for row in rows:
-        for k, cell in enumerate(row):
-            for line in cell.split("\n"):
-                em = text_em(line)
-                lines[k] = max(lines[k], em)
-                words[k] = max(words[k], *(text_em(w) for w in line.split() or [""]))
-    padding = 2 * CELL_MARGIN + 20
+    the rest shared in proportion to what each still lacks. (A table whose words do not
+    fit even at the smallest size gets widths in proportion to them: the words break.)"""
+    words, lines = _measure(header, rows)
     for size in SIZES:
-        least = [w * size * 20 + padding for w in words]
+        least = [w * size * 20 + PADDING for w in words]
         if sum(least) <= width:
             break
     else:
         scale = width / sum(least)
         return size, _whole([w * scale for w in least], width)
-    full = [max(a, line * size * 20 + padding) for a, line in zip(least, lines, strict=True)]
+    full = [max(a, line * size * 20 + PADDING) for a, line in zip(least, lines, strict=True)]
     if sum(full) <= width:
         spare = width - sum(full)
         total = sum(full)
@@ -96,17 +114,24 @@ def _whole(widths: list[float], total: int) -> list[int]:
     return whole
 
 
-def table_element(header: tuple[str, ...], rows: list[tuple[str, ...]], *, width: int,
-                  styles: dict[str, str]):
-    """The ``w:tbl`` element of a table with ``header`` and ``rows`` (cell texts),
-    ``width`` twentieths of a point wide; ``styles``: the style ids of 'grid' (the table
-    style), 'cell' and 'header' (paragraph styles)."""
+def cleaned(header: tuple[str, ...], rows: list[tuple[str, ...]]):
+    """The header and the rows with their texts :func:`clean`; ValueError for a row with
+    more cells than the header (a shorter one is filled with empty cells)."""
     header = tuple(clean(h) for h in header)
     rows = [tuple(clean(c) for c in row) for row in rows]
     for k, row in enumerate(rows):
         if len(row) > len(header):
             raise ValueError(f"row {k} of the table has {len(row)} cells, its header "
                              f"{len(header)}: {row!r}")
+    return header, rows
+
+
+def table_element(header: tuple[str, ...], rows: list[tuple[str, ...]], *, width: int,
+                  styles: dict[str, str]):
+    """The ``w:tbl`` element of a table with ``header`` and ``rows`` (cell texts),
+    ``width`` twentieths of a point wide; ``styles``: the style ids of 'grid' (the table
+    style), 'cell' and 'header' (paragraph styles)."""
+    header, rows = cleaned(header, rows)
     size, widths = column_widths(header, rows, width)
     rpr = "" if size == 12 else \
         f'<w:rPr><w:sz w:val="{2 * size}"/><w:szCs w:val="{2 * size}"/></w:rPr>'
