@@ -135,7 +135,8 @@ def test_figures_with_their_captions_below(written):
     for item, k in zip(figures, holders, strict=True):
         assert paragraphs[k + 1].text == caption(document, item)
         assert paragraphs[k + 1].style.name == "Caption"
-        assert paragraphs[k].paragraph_format.keep_with_next
+        assert paragraphs[k].style.paragraph_format.keep_with_next
+        assert paragraphs[k].style.name == "Figure"
     text_width = doc.sections[0].page_width - doc.sections[0].left_margin \
         - doc.sections[0].right_margin
     for shape in doc.inline_shapes:
@@ -266,13 +267,29 @@ def test_an_error_leaves_no_file(tmp_path):
     assert os.listdir(tmp_path) == ["report.docx"]
 
 
-def test_a_row_longer_than_the_header_is_refused(tmp_path):
+@pytest.mark.parametrize(("bad", "message"), [
+    (Table("bad", ("a", "b"), [("1", "2", "3")]), "row 0 of the table has 3 cells, its header 2"),
+    (Table("bad", (), []), "a table needs at least one column")])
+def test_a_malformed_table_is_refused(tmp_path, bad, message):
     base = sample_document("en", rows=3, columns=3)
-    bad = Table("bad", ("a", "b"), [("1", "2", "3")])
     document = dataclasses.replace(base, sections=[Section("Bad", [bad])])
-    with pytest.raises(ValueError, match="row 0 of the table has 3 cells, its header 2"):
+    with pytest.raises(ValueError, match=message):
         write_docx(document, tmp_path / "bad.docx")
     assert os.listdir(tmp_path) == []
+
+
+def test_a_short_row_and_an_empty_document(tmp_path):
+    base = sample_document("en", rows=3, columns=3)
+    short = Table("short", ("a", "b", "c"), [("1",), ()])
+    document = dataclasses.replace(base, sections=[Section("Short", [short])], appendices=[])
+    doc = docx.Document(str(write_docx(document, tmp_path / "short.docx")))
+    assert [[c.text for c in row.cells] for row in doc.tables[0].rows] == [
+        ["a", "b", "c"], ["1", "", ""], ["", "", ""]]
+    empty = dataclasses.replace(base, sections=[], appendices=[])
+    doc = docx.Document(str(write_docx(empty, tmp_path / "empty.docx")))
+    codes = [t.text.strip() for t in doc.element.body.iter(qn("w:instrText"))]
+    assert codes == ['TOC \\o "1-3" \\h \\z \\u']
+    assert not [p for p in doc.paragraphs if p.style.name.startswith("Heading")]
 
 
 def test_a_tall_figure_fits_the_page_with_its_caption(tmp_path):

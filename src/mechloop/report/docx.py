@@ -201,9 +201,6 @@ def _figure(doc, document: Document, item: Numbered) -> None:
         if pyplot is not None:
             pyplot.close(figure)
     picture.seek(0)
-    holder = doc.add_paragraph(style="Caption")
-    holder.paragraph_format.keep_with_next = True
-    holder.paragraph_format.space_before = Pt(12)
-    holder.paragraph_format.space_after = 0
+    holder = doc.add_paragraph(style="Figure")
     holder.add_run().add_picture(picture, width=Emu(int(width)))
     doc.add_paragraph(clean(caption(document, item)), style="Caption")

@@ -63,7 +63,8 @@ def set_page(section, *, landscape: bool = False, first: bool = True) -> None:
 
 def set_styles(document, lang: str) -> None:
     """Set the document defaults and the styles the writer uses: Normal, Heading 1–4,
-    Caption, TOC Heading, toc 1–3, Footer and its own 'Table Text', 'Table Header',
+    Caption, TOC Heading, toc 1–3, Footer and its own 'Figure' (the picture's
+    paragraph), 'Table Text', 'Table Header',
     'Warning', 'Formula' and 'Title Page'."""
     styles = document.styles
     language = LANGUAGES.get(lang, "en-US")
@@ -92,6 +93,7 @@ def set_styles(document, lang: str) -> None:
     _paragraph(contents, align=WD_ALIGN_PARAGRAPH.CENTER, spacing=1.0, first=0,
                after=Pt(12))
     contents.paragraph_format.page_break_before = True
+    contents.font.all_caps = True  # GOST 7.32: СОДЕРЖАНИЕ
     for level in range(1, 4):
         entry = _style(styles, f"toc {level}", WD_STYLE_TYPE.PARAGRAPH)
         entry.base_style = normal
@@ -103,6 +105,12 @@ def set_styles(document, lang: str) -> None:
     _font(caption, BODY_PT, bold=False)
     _paragraph(caption, align=WD_ALIGN_PARAGRAPH.CENTER, spacing=1.0, first=0,
                before=Pt(6), after=Pt(12))
+
+    picture = _style(styles, "Figure", WD_STYLE_TYPE.PARAGRAPH)
+    picture.base_style = normal
+    _paragraph(picture, align=WD_ALIGN_PARAGRAPH.CENTER, spacing=1.0, first=0,
+               before=Pt(12))
+    picture.paragraph_format.keep_with_next = True
 
     cell = _style(styles, "Table Text", WD_STYLE_TYPE.PARAGRAPH)
     cell.base_style = normal

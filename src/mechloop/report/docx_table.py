@@ -116,7 +116,10 @@ def _whole(widths: list[float], total: int) -> list[int]:
 
 def cleaned(header: tuple[str, ...], rows: list[tuple[str, ...]]):
     """The header and the rows with their texts :func:`clean`; ValueError for a row with
-    more cells than the header (a shorter one is filled with empty cells)."""
+    more cells than the header (a shorter one is filled with empty cells) and for a table
+    without columns."""
+    if not header:
+        raise ValueError("a table needs at least one column; its header is empty")
     header = tuple(clean(h) for h in header)
     rows = [tuple(clean(c) for c in row) for row in rows]
     for k, row in enumerate(rows):
