@@ -350,6 +350,9 @@ def test_a_table_too_wide_for_portrait_goes_on_landscape_pages(tmp_path):
     tables = [k for k, part in enumerate(body) if isinstance(part, docx.table.Table)]
     assert breaks[0] < tables[1] < tables[2] < breaks[1] < tables[3]  # both wide ones
     assert tables[0] < breaks[0]
+    for k in breaks:  # the empty paragraphs holding the breaks: 1 pt, never a page
+        assert body[k].text == ""
+        assert body[k].paragraph_format.line_spacing == docx.shared.Pt(1)
     # the headings above a wide table go with it onto the landscape page
     headings = [k for k, part in enumerate(body)
                 if isinstance(part, docx.text.paragraph.Paragraph)

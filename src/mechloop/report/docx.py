@@ -37,7 +37,7 @@ from mechloop.report.document import (
     numbered,
 )
 from mechloop.report.docx_front import bookmark, contents_page, page_numbers, title_page
-from mechloop.report.docx_ooxml import clean, set_settings
+from mechloop.report.docx_ooxml import clean, set_settings, shrink_mark
 from mechloop.report.docx_styles import (
     FIGURE_HEIGHT,
     LANDSCAPE_WIDTH,
@@ -103,6 +103,7 @@ def build_docx(document: Document, *, progress: Progress | None = None):
         block = item.block
         if wide != landscape:  # a table too wide for A4 portrait: on landscape pages
             set_page(doc.add_section(WD_SECTION.NEW_PAGE), landscape=wide, first=False)
+            shrink_mark(doc.element.body.findall(qn("w:p"))[-1])  # the break's paragraph
             landscape = wide
         if isinstance(block, Section):
             _heading(doc, document, item, marks[id(item)], k)

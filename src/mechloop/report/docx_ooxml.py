@@ -108,6 +108,25 @@ def paragraph_border(ppr, *, size_eighths: int = 8, space_pt: int = 4,
         _insert_ordered(ppr, shading, _PPR_ORDER)
 
 
+def shrink_mark(p) -> None:
+    """Make the empty paragraph ``p`` (a ``w:p``, e.g. the one holding a section break)
+    one point high, so that it never spills onto a page of its own."""
+    ppr = p.get_or_add_pPr()
+    for old in ppr.findall(qn("w:spacing")) + ppr.findall(qn("w:rPr")):
+        ppr.remove(old)
+    spacing = OxmlElement("w:spacing")
+    for key, value in (("w:before", "0"), ("w:after", "0"), ("w:line", "20"),
+                       ("w:lineRule", "exact")):
+        spacing.set(qn(key), value)
+    _insert_ordered(ppr, spacing, _PPR_ORDER)
+    rpr = OxmlElement("w:rPr")
+    for tag in ("w:sz", "w:szCs"):
+        size = OxmlElement(tag)
+        size.set(qn("w:val"), "2")
+        rpr.append(size)
+    _insert_ordered(ppr, rpr, _PPR_ORDER)
+
+
 def set_language(rpr, lang: str) -> None:
     """Set the proofing language of the run properties ``rpr`` (``w:rPr``) to ``lang``
     (a tag as 'ru-RU'), for Latin and Cyrillic text alike."""
