@@ -172,6 +172,9 @@ def test_contents_and_page_number_fields(written):
     update = settings.find(qn("w:updateFields"))
     assert update is not None and update.get(qn("w:val")) == "true"
     assert settings.find(qn("w:proofState")) is None  # Word checks the spelling itself
+    parts = [str(part.partname) for part in doc.part.package.iter_parts()]
+    assert "/word/styles.xml" in parts
+    assert not [p for p in parts if "stylesWithEffects" in p]  # one set of styles: ours
     section = doc.sections[0]
     assert section.different_first_page_header_footer
     footer = [t.text.strip() for t in section.footer._element.iter(qn("w:instrText"))]

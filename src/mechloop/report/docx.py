@@ -76,6 +76,9 @@ def build_docx(document: Document, *, progress: Progress | None = None):
     section = doc.sections[0]
     set_page(section)
     set_styles(doc, document.lang)
+    for rid, rel in list(doc.part.rels.items()):  # Word 2010's copy of the template's
+        if rel.reltype.endswith("/stylesWithEffects"):  # styles: it would not be ours
+            doc.part.rels.pop(rid)
     settings = doc.settings.element
     for proof in settings.findall(qn("w:proofState")):  # the template says "checked"
         settings.remove(proof)

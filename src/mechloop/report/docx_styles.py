@@ -62,7 +62,7 @@ def set_page(section, *, landscape: bool = False, first: bool = True) -> None:
 
 
 def set_styles(document, lang: str) -> None:
-    """Set the document defaults and the styles the writer uses: Normal, Heading 1–4,
+    """Set the document defaults and the styles the writer uses: Normal, Heading 1–9,
     Caption, TOC Heading, toc 1–3, Footer and its own 'Figure' (the picture's
     paragraph), 'Table Text', 'Table Header',
     'Warning', 'Formula' and 'Title Page'."""
@@ -78,7 +78,7 @@ def set_styles(document, lang: str) -> None:
     _paragraph(normal, align=WD_ALIGN_PARAGRAPH.JUSTIFY, spacing=1.5, first=INDENT)
     normal.paragraph_format.widow_control = True
 
-    for level in range(1, 5):
+    for level in range(1, 10):
         style = styles[f"Heading {level}"]
         _font(style, BODY_PT + (2 if level == 1 else 0), bold=True)
         _paragraph(style, align=WD_ALIGN_PARAGRAPH.LEFT, spacing=1.0, first=INDENT,
