@@ -140,6 +140,10 @@ def test_figures_with_their_captions_below(written):
     text_width = doc.sections[0].page_width - doc.sections[0].left_margin \
         - doc.sections[0].right_margin
     for shape in doc.inline_shapes:
+        image = doc.part.related_parts[shape._inline.graphic.graphicData.pic.blipFill
+                                       .blip.embed].image
+        assert image.content_type == "image/png"
+        assert image.px_width / (shape.width / 914400) == pytest.approx(200, rel=0.01)
         assert shape.width <= text_width + 1000
         assert shape.height <= docx.shared.Mm(210) + 1
     # the wide figure fills the text width; the tall one is as high as allowed
