@@ -27,7 +27,7 @@ from mechloop.report.document import (
     walk,
 )
 from mechloop.report.docx import write_docx
-from mechloop.report.docx_table import column_widths, is_number, text_em
+from mechloop.report.docx_table import column_widths, is_number, numeric_columns, text_em
 
 W = qn("w:t")
 
@@ -313,9 +313,17 @@ def test_a_tall_figure_fits_the_page_with_its_caption(tmp_path):
     ("12", True), ("−12.25", True), ("-0.5", True), ("+3", True), ("1,5", True),
     ("1.5e-3", True), ("2.0E+06", True), ("1 234.5", True), ("12%", True), (".5", True),
     ("", False), ("r3", False), ("1-2", False), ("—", False), ("12 mm", False),
-    ("argument", False), ("1.2.3", False)])
+    ("argument", False), ("1.2.3", False), ("0 … 360", True), ("342.54 … 371.54", True),
+    ("−5...5", True), ("10–20", True), ("0 … r3", False), ("… 5", False)])
 def test_numbers_are_recognised(text, number):
     assert is_number(text) is number
+
+
+def test_numbers_are_right_aligned_in_columns_of_numbers():
+    rows = [("1", "crank", "0.05", "x"), ("2", "rod", "0 … 360", "1, 4"),
+            ("3", "12", "", "text"), ("", "guide", "−3", "more text")]
+    assert numeric_columns(rows, 4) == [True, False, True, False]
+    assert numeric_columns([], 2) == [False, False]
 
 
 def test_columns_fit_the_width_and_hold_their_longest_words():

@@ -1,5 +1,6 @@
 """A report table as a Word table: the grid style, the header row bold and repeated on
-every page the table runs onto, rows never split across pages, numbers right-aligned, the
+every page the table runs onto, rows never split across pages, numbers right-aligned
+(:func:`numeric_columns`), the
 columns fitted to the text width and the font made smaller (12 pt down to 8 pt) only as far
 as the longest unbreakable words need.
 
@@ -16,23 +17,40 @@ from docx.oxml.ns import nsdecls
 
 from mechloop.report.docx_ooxml import clean, runs_xml
 
-__all__ = ["column_widths", "fits", "is_number", "table_element", "text_em"]
+__all__ = ["cleaned", "column_widths", "fits", "is_number", "numeric_columns", "table_element",
+           "text_em"]
 
 #: Font sizes tried for a table, points, largest first.
 SIZES = (12, 11, 10, 9, 8)
 #: Left and right margin inside a cell, twentieths of a point (1.5 mm).
 CELL_MARGIN = 85
 
-_NUMBER = re.compile(r"[+-]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][+-]?\d+)?%?")
+_ONE = r"[+-]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][+-]?\d+)?%?"
+#: One number, or a range of two ('0 … 360', '0.15...0.25', '10–20').
+_NUMBER = re.compile(rf"{_ONE}(?:(?:…|\.\.\.?|–){_ONE})?")
 _SPACES = re.compile(r"[\s\u00a0\u2009\u202f]")
 
 
 def is_number(text: str) -> bool:
     """Whether a cell's ``text`` is one number (with a sign '-', '+' or the Unicode minus
     '−', a decimal point or comma, an exponent, thin spaces between digit groups, a
-    trailing '%'); such cells are right-aligned."""
+    trailing '%') or a range of two ('0 … 360')."""
     text = _SPACES.sub("", text.replace("−", "-"))
     return bool(_NUMBER.fullmatch(text))
+
+
+def numeric_columns(rows: list[tuple[str, ...]], count: int) -> list[bool]:
+    """Per column, whether its numbers are right-aligned: when at least half of its
+    non-empty cells are numbers (:func:`is_number`); in a column of words a number stays
+    left-aligned with them."""
+    numbers = [0] * count
+    filled = [0] * count
+    for row in rows:
+        for k, cell in enumerate(row):
+            if cell.strip():
+                filled[k] += 1
+                numbers[k] += is_number(cell)
+    return [2 * n >= f > 0 for n, f in zip(numbers, filled, strict=True)]
 
 
 def text_em(text: str) -> float:
@@ -146,21 +164,24 @@ def table_element(header: tuple[str, ...], rows: list[tuple[str, ...]], *, width
              '<w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" w:firstColumn="0" '
              'w:lastColumn="0" w:noHBand="1" w:noVBand="1"/></w:tblPr>'
              f"<w:tblGrid>{grid}</w:tblGrid>"]
-    parts.append(_row(header, widths, styles["header"], rpr, header=True))
+    parts.append(_row(header, widths, styles["header"], rpr, None))
+    right = numeric_columns(rows, len(header))
     for row in rows:
         cells = tuple(row) + ("",) * (len(header) - len(row))
-        parts.append(_row(cells[:len(header)], widths, styles["cell"], rpr, header=False))
+        parts.append(_row(cells, widths, styles["cell"], rpr, right))
     parts.append("</w:tbl>")
     return parse_xml("".join(parts))
 
 
-def _row(cells: tuple[str, ...], widths: list[int], style: str, rpr: str, *,
-         header: bool) -> str:
-    trpr = "<w:trPr><w:cantSplit/><w:tblHeader/></w:trPr>" if header else \
+def _row(cells: tuple[str, ...], widths: list[int], style: str, rpr: str,
+         right: list[bool] | None) -> str:
+    """A row's XML; ``right``: per column, whether its numbers are right-aligned; None
+    for the header row (repeated on every page, centred by its style)."""
+    trpr = "<w:trPr><w:cantSplit/><w:tblHeader/></w:trPr>" if right is None else \
         "<w:trPr><w:cantSplit/></w:trPr>"
     out = [f"<w:tr>{trpr}"]
-    for text, width in zip(cells, widths, strict=True):
-        align = '<w:jc w:val="right"/>' if not header and is_number(text) else ""
+    for k, (text, width) in enumerate(zip(cells, widths, strict=True)):
+        align = '<w:jc w:val="right"/>' if right and right[k] and is_number(text) else ""
         out.append(f'<w:tc><w:tcPr><w:tcW w:w="{width}" w:type="dxa"/></w:tcPr>'
                    f'<w:p><w:pPr><w:pStyle w:val="{style}"/>{align}</w:pPr>'
                    f"{runs_xml(text, rpr) if text else ''}</w:p></w:tc>")
