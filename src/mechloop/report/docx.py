@@ -22,7 +22,7 @@ import docx
 from docx.enum.section import WD_SECTION
 from docx.enum.text import WD_ALIGN_PARAGRAPH
 from docx.oxml.ns import qn
-from docx.shared import Emu, Pt
+from docx.shared import Emu, Length, Pt
 
 from mechloop.output.atomic import atomic_file
 from mechloop.report.document import (
@@ -128,7 +128,7 @@ def _landscape(items: list[Numbered]) -> list[bool]:
     text width even at the smallest font, and the headings just above it (a heading
     stays with its table)."""
     out = [isinstance(item.block, Table)
-           and not fits(*cleaned(item.block.header, item.block.rows), int(TEXT_WIDTH / 635))
+           and not fits(*cleaned(item.block.header, item.block.rows), TEXT_WIDTH.twips)
            for item in items]
     for k in range(len(items) - 2, -1, -1):
         if isinstance(items[k].block, Section) and out[k + 1]:
@@ -176,17 +176,16 @@ def _paragraph(doc, block: Paragraph, *, space_before: bool) -> None:
         paragraphs[0].paragraph_format.space_before = Pt(12)
 
 
-def _table(doc, document: Document, item: Numbered, ids: dict[str, str], width) -> None:
-    """The caption above the table (kept with it), then the table ``width`` (EMU)
-    wide."""
+def _table(doc, document: Document, item: Numbered, ids: dict[str, str],
+           width: Length) -> None:
+    """The caption above the table (kept with it), then the table ``width`` wide."""
     table: Table = item.block
     line = doc.add_paragraph(clean(caption(document, item)), style="Caption")
     line.alignment = WD_ALIGN_PARAGRAPH.LEFT
     line.paragraph_format.keep_with_next = True
     line.paragraph_format.space_before = Pt(12)
     line.paragraph_format.space_after = Pt(3)
-    element = table_element(table.header, table.rows, width=int(width / 635),
-                            styles=ids)
+    element = table_element(table.header, table.rows, width=width.twips, styles=ids)
     line._p.addnext(element)
 
 
@@ -196,8 +195,8 @@ def _figure(doc, document: Document, item: Numbered) -> None:
     figure = item.block.draw()
     try:
         inches_w, inches_h = figure.get_size_inches()
-        width = min(float(TEXT_WIDTH), float(FIGURE_HEIGHT) * inches_w / inches_h)
-        dpi = DPI * width / 914400 / inches_w
+        width = Emu(int(min(TEXT_WIDTH, FIGURE_HEIGHT * inches_w / inches_h)))
+        dpi = DPI * width.inches / inches_w
         picture = io.BytesIO()
         figure.savefig(picture, format="png", dpi=dpi, facecolor="white")
     finally:
@@ -206,5 +205,5 @@ def _figure(doc, document: Document, item: Numbered) -> None:
             pyplot.close(figure)
     picture.seek(0)
     holder = doc.add_paragraph(style="Figure")
-    holder.add_run().add_picture(picture, width=Emu(int(width)))
+    holder.add_run().add_picture(picture, width=width)
     doc.add_paragraph(clean(caption(document, item)), style="Caption")

@@ -14,7 +14,7 @@ from docx.enum.section import WD_ORIENT
 from docx.enum.style import WD_STYLE_TYPE
 from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_LINE_SPACING, WD_TAB_ALIGNMENT, WD_TAB_LEADER
 from docx.oxml.ns import qn
-from docx.shared import Mm, Pt, RGBColor
+from docx.shared import Emu, Mm, Pt, RGBColor
 
 from mechloop.report.docx_ooxml import paragraph_border, set_fonts, set_language
 
@@ -33,10 +33,10 @@ PAGE = dict(width=Mm(210), height=Mm(297), left=Mm(30), right=Mm(15), top=Mm(20)
 #: is the one bound with the portrait pages' left edge.
 LANDSCAPE = dict(width=Mm(297), height=Mm(210), left=Mm(20), right=Mm(20), top=Mm(30),
                  bottom=Mm(20))
-#: The width of the text between the margins, EMU.
-TEXT_WIDTH = PAGE["width"] - PAGE["left"] - PAGE["right"]
-LANDSCAPE_WIDTH = LANDSCAPE["width"] - LANDSCAPE["left"] - LANDSCAPE["right"]
-#: The largest height of a figure, EMU: the text height (257 mm) less room for its
+#: The width of the text between the margins.
+TEXT_WIDTH = Emu(PAGE["width"] - PAGE["left"] - PAGE["right"])
+LANDSCAPE_WIDTH = Emu(LANDSCAPE["width"] - LANDSCAPE["left"] - LANDSCAPE["right"])
+#: The largest height of a figure: the text height (257 mm) less room for its
 #: caption (two lines) and the spaces around it.
 FIGURE_HEIGHT = Mm(210)
 #: The proofing language of each document language.
