@@ -137,6 +137,8 @@ def test_figures_with_their_captions_below(written):
         assert paragraphs[k + 1].style.name == "Caption"
         assert paragraphs[k].style.paragraph_format.keep_with_next
         assert paragraphs[k].style.name == "Figure"
+        assert paragraphs[k]._p.find(f".//{qn('wp:docPr')}").get("descr") == \
+            caption(document, item)
     text_width = doc.sections[0].page_width - doc.sections[0].left_margin \
         - doc.sections[0].right_margin
     for shape in doc.inline_shapes:

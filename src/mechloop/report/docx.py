@@ -205,5 +205,7 @@ def _figure(doc, document: Document, item: Numbered) -> None:
             pyplot.close(figure)
     picture.seek(0)
     holder = doc.add_paragraph(style="Figure")
-    holder.add_run().add_picture(picture, width=width)
-    doc.add_paragraph(clean(caption(document, item)), style="Caption")
+    shape = holder.add_run().add_picture(picture, width=width)
+    text = clean(caption(document, item))
+    shape._inline.docPr.set("descr", text)  # the alternative text: what it shows
+    doc.add_paragraph(text, style="Caption")
