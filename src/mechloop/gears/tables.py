@@ -9,6 +9,7 @@ import pandas as pd
 from mechloop.gears.pair import GearPair
 from mechloop.gears.planetary import PlanetaryTrain
 from mechloop.gears.tooth_search import Choice
+from mechloop.gears.wolfrom import WolfromTrain
 
 
 def pair_table(pair: GearPair) -> pd.DataFrame:
@@ -91,14 +92,34 @@ def thickness_table(pair: GearPair, diameters: list[float]) -> pd.DataFrame:
                                        "chord s̄_y [mm]", "height h̄_y [mm]"])
 
 
-def train_table(train: PlanetaryTrain, speed_rpm: float) -> pd.DataFrame:
+def train_table(train: PlanetaryTrain | WolfromTrain, speed_rpm: float) -> pd.DataFrame:
     """The analysis of one train: ratio, conditions and the speeds of its members."""
+    if isinstance(train, WolfromTrain):
+        return wolfrom_table(train, speed_rpm)
     speeds = train.speeds(speed_rpm * np.pi / 30.0)
+    i, o, held = train.driver, train.output, train.fixed
     rows = [("Willis ratio i_ab^h", train.willis, ""),
-            ("reduction ratio i_ah = ω_a/ω_h (b fixed)", train.ratio, ""),
+            (f"ratio i_{i}{o} = ω_{i}/ω_{o} ({held} fixed)", train.ratio, ""),
             ("centre distance of the planets a_w", train.a_w, "mm"),
             ("coaxial (both rows at a_w)", float(train.coaxial), "1 = yes"),
             ("assembly number (whole: the planets fit)", train.assembly, ""),
+            ("clearance between neighbouring planets", train.neighbour_margin, "mm")]
+    rows += [(f"speed of {key}", value * 30.0 / np.pi, "rpm") for key, value in speeds.items()]
+    return pd.DataFrame(rows, columns=["quantity", "value", "unit"])
+
+
+def wolfrom_table(train: WolfromTrain, speed_rpm: float) -> pd.DataFrame:
+    """The analysis of a Wolfrom train: both stages' ratios, the overall ratio, the
+    conditions and the speeds of its members."""
+    speeds = train.speeds(speed_rpm * np.pi / 30.0)
+    first, second = train.assembly
+    rows = [("first stage i_ah = 1 + z_b/z_a", train.carrier_ratio, ""),
+            ("second stage, Willis i_be^h = z_b z_f/(z_g z_e)", train.willis_be, ""),
+            ("ratio i_ae = ω_a/ω_e (b fixed)", train.ratio, ""),
+            ("centre distance of the planets a_w", train.a_w, "mm"),
+            ("coaxial (all three meshes at a_w)", float(train.coaxial), "1 = yes"),
+            ("assembly number (z_a + z_b)/k (whole: fits)", first, ""),
+            ("assembly number (z_e z_g − z_b z_f)/(k gcd) (whole: fits)", second, ""),
             ("clearance between neighbouring planets", train.neighbour_margin, "mm")]
     rows += [(f"speed of {key}", value * 30.0 / np.pi, "rpm") for key, value in speeds.items()]
     return pd.DataFrame(rows, columns=["quantity", "value", "unit"])

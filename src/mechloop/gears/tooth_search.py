@@ -21,8 +21,9 @@ from mechloop.gears.planetary import (
     PlanetaryTrain,
     Scheme,
     assembles,
+    member_ratio,
     neighbour_margin,
-    reduction_ratio,
+    willis_ratio,
 )
 
 #: Most grid points tried in one choice (about 1.7 M: teeth 17 to 136 in a two-row scheme).
@@ -46,6 +47,8 @@ class Choice:
     size: np.ndarray
     margin: np.ndarray
     tried: int
+    fixed: str = "b"
+    driver: str = "a"
 
     def __len__(self) -> int:
         return int(self.z_a.size)
@@ -53,14 +56,17 @@ class Choice:
     def train(self, i: int = 0, m_n: float = 1.0, ha: float = 1.0) -> PlanetaryTrain:
         """Design ``i`` (0: the best) as a :class:`PlanetaryTrain`."""
         return PlanetaryTrain(self.scheme, int(self.z_a[i]), int(self.z_g[i]),
-                              int(self.z_f[i]), int(self.z_b[i]), self.k, m_n, ha)
+                              int(self.z_f[i]), int(self.z_b[i]), self.k, m_n, ha,
+                              self.fixed, self.driver)
 
 
 def choose_teeth(scheme: Scheme, target: float, k: int, *, teeth_min: int = 17,
                  teeth_max: int = 120, ring_difference_min: int = 8,
-                 tolerance: float = 0.01, ha: float = 1.0) -> Choice:
-    """All designs of ``scheme`` with ``k`` planets whose ratio ``i_ah`` is within
-    ``tolerance`` (relative) of ``target``, best first (see the module's docstring)."""
+                 tolerance: float = 0.01, ha: float = 1.0, fixed: str = "b",
+                 driver: str = "a") -> Choice:
+    """All designs of ``scheme`` with ``k`` planets whose ratio (``i_ah`` by default;
+    ``ω_driver/ω_output`` with ``fixed`` held) is within ``tolerance`` (relative) of
+    ``target``, best first (see the module's docstring)."""
     if teeth_max < teeth_min:
         raise HintedError(f"teeth_max {teeth_max} is below teeth_min {teeth_min}",
                           "raise teeth_max")
@@ -84,7 +90,8 @@ def choose_teeth(scheme: Scheme, target: float, k: int, *, teeth_min: int = 17,
         ok &= z_a - z_g >= ring_difference_min
     if scheme.sigma_b == -1:
         ok &= z_b - z_f >= ring_difference_min
-    ratio = np.where(ok, reduction_ratio(scheme, z_a, z_g, z_f, np.maximum(z_b, 1)), np.nan)
+    ratio = np.where(ok, member_ratio(willis_ratio(scheme, z_a, z_g, z_f, np.maximum(z_b, 1)),
+                                      fixed, driver), np.nan)
     error = np.abs(ratio - target) / abs(target) if target != 0 else np.abs(ratio)
     ok &= np.where(ok, error, np.inf) <= tolerance
     ok &= assembles(scheme, z_a, z_g, z_f, np.maximum(z_b, 1), k)
@@ -100,4 +107,4 @@ def choose_teeth(scheme: Scheme, target: float, k: int, *, teeth_min: int = 17,
     order = np.lexsort((z_a + z_g + z_f + z_b, size, np.round(err, 12)))
     return Choice(scheme, int(k), float(target), z_a[order], z_g[order], z_f[order],
                   z_b[order], ratio[keep][order], err[order], size[order],
-                  margin[keep][order], int(n ** (3 if scheme.double else 2)))
+                  margin[keep][order], int(n ** (3 if scheme.double else 2)), fixed, driver)

@@ -14,6 +14,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
+from mechloop.errors import HintedError
 from mechloop.gears.planetary import PlanetaryTrain
 
 
@@ -35,6 +36,10 @@ def vector_model(train: PlanetaryTrain, *, turns: float = 1.0, positions: int = 
                  name: str | None = None) -> dict[str, Any]:
     """The plain data of a vector model of ``train`` (mm, degrees): ``a`` turns ``turns``
     times under a cycloidal law over ``positions`` positions in 1 s."""
+    if (train.fixed, train.driver) != ("b", "a"):
+        raise HintedError(f"the vector model is written with a driving and b fixed; this "
+                          f"train holds {train.fixed} and drives {train.driver}",
+                          "drop --model, or write the train with fixed: b, input: a")
     carrier, planet = train_ratios(train)
     radii = train.pitch_radii()
     teeth = "/".join(f"{k}{v}" for k, v in train.teeth.items())

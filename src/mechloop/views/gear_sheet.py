@@ -62,6 +62,12 @@ def load_gears(path: str | os.PathLike[str]) -> GearTask:
     spec = doc.planetary
     if spec is not None:
         train = train_of(spec, file=file, lines=lines)
+        if spec.scheme == "wolfrom" or (spec.fixed, spec.input) != ("b", "a"):
+            raise located_error([Problem(("planetary", "scheme"), "the gear sheet of the "
+                                         "report shows a 2K-H train driven by a with b "
+                                         "fixed", "analyse this train with mechloop gear "
+                                         "planetary; give the report a 2K-H train")],
+                                file, lines)
         if train is None:  # the best design of the choice for the target ratio
             choice = choice_of(spec, file=file, lines=lines)
             if not len(choice):
