@@ -8,7 +8,8 @@ sun, the ring fixed, the carrier the output; sun 21 teeth, 3 planets, ring 108 t
 normal module 1.75 mm, helix angle 0, normal angle 20°, addendum 1.00 and bottom clearance
 0.25 of the module; results: planets 43 teeth, transmission ratio 6.14286, centre distance
 56.8 mm, addendum modification coefficients sun 0.4380, planet 0.0426, ring 0.0000;
-reference diameters 36.7500 / 75.2500 mm, tip diameters sun 41.7008, planet 78.8170 mm.
+reference diameters 36.7500 / 75.2500 mm, tip diameters sun 41.7008, planet 78.8170 mm,
+teeth in a span sun 3, planet 5, base tangent length sun 13.9546, planet 24.3530 mm.
 
 What agrees and why not all of it at once: the program rounds the centre distance to
 56.8 mm and prints the shifts to 4 decimals.  The planet's shift is what that centre
@@ -42,6 +43,8 @@ A_PRINTED = 56.8                      # mm, printed to 1 decimal
 RATIO = 6.14286
 D = (36.7500, 75.2500)
 D_A = (41.7008, 78.8170)
+K_SPAN = (3, 5)
+W_K = (13.9546, 24.3530)
 
 
 def test_the_sun_planet_pair_from_its_printed_shifts():
@@ -69,6 +72,39 @@ def test_the_pair_from_the_printed_centre_distance_agrees_to_every_printed_digit
     for x_sun in (0.438004, 0.438016):
         sun = gear_pair(M_N, (Z_SUN, Z_PLANET), ALPHA, a=A_PRINTED, x1=x_sun)
         assert tuple(np.round(sun.d_a, 4)) != D_A
+
+
+def test_the_printed_span_measurements():
+    pair = gear_pair(M_N, (Z_SUN, Z_PLANET), ALPHA, a=A_PRINTED, x1=X_SUN)
+    assert tuple(pair.k_span) == K_SPAN
+    assert tuple(np.round(pair.W_k, 4)) == W_K        # both to every printed digit
+    # the planet's printed W_k, like its tip, is that of the shift a = 56.8 leaves: the
+    # printed 0.0426 itself gives 24.35295, which rounds to 24.3529
+    printed = gear_pair(M_N, (Z_SUN, Z_PLANET), ALPHA, x=(X_SUN, X_PLANET))
+    assert round(float(printed.W_k[1]), 4) == 24.3529
+
+
+def test_the_span_is_the_caliper_width_over_the_generated_teeth():
+    """W_k measured on the teeth the basic rack generates (mechloop.gears.generation, not
+    the W_k formula): turn the k teeth symmetric about the x axis; the caliper's jaw, a
+    blade entering the space beyond the top tooth, touches that tooth's outer involute
+    flank (above the form circle, where the fillet begins) at its highest point."""
+    from mechloop.gears.generation import generate_tooth
+
+    pair = gear_pair(M_N, (Z_SUN, Z_PLANET), ALPHA, a=A_PRINTED, x1=X_SUN)
+    for i in range(2):
+        z, k = pair.z[i], int(pair.k_span[i])
+        tooth = generate_tooth(M_N, z, ALPHA, pair.x[i], d_a=float(pair.d_a[i]),
+                               radii=4000)
+        top = (k - 1) / 2 * 2 * np.pi / z            # the top tooth's centre line
+        flank = tooth.rho >= pair.d_Ff[i] / 2
+        heights = tooth.rho[flank] * np.sin(top + tooth.psi[flank])
+        j = int(np.argmax(heights))
+        assert 0 < j < heights.size - 1               # touches the flank, not its ends
+        assert 2 * heights[j] == pytest.approx(float(pair.W_k[i]), abs=5e-6)
+        # and W_k = (k − 1) p_b + s_b along the base circle
+        assert float(pair.W_k[i]) == pytest.approx((k - 1) * pair.p_b + float(pair.s_b[i]),
+                                                    rel=1e-13)
 
 
 def test_the_tips_are_shortened_to_keep_the_bottom_clearance():

@@ -37,6 +37,8 @@ def pair_table(pair: GearPair) -> pd.DataFrame:
         ("tooth thickness, tip circle", "s_a", pair.s_a, "mm"),
         ("chordal thickness, reference circle", "s̄", chord, "mm"),
         ("chordal height, reference circle", "h̄", chord_height, "mm"),
+        ("teeth in the span", "k", pair.k_span, ""),
+        ("base tangent length (span)", "W_k", pair.W_k, "mm"),
         ("tip clearance", "c", pair.tip_clearances, "mm"),
     ]
     g_a, g_e = pair.active_line

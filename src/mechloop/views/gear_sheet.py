@@ -183,6 +183,8 @@ QUANTITIES_RU: dict[str, str] = {
     "tooth thickness, tip circle": "толщина зуба по окружности вершин",
     "chordal thickness, reference circle": "толщина зуба по хорде делительной окружности",
     "chordal height, reference circle": "высота до хорды делительной окружности",
+    "teeth in the span": "число охватываемых зубьев",
+    "base tangent length (span)": "длина общей нормали",
     "tip clearance": "радиальный зазор",
     "module": "модуль",
     "pressure angle": "угол профиля исходного контура",
