@@ -178,9 +178,14 @@ def test_james_and_wolfrom_examples_print_their_ratios_and_draw_their_plans(tmp_
     assert frame.loc["ratio i_bh = ω_b/ω_h (a fixed)", "value"] == pytest.approx(1.25)
     assert frame.loc["speed of a", "value"] == 0.0
     assert frame.loc["speed of h", "value"] == pytest.approx(1200 / 1.25)
+    model = tmp_path / "james.yaml"
     result = run("gear", "planetary", str(GEARS / "james_sun_fixed.yaml"), "--model",
-                 str(tmp_path / "m.yaml"))
-    assert result.exit_code == 2 and "b fixed" in result.output
+                 str(model))
+    assert result.exit_code == 0, result.output
+    frame = solve(mechloop.load_model(model)).to_frame()
+    turn = frame["a8 [deg]"].to_numpy()               # the ring b drives (argument 1)
+    assert "a1 [deg]" not in frame                    # the sun is held: a constant angle
+    assert np.allclose(frame["a2 [deg]"].to_numpy()[1:] / turn[1:], 1 / 1.25, rtol=1e-12)
 
 
 def test_the_report_gear_sheet_refuses_what_it_does_not_draw(tmp_path):

@@ -221,3 +221,39 @@ def test_a_wolfrom_train_whose_output_cannot_turn_is_refused():
         wolfrom_train({"a": 20, "g": 20, "f": 20, "b": 60, "e": 60}, 3)
     with pytest.raises(HintedError, match="missing e"):
         wolfrom_train({"a": 20, "g": 20, "f": 20, "b": 60}, 3)
+
+
+@pytest.mark.parametrize("fixed, driver", FIXINGS)
+def test_the_written_vector_model_of_any_held_member_rolls_without_slip(fixed, driver):
+    from mechloop.gears.vector_model import vector_model
+    from mechloop.model.load import model_from_data
+    from mechloop.solve.kinematics import solve
+
+    train = planetary_train("double_planet", {"a": 18, "g": 54, "f": 27, "b": 99}, 3,
+                            m_n=2.0, fixed=fixed, driver=driver)
+    results = solve(model_from_data(vector_model(train, positions=40)))
+    assert not results.broken.any()
+    frame = results.to_frame()
+
+    def rate(vector: int) -> np.ndarray:   # a held member's angle is a constant
+        column = f"da{vector} [rad/s]"
+        return frame[column].to_numpy() if column in frame else np.zeros(len(frame))
+
+    w_a, w_h, w_g = rate(1), rate(2), rate(3)
+    w_in = {"a": w_a, "h": w_h, "b": rate(8)}[driver]
+    w_b = w_in if driver == "b" else w_in * train.speeds(1.0)["b"]
+    r = train.pitch_radii()
+    y_a, y_b = train.a_w - r["g"], train.a_w + r["f"]     # sun a, ring b
+    scale = np.abs(w_in).max() * r["b"]
+    assert scale > 0
+    # the planet's points at both meshes move with the central gears' pitch points
+    assert np.max(np.abs(w_h * train.a_w + w_g * (y_a - train.a_w) - w_a * y_a)) \
+        < 1e-10 * scale
+    assert np.max(np.abs(w_h * train.a_w + w_g * (y_b - train.a_w) - w_b * y_b)) \
+        < 1e-10 * scale
+    # the held member stands, the output turns 1/ratio of the driver
+    held = {"a": w_a, "h": w_h, "b": w_b}[fixed]
+    assert np.max(np.abs(held)) < 1e-12 * scale
+    out = {"a": w_a, "h": w_h, "b": w_b}[train.output]
+    moving = np.abs(w_in) > 1e-9 * np.abs(w_in).max()
+    assert np.allclose(out[moving] / w_in[moving], 1 / train.ratio, rtol=1e-10)
