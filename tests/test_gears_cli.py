@@ -198,3 +198,16 @@ def test_the_report_gear_sheet_refuses_what_it_does_not_draw(tmp_path):
             load_gears(GEARS / name)
         assert key in str(caught.value)
     assert load_gears(GEARS / "planetary_reducer.yaml").train.ratio == 5.0
+
+
+def test_a_wolfrom_train_chosen_for_a_target_ratio(tmp_path):
+    path, table = tmp_path / "w.yaml", tmp_path / "designs.csv"
+    path.write_text("planetary:\n  scheme: wolfrom\n  planets: 3\n  target_ratio: 64\n"
+                    "  search: {teeth_min: 12, teeth_max: 90, show: 4}\n", encoding="utf-8")
+    result = run("gear", "planetary", str(path), "-o", str(table))
+    assert result.exit_code == 0, result.output
+    designs = pd.read_csv(table)
+    assert list(designs.columns[:6]) == ["a", "g", "f", "b", "e", "i_ae"]
+    assert designs.iloc[0, :5].tolist() == [15, 24, 21, 63, 60]
+    assert len(designs) == 4 and (designs["error [%]"] <= 1).all()
+    assert "ratio i_ae = ω_a/ω_e (b fixed)" in result.output

@@ -129,7 +129,7 @@ def test_the_wolfrom_example_train():
     assert 1 - Fraction(63 * 21, 24 * 60) == Fraction(117, 1440)
     assert (Fraction(26, 5) / Fraction(117, 1440)) == 64
     assert train.carrier_ratio == pytest.approx(5.2, rel=1e-15)
-    assert train.ratio == pytest.approx(64.0, rel=1e-14)
+    assert train.ratio == 64.0                        # exact: one division of integers
     assert train.coaxial and train.assembles and train.assembly == (26.0, 13.0)
     assert train.a_w == pytest.approx(1.5 * 39 / 2)
     assert train.neighbour_margin == pytest.approx(1.5 * (39 * math.sin(math.pi / 3) - 26))
@@ -257,3 +257,38 @@ def test_the_written_vector_model_of_any_held_member_rolls_without_slip(fixed, d
     out = {"a": w_a, "h": w_h, "b": w_b}[train.output]
     moving = np.abs(w_in) > 1e-9 * np.abs(w_in).max()
     assert np.allclose(out[moving] / w_in[moving], 1 / train.ratio, rtol=1e-10)
+
+
+def test_the_wolfrom_choice_is_what_a_plain_loop_finds():
+    from mechloop.gears.tooth_search import choose_wolfrom_teeth
+
+    target, k, tol, low, high = 64.0, 3, 0.01, 12, 70
+    choice = choose_wolfrom_teeth(target, k, teeth_min=low, teeth_max=high, tolerance=tol)
+    found = set()
+    for z_a in range(low, high + 1):
+        for z_g in range(low, high + 1):
+            z_b = z_a + 2 * z_g
+            if z_b > high or (z_a + z_b) % k:
+                continue
+            if (z_g + 2) >= (z_a + z_g) * math.sin(math.pi / k):
+                continue
+            for z_f in range(low, high + 1):
+                z_e = z_a + z_g + z_f
+                if z_e > high or z_b * z_f == z_g * z_e or (z_f + 2) >= (z_a + z_g) * \
+                        math.sin(math.pi / k):
+                    continue
+                ratio = Fraction(z_a + z_b, z_a) / (1 - Fraction(z_b * z_f, z_g * z_e))
+                if abs(ratio - Fraction(target)) > Fraction(tol) * Fraction(target):
+                    continue
+                if not _assembles_by_tooth_phases(z_a, z_g, z_f, z_b, z_e, k):
+                    continue
+                found.add((z_a, z_g, z_f, z_b, z_e))
+    got = {tuple(int(v) for v in row) for row in
+           zip(choice.z_a, choice.z_g, choice.z_f, choice.z_b, choice.z_e, strict=True)}
+    assert found and got == found
+    # the example's train is the best: the exact ratio and the smallest rings
+    assert (choice.z_a[0], choice.z_g[0], choice.z_f[0], choice.z_b[0], choice.z_e[0]) == \
+        (15, 24, 21, 63, 60)
+    assert np.all(np.diff(np.round(choice.error, 12)) >= 0)
+    best = choice.train(0, m_n=1.5)
+    assert best.ratio == 64.0 and best.coaxial and best.assembles

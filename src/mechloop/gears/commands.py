@@ -125,7 +125,7 @@ def run_planetary(path: Path | None, options: dict[str, Any], *, out: Console,
                   f"{spec.planets} planets (coaxial, assembled, clear of each other)")
         if not len(choice):
             raise located_error([no_design(spec)], file, lines)
-        _print_frame(out, frame, f"Designs of the {choice.scheme.name} scheme, best first")
+        _print_frame(out, frame, f"Designs of the {choice.scheme_name} scheme, best first")
         train = choice.train(0, spec.module, spec.addendum)
         out.print("the best design is analysed below")
     from mechloop.gears.wolfrom import WolfromTrain

@@ -201,17 +201,20 @@ def train_of(spec: PlanetarySpec, *, file: str | None = None,
                             lines or {}) from None
 
 
-def _wolfrom_of(spec: PlanetarySpec, file: str | None, lines: LineMap) -> WolfromTrain:
+def _wolfrom_of(spec: PlanetarySpec, file: str | None, lines: LineMap
+                ) -> WolfromTrain | None:
     problems = []
-    if spec.teeth is None:
-        problems.append(Problem(("planetary",), "the wolfrom scheme needs its tooth numbers "
-                                "(no choice for a target ratio is made for it)",
-                                "add teeth: {a: 15, g: 24, f: 21, b: 63, e: 60}"))
+    if spec.teeth is None and spec.target_ratio is None:
+        problems.append(Problem(("planetary",), "neither tooth numbers nor a target ratio",
+                                "add teeth: {a: 15, g: 24, f: 21, b: 63, e: 60} or "
+                                "target_ratio: 64"))
     if (spec.fixed, spec.input) != ("b", "a"):
         key = "fixed" if spec.fixed != "b" else "input"
         problems.append(Problem(("planetary", key), "the wolfrom train holds ring b and "
                                 "is driven by the sun a (its output is ring e)",
                                 "remove fixed: and input:"))
+    if not problems and spec.teeth is None:
+        return None
     if not problems:
         try:
             return wolfrom_train(dict(spec.teeth), spec.planets, spec.module, spec.addendum)
@@ -223,13 +226,20 @@ def _wolfrom_of(spec: PlanetarySpec, file: str | None, lines: LineMap) -> Wolfro
 def choice_of(spec: PlanetarySpec, *, file: str | None = None,
               lines: LineMap | None = None):
     """The tooth numbers a ``planetary:`` section's ``target_ratio`` and ``search:`` ask
-    for (a :class:`~mechloop.gears.tooth_search.ToothChoice`, best first, possibly empty);
+    for (a :class:`~mechloop.gears.tooth_search.Choice` or ``WolfromChoice``, best first,
+    possibly empty);
     a bad search is told at its key and line."""
     from mechloop.gears.planetary import scheme_of
     from mechloop.gears.tooth_search import choose_teeth
 
     s = spec.search
     try:
+        if spec.scheme == "wolfrom":
+            from mechloop.gears.tooth_search import choose_wolfrom_teeth
+
+            return choose_wolfrom_teeth(float(spec.target_ratio), spec.planets,
+                                        teeth_min=s.teeth_min, teeth_max=s.teeth_max,
+                                        tolerance=s.tolerance, ha=spec.addendum)
         return choose_teeth(scheme_of(spec.scheme), float(spec.target_ratio), spec.planets,
                             teeth_min=s.teeth_min, teeth_max=s.teeth_max,
                             ring_difference_min=s.ring_difference_min,

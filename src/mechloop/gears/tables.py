@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 
 from mechloop.gears.pair import GearPair
-from mechloop.gears.planetary import PlanetaryTrain
-from mechloop.gears.tooth_search import Choice
+from mechloop.gears.planetary import PlanetaryTrain, output_member
+from mechloop.gears.tooth_search import Choice, WolfromChoice
 from mechloop.gears.wolfrom import WolfromTrain
 
 
@@ -127,13 +127,19 @@ def wolfrom_table(train: WolfromTrain, speed_rpm: float) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=["quantity", "value", "unit"])
 
 
-def choice_table(choice: Choice, show: int | None = None) -> pd.DataFrame:
+def choice_table(choice: Choice | WolfromChoice, show: int | None = None) -> pd.DataFrame:
     """The designs of a choice, best first (``show`` of them, default all)."""
     n = len(choice) if show is None else min(show, len(choice))
     data = {"a": choice.z_a[:n], "g": choice.z_g[:n]}
-    if choice.scheme.double:
+    wolfrom = isinstance(choice, WolfromChoice)
+    if wolfrom or choice.scheme.double:
         data["f"] = choice.z_f[:n]
-    data |= {"b": choice.z_b[:n], "i_ah": choice.ratio[:n],
+    data["b"] = choice.z_b[:n]
+    if wolfrom:
+        data["e"] = choice.z_e[:n]
+    name = "i_ae" if wolfrom else \
+        f"i_{choice.driver}{output_member(choice.fixed, choice.driver)}"
+    data |= {name: choice.ratio[:n],
              "error [%]": 100.0 * choice.error[:n], "size [modules]": choice.size[:n],
              "planet clearance [modules]": choice.margin[:n]}
     return pd.DataFrame(data)

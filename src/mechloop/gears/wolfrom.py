@@ -40,10 +40,12 @@ def wolfrom_ratio(z_a: ArrayLike, z_g: ArrayLike, z_f: ArrayLike, z_b: ArrayLike
     """``i_ae = ω_a/ω_e`` with ring ``b`` fixed (see the module).  Broadcasts; ``inf``
     where ``z_b z_f = z_g z_e`` (the output ring stands still)."""
     z_a, z_g, z_f, z_b, z_e = (np.asarray(v, float) for v in (z_a, z_g, z_f, z_b, z_e))
-    second = 1.0 - z_b * z_f / (z_g * z_e)
+    # one division of whole numbers, (z_a + z_b) z_g z_e / (z_a (z_g z_e − z_b z_f)):
+    # exact whenever the ratio is a whole number
+    top = (z_a + z_b) * z_g * z_e
+    bottom = z_a * (z_g * z_e - z_b * z_f)
     with np.errstate(divide="ignore"):
-        return np.where(second == 0.0, np.inf, (1.0 + z_b / z_a) / np.where(second == 0.0,
-                                                                             1.0, second))
+        return np.where(bottom == 0.0, np.inf, top / np.where(bottom == 0.0, 1.0, bottom))
 
 
 @dataclass(frozen=True)
