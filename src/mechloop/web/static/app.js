@@ -28,9 +28,12 @@ async function postJSON(path, data) {
     headers: { "content-type": "application/json" } });
 }
 
-function status(text, kind) {
+// The status line, kept as a key of WORDS (re-said when the language changes).
+let lastStatus = ["", null, ""];
+function status(key, values, kind) {
+  lastStatus = [key, values, kind];
   const node = $("status");
-  node.textContent = text;
+  node.textContent = key ? t(key, values) : "";
   node.className = kind || "";
 }
 
@@ -108,14 +111,14 @@ function edited() {
 async function check() {
   const version = state.version;
   const body = Object.assign({ text: $("editor").value }, state.source);
-  status(t("checking"));
+  status("checking", null);
   const response = await postJSON("api/validate", body);
   const answer = await response.json();
   if (version !== state.version) return;
   if (!response.ok) {
     state.problems = answer.problems || [{ message: answer.error, hint: answer.hint }];
     renderProblems();
-    status(t("failed", { error: answer.error }), "error");
+    status("failed", { error: answer.error }, "error");
     return;
   }
   state.problems = answer.problems;
@@ -123,13 +126,13 @@ async function check() {
   if (answer.ok) {
     await solve(version);
   } else {
-    status(t("invalid"), "error");
+    status("invalid", null, "error");
   }
 }
 
 // ------------------------------------------------------------------ the results
 async function solve(version) {
-  status(t("solving"));
+  status("solving", null);
   const body = Object.assign({ text: $("editor").value }, state.source);
   const response = await postJSON("api/solve", body);
   const answer = await response.json();
@@ -137,7 +140,7 @@ async function solve(version) {
   if (!response.ok) {
     state.problems = answer.problems || [];
     renderProblems();
-    status(t("failed", { error: answer.error }), "error");
+    status("failed", { error: answer.error }, "error");
     return;
   }
   state.solution = answer;
@@ -147,7 +150,7 @@ async function solve(version) {
   slider.value = state.position;
   fillPlotChoices();
   render();
-  status(t("solved"), "ok");
+  status("solved", null, "ok");
   document.body.dataset.solved = String(version);
 }
 
@@ -167,7 +170,7 @@ function fillPlotChoices() {
   for (const column of columns) {
     const option = document.createElement("option");
     option.value = column.name;
-    option.textContent = `${column.name}, ${unitText(column.unit)}`;
+    option.textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
     select.appendChild(option);
   }
   select.value = state.column;
@@ -197,7 +200,7 @@ function render() {
   for (const c of solution.columns) {
     const row = body.insertRow();
     row.dataset.name = c.name;
-    row.insertCell().textContent = c.name;
+    row.insertCell().textContent = columnText(c.name);
     const value = row.insertCell();
     value.textContent = format(c.values[k] === null ? NaN : c.values[k]);
     value.className = "number";
@@ -270,7 +273,7 @@ async function open(choice) {
   const response = await api("api/model?" + new URLSearchParams(state.source));
   const answer = await response.json();
   if (!response.ok) {
-    status(t("failed", { error: answer.error }), "error");
+    status("failed", { error: answer.error }, "error");
     return;
   }
   state.solution = null;
@@ -283,29 +286,29 @@ async function open(choice) {
 async function save() {
   const path = $("save-path").value.trim();
   if (!path) {
-    status(t("unsaved"), "error");
+    status("unsaved", null, "error");
     return;
   }
-  status(t("saving"));
+  status("saving", null);
   const response = await postJSON("api/save", { path, text: $("editor").value });
   const answer = await response.json();
   if (!response.ok) {
-    status(t("failed", { error: answer.error }), "error");
+    status("failed", { error: answer.error }, "error");
     return;
   }
   await loadList();
   state.source = { path: answer.saved };
   $("model-select").value = "path:" + answer.saved;
-  status(t("saved", { path: answer.saved }), "ok");
+  status("saved", { path: answer.saved }, "ok");
 }
 
 async function report() {
-  status(t("writing"));
+  status("writing", null);
   const body = Object.assign({ text: $("editor").value, lang: LANG }, state.source);
   const response = await postJSON("api/report", body);
   if (!response.ok) {
     const answer = await response.json();
-    status(t("failed", { error: answer.error }), "error");
+    status("failed", { error: answer.error }, "error");
     return;
   }
   const blob = await response.blob();
@@ -316,7 +319,7 @@ async function report() {
   document.body.appendChild(link);
   link.click();
   link.remove();
-  status(t("written"), "ok");
+  status("written", null, "ok");
 }
 
 function setLanguage(lang) {
@@ -326,6 +329,7 @@ function setLanguage(lang) {
   labelList();
   renderProblems();
   $("play").textContent = t($("play").dataset.i18n);
+  status(...lastStatus);
   if (state.solution) {
     fillPlotChoices();
     render();

@@ -169,7 +169,7 @@ function drawPlot(svg, solution, column, k) {
     .textContent = t("axisPosition");
   el("text", { x: 12, y: top + (height - top - bottom) / 2, "text-anchor": "middle",
     transform: `rotate(-90 12 ${top + (height - top - bottom) / 2})` }, axes)
-    .textContent = `${column.name}, ${unitText(column.unit)}`;
+    .textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
   // the curve, broken where a value is unknown
   let path = "", pen = false;
   values.forEach((v, i) => {

@@ -55,6 +55,15 @@ function unitText(unit) {
   return LANG === "ru" && UNITS_RU[unit] ? UNITS_RU[unit] : unit;
 }
 
+// A column of the results table by name: the parameters (a2, dr3, M_bal) are symbols,
+// the same in both languages; time and the arguments are words.
+function columnText(name) {
+  if (name === "time") return LANG === "ru" ? "время" : "time";
+  const argument = /^arg(\d+)$/.exec(name);
+  if (argument) return (LANG === "ru" ? "аргумент " : "argument ") + argument[1];
+  return name;
+}
+
 function applyWords() {
   document.documentElement.lang = LANG;
   for (const element of document.querySelectorAll("[data-i18n]")) {
