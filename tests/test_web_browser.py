@@ -24,6 +24,7 @@ from selenium.webdriver.support.ui import Select, WebDriverWait
 
 from mechloop.web.app import create_app
 from mechloop.web.serve import free_port
+from mechloop.web.worker import warm_up
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
@@ -37,6 +38,7 @@ WAIT = 30  # s, the longest any step may take (a report under load)
 def server(tmp_path_factory):
     folder = tmp_path_factory.mktemp("served")
     shutil.copy(EXAMPLES / "crank_slider.yaml", folder / "crank_slider.yaml")
+    warm_up().join()  # the solves' fork server, ready before the first page
     port = free_port()
     config = uvicorn.Config(create_app(folder, hosts=["127.0.0.1"]), host="127.0.0.1",
                             port=port, log_level="warning")

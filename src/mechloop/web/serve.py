@@ -96,9 +96,10 @@ def run(target: Path | None, *, host: str = "127.0.0.1", port: int | None = None
     import uvicorn
 
     from mechloop.web.app import create_app
-    from mechloop.web.worker import SOLVE_SECONDS
+    from mechloop.web.worker import SOLVE_SECONDS, warm_up
 
     chosen = plan(target, host, port)
+    warm_up()  # the fork server of the solves imports mechloop now, not at the first solve
     app = create_app(chosen.folder, token=chosen.token, hosts=chosen.hosts,
                      solve_seconds=solve_seconds or SOLVE_SECONDS, start=chosen.start)
     if chosen.token is not None:

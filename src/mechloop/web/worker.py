@@ -1,8 +1,11 @@
 """Work that may take long (a solve, a report) in a child process with a time limit.
 
-The child is forked from the server, so it starts at once with everything already imported
-(and numba's compiled code cached on disk); past the limit it is terminated, so a model
-that takes too long costs the server nothing.  The child sends back ``("ok", value)``,
+The child is forked by multiprocessing's fork server, a single-threaded process that has
+imported mechloop and loaded its compiled code once (:mod:`mechloop.web.preload`): a child
+starts at once, and never inherits a lock held by one of the web server's threads.  Past
+the limit the child is terminated, so a model that takes too long costs the server
+nothing; at most :data:`MAX_CHILDREN` children run at once (a request beyond waits its
+turn, its time limit counting from its start).  The child sends back ``("ok", value)``,
 ``("error", problems)`` for a :class:`~mechloop.errors.MechloopError` (the problems as
 :func:`mechloop.web.documents.problems` gives them) or ``("crash", message)`` for any
 other exception — a bad model never takes the server down.
@@ -12,6 +15,7 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import threading
 import traceback
 from collections.abc import Callable
 from typing import Any
@@ -23,6 +27,27 @@ from mechloop.web.safety import WebError
 SOLVE_SECONDS = 60.0
 #: The default time limit of a report, s.
 REPORT_SECONDS = 300.0
+#: Children running at once.
+MAX_CHILDREN = 2
+#: The modules the fork server imports once for every child.
+PRELOAD = ["mechloop.web.preload"]
+
+_turns = threading.BoundedSemaphore(MAX_CHILDREN)
+
+
+def _context() -> multiprocessing.context.BaseContext:
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(PRELOAD)
+    return context
+
+
+def warm_up() -> threading.Thread:
+    """Start the fork server in the background (it imports mechloop and loads the compiled
+    code: seconds), so that it is ready before the first solve; the thread it runs in."""
+    thread = threading.Thread(target=run_limited, args=(abs, 0), kwargs={"seconds": 300},
+                              daemon=True, name="mechloop-warm-up")
+    thread.start()
+    return thread
 
 
 class WorkFailed(WebError):
@@ -54,11 +79,8 @@ def _child(connection: Any, func: Callable[..., Any], args: tuple) -> None:
         os._exit(0)  # no atexit handlers or finalizers of the server in the child
 
 
-def run_limited(func: Callable[..., Any], *args: Any, seconds: float) -> Any:
-    """``func(*args)`` computed in a forked child, its value (it must pickle) — or
-    :class:`WorkFailed`: 422 with the problems of a model error, 504 past ``seconds``,
-    500 for an unexpected exception of the child."""
-    context = multiprocessing.get_context("fork")
+def _run(func: Callable[..., Any], args: tuple, seconds: float) -> tuple[str, Any]:
+    context = _context()
     parent, child = context.Pipe(duplex=False)
     process = context.Process(target=_child, args=(child, func, args), daemon=True)
     process.start()
@@ -69,7 +91,7 @@ def run_limited(func: Callable[..., Any], *args: Any, seconds: float) -> Any:
                              "use fewer positions, or start mechloop serve with a longer "
                              "--time-limit", 504)
         try:
-            kind, value = parent.recv()
+            return parent.recv()
         except EOFError:
             raise WorkFailed("the work stopped without a result (out of memory?)",
                              "use fewer positions", 500) from None
@@ -78,6 +100,14 @@ def run_limited(func: Callable[..., Any], *args: Any, seconds: float) -> Any:
             process.terminate()
         process.join(5)
         parent.close()
+
+
+def run_limited(func: Callable[..., Any], *args: Any, seconds: float) -> Any:
+    """``func(*args)`` computed in a child, its value — or
+    :class:`WorkFailed`: 422 with the problems of a model error, 504 past ``seconds``,
+    500 for an unexpected exception of the child."""
+    with _turns:
+        kind, value = _run(func, args, seconds)
     if kind == "ok":
         return value
     if kind == "error":
