@@ -83,8 +83,15 @@ def _run(func: Callable[..., Any], args: tuple, seconds: float) -> tuple[str, An
     context = _context()
     parent, child = context.Pipe(duplex=False)
     process = context.Process(target=_child, args=(child, func, args), daemon=True)
-    process.start()
-    child.close()
+    try:
+        process.start()
+    except (OSError, RuntimeError) as exc:  # no process left, or a main module unguarded
+        parent.close()
+        raise WorkFailed(f"cannot start the work: {exc}".strip(),
+                         "start the server by mechloop serve (or, from a script, under "
+                         "if __name__ == '__main__':)", 500) from None
+    finally:
+        child.close()
     try:
         if not parent.poll(seconds):
             raise WorkFailed(f"the work took longer than {seconds:g} s and was stopped",
