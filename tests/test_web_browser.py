@@ -232,3 +232,22 @@ def test_russian_and_english_screens_and_the_report(browser, server, downloads):
     _wait(browser, lambda d: target.exists() and target.stat().st_size > 0,
           "the report was not downloaded")
     assert target.read_bytes().startswith(b"%PDF")
+
+
+def test_save_writes_the_editors_text_inside_the_folder_only(browser, server):
+    base, folder = server
+    _open(browser, base + "/?path=crank_slider.yaml")
+    name = browser.find_element(By.ID, "save-path")
+    for target, saved in (("../outside.yaml", False), ("copy.yaml", True)):
+        name.clear()
+        name.send_keys(target)
+        browser.find_element(By.ID, "save").click()
+        kind = "ok" if saved else "error"
+        _wait(browser, lambda d, kind=kind: d.find_element(By.ID, "status")
+              .get_attribute("class") == kind, f"saving {target} did not end in {kind}")
+    assert not (folder.parent / "outside.yaml").exists()
+    text = browser.find_element(By.ID, "editor").get_property("value")
+    assert (folder / "copy.yaml").read_text(encoding="utf-8") == text
+    assert browser.find_element(By.ID, "status").text == "saved copy.yaml"
+    assert Select(browser.find_element(By.ID, "model-select")).first_selected_option \
+        .get_attribute("value") == "path:copy.yaml"
