@@ -104,7 +104,8 @@ def run(target: Path | None, *, host: str = "127.0.0.1", port: int | None = None
                      solve_seconds=solve_seconds or SOLVE_SECONDS, start=chosen.start)
     if chosen.token is not None:
         say(f"warning: serving {chosen.folder} on {host}, reachable from other machines; "
-            "anyone with the address below can read and write the model files there")
+            "anyone with the address below can read and write the model files there (from "
+            "another machine, put this machine's address in place of 127.0.0.1)")
     say(f"mechloop serves {chosen.folder} at {chosen.url}  (Ctrl+C stops it)")
     if browser:
         webbrowser.open(chosen.url)
