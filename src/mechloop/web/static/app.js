@@ -19,8 +19,20 @@ const state = {
 async function api(path, options) {
   const headers = Object.assign({}, (options && options.headers) || {});
   if (TOKEN) headers["X-Mechloop-Token"] = TOKEN;
-  const response = await fetch(path, Object.assign({}, options, { headers }));
-  return response;
+  try {
+    return await fetch(path, Object.assign({}, options, { headers }));
+  } catch (error) {  // the server stopped or the network failed: said, not thrown
+    return { ok: false, status: 0, json: async () => ({ error: String(error), hint: "" }) };
+  }
+}
+
+// The JSON of an answer; an answer that is not JSON becomes an error with its status.
+async function read(response) {
+  try {
+    return await response.json();
+  } catch (error) {
+    return { error: `${response.status} ${response.statusText || ""}`.trim(), hint: "" };
+  }
 }
 
 async function postJSON(path, data) {
@@ -113,7 +125,7 @@ async function check() {
   const body = Object.assign({ text: $("editor").value }, state.source);
   status("checking", null);
   const response = await postJSON("api/validate", body);
-  const answer = await response.json();
+  const answer = await read(response);
   if (version !== state.version) return;
   if (!response.ok) {
     state.problems = answer.problems || [{ message: answer.error, hint: answer.hint }];
@@ -135,7 +147,7 @@ async function solve(version) {
   status("solving", null);
   const body = Object.assign({ text: $("editor").value }, state.source);
   const response = await postJSON("api/solve", body);
-  const answer = await response.json();
+  const answer = await read(response);
   if (version !== state.version) return;
   if (!response.ok) {
     state.problems = answer.problems || [];
@@ -230,7 +242,7 @@ function togglePlay() {
 // ------------------------------------------------------------------ files
 async function loadList() {
   const response = await api("api/models");
-  const answer = await response.json();
+  const answer = await read(response);
   const select = $("model-select");
   select.textContent = "";
   const files = document.createElement("optgroup");
@@ -271,7 +283,7 @@ async function open(choice) {
   $("model-select").value = choice;
   $("save-path").value = kind === "path" ? name : name + ".yaml";
   const response = await api("api/model?" + new URLSearchParams(state.source));
-  const answer = await response.json();
+  const answer = await read(response);
   if (!response.ok) {
     status("failed", { error: answer.error }, "error");
     return;
@@ -291,7 +303,7 @@ async function save() {
   }
   status("saving", null);
   const response = await postJSON("api/save", { path, text: $("editor").value });
-  const answer = await response.json();
+  const answer = await read(response);
   if (!response.ok) {
     status("failed", { error: answer.error }, "error");
     return;
@@ -307,7 +319,7 @@ async function report() {
   const body = Object.assign({ text: $("editor").value, lang: LANG }, state.source);
   const response = await postJSON("api/report", body);
   if (!response.ok) {
-    const answer = await response.json();
+    const answer = await read(response);
     status("failed", { error: answer.error }, "error");
     return;
   }
