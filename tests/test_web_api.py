@@ -9,11 +9,13 @@ import math
 import os
 import shutil
 import time
+from io import BytesIO
 from pathlib import Path
 
 import numpy as np
 import pytest
 import yaml
+from pypdf import PdfReader
 from starlette.testclient import TestClient
 from typer.testing import CliRunner
 
@@ -117,6 +119,17 @@ def test_a_csv_table_outside_the_folder_is_refused(client, folder):
     inside = client.post("/api/validate", json={"path": "crank_slider.yaml",
                                                 "text": yaml.safe_dump(data)}).json()
     assert inside == {"ok": True, "problems": []}
+
+
+def test_a_project_document_outside_the_folder_is_refused(client):
+    text = SLIDER + "project: {cam: ../secret.yaml}\n"
+    answer = client.post("/api/validate", json={"path": "crank_slider.yaml",
+                                                "text": text}).json()
+    (problem,) = answer["problems"]
+    assert problem["path"] == "project.cam" and "outside the folder" in problem["message"]
+    assert problem["line"] == len(text.splitlines())
+    report = client.post("/api/report", json={"path": "crank_slider.yaml", "text": text})
+    assert report.status_code == 422 and "outside the folder" in report.json()["error"]
 
 
 def test_solve_sends_the_diagram_and_table_of_the_library(client):
@@ -277,12 +290,18 @@ def test_the_page_and_its_scripts_ship_in_the_package(client):
     assert "http" not in page.text.replace('href="data:,"', "")  # no CDN
 
 
-def test_report_is_a_pdf(client):
-    answer = client.post("/api/report", json={"path": "crank_slider.yaml", "text": SLIDER,
-                                              "lang": "ru"})
+def test_report_is_a_pdf_with_the_course_projects_sheets(client):
+    """A course model's report holds the cam and gear sheets its project: section names
+    (read from the examples' folder, where the model is)."""
+    text = (EXAMPLES / "course" / "01_an10_landing_gear.yaml").read_text(encoding="utf-8")
+    assert "project: {cam:" in text
+    answer = client.post("/api/report", json={"example": "01_an10_landing_gear",
+                                              "text": text, "lang": "ru"})
     assert answer.status_code == 200, answer.text
     assert answer.content.startswith(b"%PDF")
     assert answer.headers["content-type"] == "application/pdf"
+    words = " ".join(page.extract_text() for page in PdfReader(BytesIO(answer.content)).pages)
+    assert "кулачков" in words.lower() and "сателлит" in words.lower()  # sheets 4 and 3
     assert client.post("/api/report", json={"path": "crank_slider.yaml", "text": SLIDER,
                                             "lang": "de"}).status_code == 400
 

@@ -70,14 +70,17 @@ def _solve_text(text: str, path: Path, root: Path) -> bytes:
 
 
 def _report_text(text: str, path: Path, root: Path, lang: str) -> bytes:
-    """The report PDF of the model in ``text`` (run in the child)."""
+    """The report PDF of the model in ``text`` (run in the child), with the course
+    project's gear and cam sheets when its ``project:`` section names them."""
+    from mechloop.model.project import project_documents
     from mechloop.views.report import write_report
 
-    document = read_model(text, path, root)
+    document = read_model(text, path, root)  # its project: files lie inside root
     with tempfile.TemporaryDirectory(prefix="mechloop-web-") as folder:
         target = Path(folder) / "report.pdf"
         try:
-            write_report(document.model, target, lang=lang)
+            project = project_documents(document.model, path)
+            write_report(document.model, target, lang=lang, project=project)
         except ModelError as exc:
             raise document.locate(exc) from None
         return target.read_bytes()

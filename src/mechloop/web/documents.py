@@ -3,8 +3,8 @@
 its line, YAML path and fix.
 
 The text belongs to a file (``path``: a model in the served folder, or a bundled example):
-its ``{csv: ...}`` tables are read relative to that file and only from inside ``root``
-(the served folder, or the examples' folder).
+the files it names (``{csv: ...}`` tables, ``project:`` documents) are read relative to
+that file and only from inside ``root`` (the served folder, or the examples' folder).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from mechloop.errors import HintedError, MechloopError, ModelError, Problem, for
 from mechloop.model.document import LineMap, _locate, located_error, parse_document
 from mechloop.model.load import model_from_data
 from mechloop.model.schema import Model
-from mechloop.web.safety import check_csv_references
+from mechloop.web.safety import references_outside
 
 
 @dataclass(frozen=True)
@@ -42,11 +42,11 @@ def read_model(text: str, path: Path, root: Path) -> Document:
     Raises :class:`~mechloop.errors.ModelError` with every problem located by line.
     """
     data, lines = parse_document(text, path.name)
-    outside = check_csv_references(data, path.parent, root)
+    outside = references_outside(data, path.parent, root)
     if outside:
-        raise located_error([Problem(where, f"the table {name!r} lies outside the folder "
+        raise located_error([Problem(where, f"the file {name!r} lies outside the folder "
                                      "the server was started in",
-                                     "put the CSV file in that folder and give its path "
+                                     "put the file in that folder and give its path "
                                      "relative to the model") for where, name in outside],
                             path.name, lines)
     return Document(model_from_data(data, file=str(path), lines=lines), lines, path)

@@ -2,7 +2,8 @@
 
 * :class:`Workspace` — the one folder the server reads and writes: a relative path is
   accepted only when it stays inside it (no ``..``, no absolute path, no symlink leading
-  out, only model files), and so is every ``{csv: ...}`` table a model names.
+  out, only model files), and so is every file a model names (``{csv: ...}`` tables, the
+  ``project:`` documents): :func:`references_outside`.
 * :class:`Guard` — an ASGI middleware: the request body is refused past
   :data:`MAX_BODY_BYTES` (413), a request for another host than the served one is refused
   (a web page cannot reach the server by DNS rebinding), and with a token (a server
@@ -103,23 +104,28 @@ class Workspace:
         return found
 
 
-def csv_references(data: Any, path: tuple = ()) -> Iterable[tuple[tuple, str]]:
-    """Every ``{csv: FILE}`` table in the plain data of a model: (its path, FILE)."""
+def file_references(data: Any, path: tuple = ()) -> Iterable[tuple[tuple, str]]:
+    """Every file the plain data of a model names: its ``{csv: FILE}`` tables and its
+    ``project:`` documents (``cam``, ``gears``) — (the path in the document, FILE)."""
+    if not path and isinstance(data, dict) and isinstance(data.get("project"), dict):
+        for key in ("cam", "gears"):
+            if isinstance(data["project"].get(key), str):
+                yield ("project", key), data["project"][key]
     if isinstance(data, dict):
         if isinstance(data.get("csv"), str):
             yield path, data["csv"]
         for key, value in data.items():
-            yield from csv_references(value, (*path, key))
+            yield from file_references(value, (*path, key))
     elif isinstance(data, list):
         for index, value in enumerate(data):
-            yield from csv_references(value, (*path, index))
+            yield from file_references(value, (*path, index))
 
 
-def check_csv_references(data: Any, base: Path, root: Path) -> list[tuple[tuple, str]]:
-    """The ``{csv: ...}`` tables of ``data`` (read relative to ``base``) that lie outside
-    ``root``: (path in the document, file)."""
+def references_outside(data: Any, base: Path, root: Path) -> list[tuple[tuple, str]]:
+    """The files ``data`` names (relative to ``base``) that lie outside ``root``: (path
+    in the document, file)."""
     outside = []
-    for where, name in csv_references(data):
+    for where, name in file_references(data):
         target = Path(name) if Path(name).is_absolute() else base / name
         if not target.resolve().is_relative_to(root):
             outside.append((where, name))
