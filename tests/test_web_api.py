@@ -218,7 +218,8 @@ def test_a_bad_model_is_a_located_error_and_the_server_goes_on(client):
     for junk in ("", "[1, 2", "- just\n- a list\n", "a: *nothing\n"):
         reply = client.post("/api/solve", json={"path": "crank_slider.yaml", "text": junk})
         assert reply.status_code == 422 and reply.json()["error"]
-    assert client.post("/api/solve", content=b"not json").status_code == 400
+    assert client.post("/api/solve", content=b"not json",
+                       headers={"content-type": "application/json"}).status_code == 400
     assert client.post("/api/solve", json=[1, 2]).status_code == 400
     assert client.post("/api/solve", json={"path": "crank_slider.yaml",
                                            "text": SLIDER}).status_code == 200
@@ -280,6 +281,21 @@ def test_a_token_guards_the_api_and_hosts_are_checked(folder):
     rebound = TestClient(create_app(folder, hosts=["127.0.0.1"]),
                          base_url="http://evil.example:8000")
     assert rebound.get("/api/models").status_code == 403
+
+
+def test_a_page_of_another_origin_cannot_save(client, folder):
+    """A page elsewhere can send a simple cross-site request (form-like content types,
+    its own Origin) to the loopback port; nothing it asks is done."""
+    for headers in ({"content-type": "text/plain"},
+                    {"content-type": "application/x-www-form-urlencoded"},
+                    {"content-type": "application/json", "origin": "http://evil.example"}):
+        answer = client.post("/api/save", headers=headers,
+                             content=b'{"path": "evil.yaml", "text": "name: evil"}')
+        assert answer.status_code in (403, 415), headers
+    assert not (folder / "evil.yaml").exists()
+    same = client.post("/api/save", headers={"origin": "http://testserver"},
+                       json={"path": "ok.yaml", "text": "name: ok\n"})
+    assert same.status_code == 200 and (folder / "ok.yaml").exists()
 
 
 def test_the_page_and_its_scripts_ship_in_the_package(client):

@@ -108,6 +108,10 @@ def create_app(folder: str | Path, *, token: str | None = None,
         return workspace.resolve(str(data.get("path", "")), exists=False), workspace.root
 
     async def body(request: Request) -> dict[str, Any]:
+        kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
+        if kind != "application/json":
+            raise WebError(f"the request is {kind or 'untyped'}, not application/json",
+                           "send the JSON with content-type: application/json", 415)
         try:
             data = orjson.loads(await request.body())
         except orjson.JSONDecodeError:

@@ -6,7 +6,10 @@
   ``project:`` documents): :func:`references_outside`.
 * :class:`Guard` — an ASGI middleware: the request body is refused past
   :data:`MAX_BODY_BYTES` (413), a request for another host than the served one is refused
-  (a web page cannot reach the server by DNS rebinding), and with a token (a server
+  (a web page cannot reach the server by DNS rebinding), a change asked by a page of
+  another origin is refused (a page elsewhere cannot save into the folder; the API also
+  takes only ``application/json``, which such a page cannot send without the browser
+  asking the server first), and with a token (a server
   reachable from other machines) every API request must carry it, as ``?token=`` or the
   ``X-Mechloop-Token`` header (403); the page and its scripts are the package's own.
 """
@@ -188,6 +191,11 @@ class Guard:
         if self.hosts is not None and name.strip("[]") not in self.hosts:
             return (403, f"host {host!r} is not served here",
                     "open the address mechloop serve printed")
+        origin = headers.get("origin")
+        if scope.get("method", "GET") not in ("GET", "HEAD") and origin is not None and \
+                origin.lower().split("://", 1)[-1] != host:
+            return (403, f"a request from the page {origin!r} is refused",
+                    "use the page mechloop serve printed")
         if self.token is None or not scope.get("path", "").startswith("/api/"):
             return None  # the page and its scripts are the package's, the same for all
         query = parse_qs(scope.get("query_string", b"").decode("latin-1"))
