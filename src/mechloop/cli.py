@@ -1413,5 +1413,41 @@ def gear_planetary_command(
                   force=force)
 
 
+@app.command(name="serve", cls=_Command)
+@user_errors
+def serve(
+    target: Annotated[Path | None, typer.Argument(help="a model file (opened first) or a "
+                      "folder; files are read and written only inside that folder "
+                      "(default: the current folder)", show_default=False)] = None,
+    host: Annotated[str, typer.Option(help="address to listen on; another than 127.0.0.1 "
+                    "makes the server reachable from other machines (a token is then "
+                    "required)")] = "127.0.0.1",
+    port: Annotated[int | None, typer.Option(help="port (default: a free one)")] = None,
+    browser: Annotated[bool, typer.Option("--browser/--no-browser", help="open the "
+                       "browser at the address (default: open)")] = True,
+    time_limit: Annotated[float, typer.Option("--time-limit", min=0.1, help="longest "
+                          "solve, s (default: 60)")] = 60.0,
+) -> None:
+    """Start the web application: edit a model with live validation, see the mechanism move,
+    plot a parameter, read the results table and download the report, in the browser.
+
+    Example:
+
+    ```
+    mechloop serve examples/crank_slider.yaml
+    ```
+    """
+    from mechloop.errors import HintedError
+
+    try:
+        from mechloop.web.serve import run
+    except ImportError as exc:  # starlette / uvicorn: the web extra
+        raise HintedError(f"the web application needs {exc.name}",
+                          'pip install "mechloop[web]"') from None
+
+    run(target, host=host, port=port, browser=browser, solve_seconds=time_limit,
+        say=lambda text: out.print(text, markup=False))
+
+
 if __name__ == "__main__":  # pragma: no cover
     app()
