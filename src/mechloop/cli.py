@@ -580,14 +580,14 @@ def plot(
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
     from mechloop.views import plan as plans
-    from mechloop.views.display import Display
+    from mechloop.views.display import DEFAULT_DISPLAY
     from mechloop.views.figure import FIGURE_SUFFIXES, ViewError, save_figure
 
     if kind not in PLOTS:
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
     _outputs(model, force, (output, FIGURE_SUFFIXES))
     m = load_model(model)
-    display = plot_display(resolve(m.display, units)) or Display()
+    display = plot_display(resolve(m.display, units)) or DEFAULT_DISPLAY
     if kind == "structure":
         save_figure(formula.plot_structure(m), output)
         out.print(f"wrote {output}")
