@@ -76,7 +76,8 @@ def plot_balancing(dyn: DynamicResults, *, against: str = "position",
     figure = new_figure(8.0, 5.0)
     ax = figure.add_subplot()
     draw_curves(ax, series(dyn, against), curves, display, styles=styles)
-    ax.set_title("balancing load: kinetostatics (solid) and virtual power (dashed)")
+    # two lines: one would not fit the figure in Russian
+    ax.set_title("balancing load\nkinetostatics (solid), virtual power (dashed)")
     return figure
 
 

@@ -107,6 +107,6 @@ def _plot_inputs(sim, *, title: str = "") -> Figure:
     phase.set_title("phase portraits", fontsize="medium")
     phase.grid(True, alpha=0.3)
     end = sim.end
-    figure.suptitle(title or f"motion in time of {len(sim.inputs)} inputs — ended: "
+    figure.suptitle(title or f"motion in time, {len(sim.inputs)} inputs — ended: "
                              f"{end.kind} at {end.t:.4g} s")
     return figure
