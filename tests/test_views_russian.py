@@ -9,14 +9,13 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import pytest
 from helpers.latin import latin_words
-from matplotlib.text import Text
 
 import mechloop
 from mechloop.cams import load_cam
 from mechloop.views import curves, dynamics, formula, plan
 from mechloop.views.cam_sheet import cam_sheet
 from mechloop.views.gear_sheet import gear_sheet, load_gears
-from mechloop.views.russian import russian, translate
+from mechloop.views.russian import figure_texts, russian, translate
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ["crank_slider_dynamics.yaml", "course/05_compressor.yaml",
@@ -40,7 +39,7 @@ def user_names(model: mechloop.Model) -> list[str]:
 def english(figure, names) -> list[tuple[str, str]]:
     """(word, text) of every English word in the figure's texts after translation."""
     translate(figure, "ru")
-    found = [(word, text.get_text()) for text in figure.findobj(Text)
+    found = [(word, text.get_text()) for text in figure_texts(figure)
              for word in latin_words(text.get_text(), names)]
     plt.close(figure)
     return found
@@ -115,6 +114,19 @@ def test_sheet_figures_in_russian_have_no_english_words(which):
     assert sheet.figures
     for item in sheet.figures:
         assert not english(item.draw(), names), item.caption
+
+
+def test_the_users_names_stay_as_written():
+    # the model's name holds English words the figures use ("to", "break")
+    model = mechloop.load_model(ROOT / "examples/four_bar_break_ahead.yaml")
+    assert " to the break" in model.name
+    res = mechloop.solve(model)
+    broken = int(res.broken.nonzero()[0][0])
+    for figure in (plan.plot_plan(res, broken), formula.plot_structure(model)):
+        texts = [" ".join(t.get_text().split()) for t in figure_texts(translate(figure, "ru"))]
+        assert any(model.name in t for t in texts)  # (the structure's header wraps it)
+        assert any("разрыв цепи" in t or "контур" in t for t in texts)
+        plt.close(figure)
 
 
 def test_translation_takes_whole_words_and_leaves_symbols_and_units():

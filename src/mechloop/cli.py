@@ -560,6 +560,8 @@ def plot(
     panels: Annotated[bool, typer.Option(help="parameters: one stacked panel per unit "
                       "(default: a y-axis per unit up to 3 units, panels for more)")
                       ] = False,
+    lang: Annotated[str, typer.Option(help="language of the figure's texts: en or ru "
+                                      "(default: en)")] = "en",
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -573,6 +575,7 @@ def plot(
     mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
         --joint A -o hod.svg
     mechloop plot examples/cam_roller_follower.yaml envelope -o cam.png
+    mechloop plot examples/crank_slider_dynamics.yaml reactions --lang ru -o r.png
     ```
     """
     from mechloop.model.load import load_model
@@ -582,14 +585,17 @@ def plot(
     from mechloop.views import plan as plans
     from mechloop.views.display import DEFAULT_DISPLAY
     from mechloop.views.figure import FIGURE_SUFFIXES, ViewError, save_figure
+    from mechloop.views.russian import translate
 
     if kind not in PLOTS:
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
+    if lang not in ("en", "ru"):
+        raise ViewError(f"no figure language {lang!r}", "use --lang en or --lang ru")
     _outputs(model, force, (output, FIGURE_SUFFIXES))
     m = load_model(model)
     display = plot_display(resolve(m.display, units)) or DEFAULT_DISPLAY
     if kind == "structure":
-        save_figure(formula.plot_structure(m), output)
+        save_figure(translate(formula.plot_structure(m), lang), output)
         out.print(f"wrote {output}")
         return
     if kind == "envelope":  # the family over the intermediate argument and its envelope
@@ -597,8 +603,9 @@ def plot(
         from mechloop.views.envelope import plot_envelope
 
         listed = _split(names)
-        save_figure(plot_envelope(solve_intermediate(m), listed[0] if listed else None,
-                                  display=display), output)
+        save_figure(translate(plot_envelope(solve_intermediate(m),
+                                            listed[0] if listed else None, display=display),
+                              lang), output)
         out.print(f"wrote {output}")
         return
     results = _dynamics(m, model) if m.bodies else solve_model(m)
@@ -655,7 +662,7 @@ def plot(
         figure = dynamics.plot_summary(results, display=display)
     else:
         figure = dynamics.plot_machine_motion(results, display=display)
-    save_figure(figure, output)
+    save_figure(translate(figure, lang), output)
     out.print(f"wrote {output}")
 
 

@@ -6,17 +6,21 @@ The views draw their texts in English; :func:`translate` puts every text of a dr
 phrases of :data:`RUSSIAN_WORDS`, whole words only (``position`` is not replaced inside
 ``positions``), the longest phrase first, in one pass (a replaced text is not replaced
 again).  Symbols (``r3``, ``φ1``, ``F_bal``, ``S2``), unit names (``rad/s``, ``N*m``) and
-numbers stay as they are.  The user's own names (vectors, bodies, joints, loads, the
-model's name) are drawn as given; a name made of the English words below would be
-translated with them.
+numbers stay as they are.  The user's own names (the model's, its vectors', contours',
+joints', loads' names) stay as the user wrote them: a view marks them on its figure
+(:func:`keep_names`) and :func:`translate` leaves them alone.
 """
 
 from __future__ import annotations
 
 import functools
 import re
+from collections.abc import Iterable
+from typing import Any
 
 from matplotlib.figure import Figure
+from matplotlib.table import Table as MplTable
+from matplotlib.text import Text
 
 from mechloop.modules.coupled import DEAD, JUMP, NO_CONVERGENCE, REASONS
 from mechloop.solve.kinematics import BREAK_REASONS, DEAD_POINT, OVERFLOW
@@ -72,6 +76,7 @@ RUSSIAN_WORDS: dict[str, str] = {
     "N mean": "N ср",
     "N per kg": "N уд",
     "load": "нагрузка",
+    "friction": "трение",
     "model": "модель",
     "reaction": "реакция",
     "origin": "начало",
@@ -92,6 +97,7 @@ RUSSIAN_WORDS: dict[str, str] = {
     "argument (α near tail, r near head)": "аргумент (α у начала, r у конца)",
     "function (α near tail, r near head)": "функция (α у начала, r у конца)",
     "centre of mass": "центр масс",
+    "chain break at positions": "разрыв цепи в положениях",
     "chain break at position": "разрыв цепи в положении",
     "trajectories": "траектории",
     "mechanism": "механизм",
@@ -150,7 +156,9 @@ RUSSIAN_WORDS: dict[str, str] = {
     # the x-axes
     "position": "положение",
     "positions": "положения",
+    "between positions": "между положениями",
     "between": "между",
+    "of": "из",
     "to": "до",
     "time": "время",
 }
@@ -168,28 +176,77 @@ def _pattern() -> re.Pattern[str]:
     return re.compile("|".join(whole(p) for p in phrases))
 
 
-def russian(text: str) -> str:
-    """``text`` with every phrase of :data:`RUSSIAN_WORDS` put in Russian.
+#: The attribute of a figure that holds the user's names drawn on it.
+NAMES_ATTRIBUTE = "_mechloop_user_names"
+
+
+def model_names(model: Any) -> set[str]:
+    """The names the user gave in ``model`` (a :class:`~mechloop.model.schema.Model`): its
+    name, its vectors', contours', bodies', joints', gear meshes' and loads' names."""
+    names = {model.name}
+    names |= {v.name or "" for v in model.vectors.values()}
+    names |= {c.name or "" for c in model.contours}
+    names |= {getattr(b, "name", None) or "" for b in model.bodies.values()}
+    names |= {*(model.joints or {}), *model.gears}
+    for load in [*model.forces, *model.moments, *model.springs, *model.dampers]:
+        names.add(getattr(load, "name", None) or "")
+    return {str(n) for n in names if n}
+
+
+def keep_names(figure: Figure, names: Iterable[str]) -> Figure:
+    """Mark ``names`` (the user's own, drawn on ``figure``) to be kept as written when the
+    figure is translated."""
+    kept = getattr(figure, NAMES_ATTRIBUTE, set())
+    setattr(figure, NAMES_ATTRIBUTE, kept | {str(n) for n in names if n})
+    return figure
+
+
+def russian(text: str, names: Iterable[str] = ()) -> str:
+    """``text`` with every phrase of :data:`RUSSIAN_WORDS` put in Russian, the user's
+    ``names`` (of two characters or more) in it left as they are.
 
     >>> russian("increment of r3 from position 0")
     'приращение r3 от положения 0'
     >>> russian("positions 0..72, position 5")
     'положения 0..72, положение 5'
+    >>> russian("Run up to the break, position 5", ["Run up to the break"])
+    'Run up to the break, положение 5'
     """
-    return _pattern().sub(lambda match: RUSSIAN_WORDS[match.group(0)], text)
+    kept: list[str] = []
+
+    def hide(match: re.Match[str]) -> str:
+        kept.append(match.group(0))
+        return f"\x00{len(kept) - 1}\x00"
+
+    # a name may be wrapped over lines: any white space between its words
+    protected = sorted((n for n in names if len(n) >= 2), key=len, reverse=True)
+    spelled = [r"\s+".join(map(re.escape, n.split())) for n in protected]
+    spelled = [rf"(?<!\w){n}(?!\w)" for n in spelled if n]
+    if spelled:
+        text = re.sub("|".join(spelled), hide, text)
+    text = _pattern().sub(lambda match: RUSSIAN_WORDS[match.group(0)], text)
+    return re.sub("\x00(\\d+)\x00", lambda match: kept[int(match.group(1))], text)
+
+
+def figure_texts(figure: Figure) -> list[Text]:
+    """Every text of ``figure``: titles, labels, tick labels, legends, annotations and the
+    cells of its tables (which ``findobj`` does not reach)."""
+    texts = list(figure.findobj(Text))
+    for table in figure.findobj(MplTable):
+        texts += [cell.get_text() for cell in table.get_celld().values()]
+    return texts
 
 
 def translate(figure: Figure, lang: str) -> Figure:
-    """Put the words of a figure's texts (titles, labels, tick labels, legends, tables,
-    annotations) in ``lang`` ('en': as drawn; 'ru': :func:`russian`)."""
+    """Put the words of a figure's texts (:func:`figure_texts`) in ``lang`` ('en': as
+    drawn; 'ru': :func:`russian`)."""
     if lang != "ru":
         return figure
-    from matplotlib.text import Text
-
-    for text in figure.findobj(Text):
+    names = getattr(figure, NAMES_ATTRIBUTE, set())
+    for text in figure_texts(figure):
         content = text.get_text()
         if content:
-            translated = russian(content)
+            translated = russian(content, names)
             if translated != content:
                 text.set_text(translated)
     return figure
