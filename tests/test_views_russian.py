@@ -136,3 +136,27 @@ def test_translation_takes_whole_words_and_leaves_symbols_and_units():
     assert russian("timer, ground4") == "timer, ground4"  # not a word of ours
     assert russian("reduced load") == "приведённая нагрузка"  # the phrase, not 'load' alone
     assert russian("dJ_red [kg*m^2/rad]") == "dJ_red [kg*m^2/rad]"
+
+
+@pytest.mark.parametrize(("kind", "extra", "title"), [
+    ("reactions", [], "реакции в шарнирах"), ("plan", ["-p", "20"], "положение 20 из 0..72"),
+    ("angle", ["-n", "1,2"], "угол от вектора 1 к вектору 2")])
+def test_plot_command_draws_in_russian_with_lang_ru(kind, extra, title, tmp_path,
+                                                   monkeypatch):
+    import matplotlib
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+
+    monkeypatch.setitem(matplotlib.rcParams, "svg.fonttype", "none")  # texts kept as text
+    model = ROOT / "examples/crank_slider_dynamics.yaml"
+    for lang in ("ru", "en"):
+        out = tmp_path / f"{kind}_{lang}.svg"
+        result = CliRunner().invoke(app, ["plot", str(model), kind, *extra, "--lang", lang,
+                                          "-o", str(out)])
+        assert result.exit_code == 0, result.output
+        svg = out.read_text(encoding="utf-8")
+        assert (title in svg) == (lang == "ru")
+    result = CliRunner().invoke(app, ["plot", str(model), kind, "--lang", "de", "-o",
+                                      str(tmp_path / "x.svg")])
+    assert result.exit_code == 2 and "no figure language 'de'" in result.output
