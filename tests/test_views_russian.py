@@ -160,3 +160,11 @@ def test_plot_command_draws_in_russian_with_lang_ru(kind, extra, title, tmp_path
     result = CliRunner().invoke(app, ["plot", str(model), kind, "--lang", "de", "-o",
                                       str(tmp_path / "x.svg")])
     assert result.exit_code == 2 and "no figure language 'de'" in result.output
+
+
+def test_envelope_in_russian_has_no_english_words():
+    from mechloop.views.envelope import plot_envelope
+
+    model = mechloop.load_model(ROOT / "examples/cam_roller_follower.yaml")
+    figure = plot_envelope(mechloop.solve_intermediate(model))
+    assert not english(figure, [*user_names(model), *(e.name for e in model.envelopes)])

@@ -153,6 +153,11 @@ RUSSIAN_WORDS: dict[str, str] = {
     "cycles": "циклы",
     "start": "начало",
     "at": "при",
+    # envelopes (views/envelope.py)
+    "curves over the sweep": "кривые семейства",
+    "envelope": "огибающая",
+    "branch": "ветвь",
+    "over argument": "по аргументу",
     # the x-axes
     "position": "положение",
     "positions": "положения",
@@ -188,6 +193,7 @@ def model_names(model: Any) -> set[str]:
     names |= {c.name or "" for c in model.contours}
     names |= {getattr(b, "name", None) or "" for b in model.bodies.values()}
     names |= {*(model.joints or {}), *model.gears}
+    names |= {e.name for e in getattr(model, "envelopes", [])}
     for load in [*model.forces, *model.moments, *model.springs, *model.dampers]:
         names.add(getattr(load, "name", None) or "")
     return {str(n) for n in names if n}
