@@ -902,16 +902,15 @@ def sweep_command(
     import numpy as np
 
     from mechloop.model.load import load_model, locate
-    from mechloop.output.display import parse_units
+    from mechloop.output.display import TableDisplay, parse_units, plot_display
     from mechloop.synthesis.parallel import check_scheduler
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
-    from mechloop.views.display import Display
     from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
     from mechloop.views.sweep import plot_sweep
 
     _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
-    display = Display(**parse_units(units))
+    display = plot_display(TableDisplay(parse_units(units)))  # as the tables: m/rad, rad/s
     check_scheduler(scheduler)
     pairs = [parse_vary(text) for text in vary]
     m = load_model(model)
