@@ -155,6 +155,7 @@ def test_plot_command_draws_in_russian_with_lang_ru(kind, extra, title, tmp_path
         result = CliRunner().invoke(app, ["plot", str(model), kind, *extra, "--lang", lang,
                                           "-o", str(out)])
         assert result.exit_code == 0, result.output
+        assert ("записан файл" in result.output) == (lang == "ru")
         svg = out.read_text(encoding="utf-8")
         assert (title in svg) == (lang == "ru")
     result = CliRunner().invoke(app, ["plot", str(model), kind, "--lang", "de", "-o",

@@ -591,12 +591,13 @@ def plot(
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
     if lang not in ("en", "ru"):
         raise ViewError(f"no figure language {lang!r}", "use --lang en or --lang ru")
+    wrote = "записан файл" if lang == "ru" else "wrote"
     _outputs(model, force, (output, FIGURE_SUFFIXES))
     m = load_model(model)
     display = plot_display(resolve(m.display, units)) or DEFAULT_DISPLAY
     if kind == "structure":
         save_figure(translate(formula.plot_structure(m), lang), output)
-        out.print(f"wrote {output}")
+        out.print(f"{wrote} {output}")
         return
     if kind == "envelope":  # the family over the intermediate argument and its envelope
         from mechloop.solve.intermediate import solve_intermediate
@@ -606,7 +607,7 @@ def plot(
         save_figure(translate(plot_envelope(solve_intermediate(m),
                                             listed[0] if listed else None, display=display),
                               lang), output)
-        out.print(f"wrote {output}")
+        out.print(f"{wrote} {output}")
         return
     results = _dynamics(m, model) if m.bodies else solve_model(m)
     dynamic_kinds = ("reduced", "balancing", "reactions", "hodograph", "summary", "motion")
@@ -663,7 +664,7 @@ def plot(
     else:
         figure = dynamics.plot_machine_motion(results, display=display)
     save_figure(translate(figure, lang), output)
-    out.print(f"wrote {output}")
+    out.print(f"{wrote} {output}")
 
 
 def _progress(description: str):
