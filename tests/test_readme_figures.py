@@ -478,6 +478,8 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
            r"|part \d|table [\d.]+))*", "a section of the course's seed documents"),
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
+    (R, r"no ±180° jumps|\(−180°, 180°\], so a transmission", "the range the plots place an "
+        "angle difference in (a convention of views.curves.continuous_angle)"),
     (R, r"seed 000 sec\. 2\.3–2\.6", "the seed's sections on cams"),
     (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
     (R, r"\d+ positions per design", "the benchmark's setting"),
