@@ -575,7 +575,7 @@ def plot(
     mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
         --joint A -o hod.svg
     mechloop plot examples/cam_roller_follower.yaml envelope -o cam.png
-    mechloop plot examples/crank_slider_dynamics.yaml reactions --lang ru -o r.png
+    mechloop plot examples/four_bar.yaml plan --lang ru -o plan_ru.png
     ```
     """
     from mechloop.model.load import load_model
