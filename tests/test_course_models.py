@@ -28,8 +28,8 @@ import yaml
 from typer.testing import CliRunner
 
 import mechloop
-from mechloop.bundled import examples, examples_dir, find_example
 from mechloop import cli
+from mechloop.bundled import examples, examples_dir, find_example
 from mechloop.cli import app
 from mechloop.errors import HintedError
 from mechloop.report.words import TEXT

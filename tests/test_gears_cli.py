@@ -27,7 +27,8 @@ def run(*args: str):
 def test_every_gear_example_is_read_and_runs():
     files = sorted(GEARS.glob("*.yaml"))
     assert {p.name for p in files} == {"gear_pair.yaml", "planetary_choice.yaml",
-                                       "planetary_reducer.yaml"}
+                                       "planetary_reducer.yaml", "wolfrom.yaml",
+                                       "james_sun_fixed.yaml"}
     for path in files:
         doc, _ = read_gear_document(path)
         command = "pair" if doc.gear_pair is not None else "planetary"
@@ -95,6 +96,14 @@ def test_planetary_writes_the_plan_the_designs_and_a_vector_model(tmp_path):
      ":3, planetary.teeth", "missing f"),
     ("planetary:\n  scheme: simple\n  planets: 3\n  target_ratio: 1.01\n",
      ":4, planetary.target_ratio", "no design"),
+    ("planetary:\n  scheme: simple\n  teeth: {a: 20, g: 30, b: 80}\n  fixed: h\n"
+     "  input: h\n", ":5, planetary.input", "held fixed"),
+    ("planetary:\n  scheme: wolfrom\n  teeth: {a: 15, g: 24, f: 21, b: 63}\n",
+     ":3, planetary.teeth", "missing e"),
+    ("planetary:\n  scheme: wolfrom\n  teeth: {a: 15, g: 24, f: 21, b: 63, e: 60}\n"
+     "  fixed: a\n  input: b\n", ":4, planetary.fixed", "holds ring b"),
+    ("planetary:\n  scheme: simple\n  teeth: {a: 20, g: 30, b: 80, e: 60}\n",
+     ":3, planetary.teeth", "wolfrom scheme only"),
 ])
 def test_a_wrong_gear_file_is_told_by_line_and_key(tmp_path, text, where, words):
     path = tmp_path / "bad.yaml"
@@ -147,3 +156,58 @@ def test_pinion_shift_with_a_centre_distance(tmp_path):
     pair = pair_of(doc.gear_pair, file=str(path), lines=lines)
     assert pair.x[0] == 0.6 and pair.a == pytest.approx(56.5, abs=1e-9)
     assert pair.x[1] == pytest.approx(0.36, abs=2e-4)  # the KHK example's, a 56.4999 there
+
+
+def test_james_and_wolfrom_examples_print_their_ratios_and_draw_their_plans(tmp_path):
+    plan, table = tmp_path / "plan.png", tmp_path / "w.csv"
+    result = run("gear", "planetary", str(GEARS / "wolfrom.yaml"), "--plot", str(plan),
+                 "-o", str(table))
+    assert result.exit_code == 0, result.output
+    assert plan.stat().st_size > 10_000
+    frame = pd.read_csv(table).set_index("quantity")
+    assert frame.loc["ratio i_ae = ω_a/ω_e (b fixed)", "value"] == pytest.approx(64.0)
+    assert frame.loc["speed of e", "value"] == pytest.approx(1500 / 64)
+    result = run("gear", "planetary", str(GEARS / "wolfrom.yaml"), "--model",
+                 str(tmp_path / "m.yaml"))
+    assert result.exit_code == 2 and "wolfrom train is not written" in result.output
+    table = tmp_path / "j.csv"
+    result = run("gear", "planetary", str(GEARS / "james_sun_fixed.yaml"), "--plot",
+                 str(tmp_path / "j.png"), "-o", str(table))
+    assert result.exit_code == 0, result.output
+    frame = pd.read_csv(table).set_index("quantity")
+    assert frame.loc["ratio i_bh = ω_b/ω_h (a fixed)", "value"] == pytest.approx(1.25)
+    assert frame.loc["speed of a", "value"] == 0.0
+    assert frame.loc["speed of h", "value"] == pytest.approx(1200 / 1.25)
+    model = tmp_path / "james.yaml"
+    result = run("gear", "planetary", str(GEARS / "james_sun_fixed.yaml"), "--model",
+                 str(model))
+    assert result.exit_code == 0, result.output
+    frame = solve(mechloop.load_model(model)).to_frame()
+    turn = frame["a8 [deg]"].to_numpy()               # the ring b drives (argument 1)
+    assert "a1 [deg]" not in frame                    # the sun is held: a constant angle
+    assert np.allclose(frame["a2 [deg]"].to_numpy()[1:] / turn[1:], 1 / 1.25, rtol=1e-12)
+
+
+def test_the_report_gear_sheet_refuses_what_it_does_not_draw(tmp_path):
+    from mechloop.errors import ModelError
+    from mechloop.views.gear_sheet import load_gears
+
+    for name, key in (("wolfrom.yaml", "planetary.scheme"),
+                      ("james_sun_fixed.yaml", "planetary.scheme")):
+        with pytest.raises(ModelError, match="2K-H train driven by a") as caught:
+            load_gears(GEARS / name)
+        assert key in str(caught.value)
+    assert load_gears(GEARS / "planetary_reducer.yaml").train.ratio == 5.0
+
+
+def test_a_wolfrom_train_chosen_for_a_target_ratio(tmp_path):
+    path, table = tmp_path / "w.yaml", tmp_path / "designs.csv"
+    path.write_text("planetary:\n  scheme: wolfrom\n  planets: 3\n  target_ratio: 64\n"
+                    "  search: {teeth_min: 12, teeth_max: 90, show: 4}\n", encoding="utf-8")
+    result = run("gear", "planetary", str(path), "-o", str(table))
+    assert result.exit_code == 0, result.output
+    designs = pd.read_csv(table)
+    assert list(designs.columns[:6]) == ["a", "g", "f", "b", "e", "i_ae"]
+    assert designs.iloc[0, :5].tolist() == [15, 24, 21, 63, 60]
+    assert len(designs) == 4 and (designs["error [%]"] <= 1).all()
+    assert "ratio i_ae = ω_a/ω_e (b fixed)" in result.output

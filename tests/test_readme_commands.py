@@ -36,6 +36,8 @@ NOT_MECHLOOP = {
     "python3 -m venv .venv": "set-up: tests/test_docs_and_cli.py checks these two blocks "
                              "and .ci/run runs the test command verbatim",
     ". .venv/bin/activate": "activates the environment the suite runs in",
+    "apt-get update": "set-up: the headless Chromium of the web application's browser tests "
+                      "(the test command, run verbatim by .ci/run)",
     "python examples/": "run by tests/test_docs_and_cli.py::test_example_scripts_run",
     "python benchmarks/": "a benchmark the README names for its figures",
     ".venv/bin/pip install -e \".[bench]\"": "needs the optional bench extra (pylinkage)",

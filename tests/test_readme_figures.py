@@ -250,6 +250,7 @@ SLIDER = "tests/test_classical_start.py::test_slider_crank_example_has_its_strok
 BEATS = "tests/test_benchmark_problems.py::test_the_example_beats_every_published_design"
 KHK = "tests/test_gears_pair.py::test_the_khk_worked_example_of_a_profile_shifted_pair"
 TWO_ROW = "tests/test_gears_planetary.py::test_a_two_row_choice_meets_every_condition"
+WOLFROM = "tests/test_gears_james_wolfrom.py::test_the_wolfrom_example_train"
 FIGURES: list[tuple[str, str, tuple]] = [
     # energy example (the compressor)
     (R, r"efficiency \((?P<fig>28) %\)",
@@ -447,6 +448,16 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"`z = 18/(?P<fig>54)/27/99`", ("test", TWO_ROW)),
     (R, r"`z = 18/54/(?P<fig>27)/99`", ("test", TWO_ROW)),
     (R, r"`z = 18/54/27/(?P<fig>99)`", ("test", TWO_ROW)),
+    # gears: the Wolfrom example (examples/gears/wolfrom.yaml and the README)
+    ("wolfrom.yaml", r"i_ae = (?P<fig>5\.2)/", ("test", WOLFROM)),
+    ("wolfrom.yaml", r"5\.2/\((?P<fig>117)/", ("test", WOLFROM)),
+    ("wolfrom.yaml", r"/3 = (?P<fig>26),", ("test", WOLFROM)),
+    ("wolfrom.yaml", r"/\(3·3\) = (?P<fig>13)\)", ("test", WOLFROM)),
+    (R, r"`i_ae = (?P<fig>64)`", ("test", WOLFROM)),
+    (R, r"`i_bh = (?P<fig>1\.25)`", ("test", "tests/test_gears_james_wolfrom.py::"
+                                      "test_the_james_train_textbook_ratios")),
+    (R, r"`a = (?P<fig>56\.8)` mm", ("test", "tests/test_gears_published.py::"
+                                     "test_the_sun_planet_pair_from_its_printed_shifts")),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row
@@ -462,9 +473,13 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
            r"4\.3", "a cited standard or reference"),
     ("planetary_choice.yaml", r"within 1 %", "the example's search.tolerance (0.01)"),
+    (R, r"z 21/43 with\s+shifts 0\.4380/0\.0426", "the printed inputs of the Kos example "
+        "(tests/test_gears_published.py)"),
     (None, r"(seed|Seed) 00[012](,? (App\. A [\d.]+|sec\. [\d.]+( item \d+)?|Fig\. [\d.]+"
            r"|part \d|table [\d.]+))*", "a section of the course's seed documents"),
     (None, r"sec\. 1\.2\.2|eq\. 1\.1|table 3\.2", "a section of a cited document"),
+    (R, r"no ±180° jumps|\(−180°, 180°\], so a transmission", "the range the plots place an "
+        "angle difference in (a convention of views.curves.continuous_angle)"),
     (R, r"seed 000 sec\. 2\.3–2\.6", "the seed's sections on cams"),
     (None, r"(Theory|Symmetry) \d+(,? \(?(19|20)\d\d\)?)( \d+)?|(19|20)\d\d", "a citation"),
     (R, r"\d+ positions per design", "the benchmark's setting"),

@@ -234,8 +234,12 @@ def test_dynamic_columns_are_plotted_in_display_units():
     np.testing.assert_allclose(drawn["M_bal [kgf*m]"].get_ydata(),
                                dyn.forces.balancing[1] / 9.80665, rtol=1e-12)
     drawn = lines(curves.plot_parameters(dyn, ["RA_to_a2", "a2"]))
-    np.testing.assert_allclose(drawn["RA_to_a2 [deg]"].get_ydata(),
-                               frame["RA_to_a2 [deg]"], rtol=1e-12)
+    # the table's direction is wrapped to (−180°, 180°]; the plot's is the same angle made
+    # continuous (it passes 180° here instead of jumping to −180°)
+    plotted = np.asarray(drawn["RA_to_a2 [deg]"].get_ydata())
+    table = frame["RA_to_a2 [deg]"].to_numpy()
+    np.testing.assert_allclose((plotted - table + 180) % 360 - 180, 0.0, atol=1e-9)
+    assert np.abs(np.diff(table)).max() > 300 and np.abs(np.diff(plotted)).max() < 30
     drawn = lines(dynamics.plot_reactions(dyn, ["A", "S"]))
     np.testing.assert_array_equal(drawn["|RS|"].get_ydata(),
                                   np.abs(dyn.forces.reactions["S"].force))
@@ -259,8 +263,8 @@ def test_combinations_match_numpy_on_the_displayed_values():
     np.testing.assert_allclose(values, r3 * np.degrees(a2))
     assert sorted(label.split("[")[1].rstrip("]").split("*")) == ["deg", "m"]
     values, label = curves.combine(res, "dr3", "da1", "ratio")
-    np.testing.assert_allclose(values, res.rate("r3") / np.degrees(res.rate("a1")))
-    assert label == "dr3 / da1 [m/deg]"
+    np.testing.assert_allclose(values, res.rate("r3") / res.rate("a1"))
+    assert label == "dr3 / da1 [m/rad]"  # rates are in rad/s by default, as in the tables
     values, label = curves.combine(res, "a2", "a1", "ratio")
     with np.errstate(divide="ignore", invalid="ignore"):
         np.testing.assert_allclose(values, a2 / a1)
@@ -289,26 +293,23 @@ def test_wrap_angle_folds_into_the_half_open_interval():
                                [np.pi, np.pi, np.pi, np.pi, 0.0, 0.0, -0.5 * np.pi], atol=1e-15)
 
 
-def test_angle_between_wraps_across_180_degrees():
+def test_angle_between_is_continuous_across_180_degrees():
     # crank_slider: a4 = 90 deg fixed, a1 = 0..360 deg over 72 positions, so a1 - a4 runs
-    # from -90 to 270 deg and must jump from +180 to -175 deg between positions 54 and 55
+    # from -90 to 270 deg: continuous through +180 deg (no jump to -175 deg), and the middle
+    # of its range (90 deg) lies in (-180, 180], so that branch is kept
     res = kinematics("crank_slider.yaml")
     angle, rate = curves.angle_between(res, 4, 1)
     expected = np.radians(5.0 * np.arange(73) - 90.0)
-    assert np.all(angle > -np.pi) and np.all(angle <= np.pi)
-    np.testing.assert_allclose(np.exp(1j * angle), np.exp(1j * expected), atol=1e-12)
-    assert math.isclose(abs(angle[54]), np.pi, rel_tol=1e-12)
-    assert math.isclose(angle[55], np.radians(-175.0), rel_tol=1e-12)
-    np.testing.assert_allclose(angle[:54], expected[:54], atol=1e-12)
+    np.testing.assert_allclose(angle, expected, atol=1e-12)
     np.testing.assert_array_equal(rate, res.rate("a1") - res.rate("a4"))
-    back, _ = curves.angle_between(res, "a1", "a4")  # 90 - a1: reaches -180 at a1 = 270
-    assert math.isclose(abs(back[54]), np.pi, rel_tol=1e-12) and np.all(back > -np.pi)
+    back, _ = curves.angle_between(res, "a1", "a4")  # 90 - a1: 90 down to -270 deg
+    np.testing.assert_allclose(back, -expected, atol=1e-12)
 
     fig = curves.plot_angle_between(res, 4, 1)
     line = lines(fig)["a1 − a4 [deg]"]
     y = np.asarray(line.get_ydata(), dtype=float)
-    assert np.isnan(y).sum() == 1  # the line is broken once, at the wrap
-    np.testing.assert_allclose(y[np.isfinite(y)], np.degrees(angle))
+    assert np.isfinite(y).all()  # one unbroken line
+    np.testing.assert_allclose(y, 5.0 * np.arange(73) - 90.0, atol=1e-10)
     with pytest.raises(ViewError, match="no vector 9"):
         curves.angle_between(res, 1, 9)
 
@@ -329,10 +330,10 @@ def test_increment_is_zero_at_its_position_and_keeps_the_derivatives():
     assert len(fig.axes) == 3
     top, middle, bottom = (ax.get_lines()[0].get_ydata() for ax in fig.axes)
     np.testing.assert_allclose(top, np.degrees(delta), atol=1e-12)
-    np.testing.assert_allclose(middle, np.degrees(rate))
-    np.testing.assert_allclose(bottom, np.degrees(accel))
-    assert [ax.get_ylabel() for ax in fig.axes] == ["Δa3 [deg]", "da3 [deg/s]",
-                                                   "dda3 [deg/s^2]"]
+    np.testing.assert_array_equal(middle, rate)
+    np.testing.assert_array_equal(bottom, accel)
+    assert [ax.get_ylabel() for ax in fig.axes] == ["Δa3 [deg]", "da3 [rad/s]",
+                                                   "dda3 [rad/s^2]"]
     with pytest.raises(ViewError, match="position 73"):
         curves.increment(res, "a3", 73)
     with pytest.raises(ViewError, match="not a vector parameter"):
@@ -399,8 +400,8 @@ def test_display_conversions_agree_with_pint():
                 moment="kN*m", inertia="kg*cm^2")
     cases = [("force", "N", "kgf"), ("power", "W", "hp"), ("angular_velocity", "rad/s", "rpm"),
              ("length", "m", "mm"), ("velocity", "m/s", "mm/s"), ("moment", "N*m", "kN*m"),
-             ("inertia", "kg*m^2", "kg*cm^2"), ("angular_acceleration", "rad/s^2", "deg/s^2"),
-             ("length/angle", "m/rad", "mm/deg")]
+             ("inertia", "kg*m^2", "kg*cm^2"), ("angular_acceleration", "rad/s^2", "rad/s^2"),
+             ("length/angle", "m/rad", "mm/rad")]
     values = np.array([0.5, 1.0, 123.0])
     for kind, si, shown in cases:
         np.testing.assert_allclose(d.convert(values, kind), values * pint_factor(si, shown),

@@ -560,6 +560,8 @@ def plot(
     panels: Annotated[bool, typer.Option(help="parameters: one stacked panel per unit "
                       "(default: a y-axis per unit up to 3 units, panels for more)")
                       ] = False,
+    lang: Annotated[str, typer.Option(help="language of the figure's texts: en or ru "
+                                      "(default: en)")] = "en",
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -573,6 +575,7 @@ def plot(
     mechloop plot examples/crank_slider_dynamics.yaml hodograph \\
         --joint A -o hod.svg
     mechloop plot examples/cam_roller_follower.yaml envelope -o cam.png
+    mechloop plot examples/four_bar.yaml plan --lang ru -o plan_ru.png
     ```
     """
     from mechloop.model.load import load_model
@@ -580,26 +583,31 @@ def plot(
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
     from mechloop.views import plan as plans
-    from mechloop.views.display import Display
+    from mechloop.views.display import DEFAULT_DISPLAY
     from mechloop.views.figure import FIGURE_SUFFIXES, ViewError, save_figure
+    from mechloop.views.russian import translate
 
     if kind not in PLOTS:
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
+    if lang not in ("en", "ru"):
+        raise ViewError(f"no figure language {lang!r}", "use --lang en or --lang ru")
+    wrote = "записан файл" if lang == "ru" else "wrote"
     _outputs(model, force, (output, FIGURE_SUFFIXES))
     m = load_model(model)
-    display = plot_display(resolve(m.display, units)) or Display()
+    display = plot_display(resolve(m.display, units)) or DEFAULT_DISPLAY
     if kind == "structure":
-        save_figure(formula.plot_structure(m), output)
-        out.print(f"wrote {output}")
+        save_figure(translate(formula.plot_structure(m), lang), output)
+        out.print(f"{wrote} {output}")
         return
     if kind == "envelope":  # the family over the intermediate argument and its envelope
         from mechloop.solve.intermediate import solve_intermediate
         from mechloop.views.envelope import plot_envelope
 
         listed = _split(names)
-        save_figure(plot_envelope(solve_intermediate(m), listed[0] if listed else None,
-                                  display=display), output)
-        out.print(f"wrote {output}")
+        save_figure(translate(plot_envelope(solve_intermediate(m),
+                                            listed[0] if listed else None, display=display),
+                              lang), output)
+        out.print(f"{wrote} {output}")
         return
     results = _dynamics(m, model) if m.bodies else solve_model(m)
     dynamic_kinds = ("reduced", "balancing", "reactions", "hodograph", "summary", "motion")
@@ -655,8 +663,8 @@ def plot(
         figure = dynamics.plot_summary(results, display=display)
     else:
         figure = dynamics.plot_machine_motion(results, display=display)
-    save_figure(figure, output)
-    out.print(f"wrote {output}")
+    save_figure(translate(figure, lang), output)
+    out.print(f"{wrote} {output}")
 
 
 def _progress(description: str):
@@ -910,16 +918,15 @@ def sweep_command(
     import numpy as np
 
     from mechloop.model.load import load_model, locate
-    from mechloop.output.display import parse_units
+    from mechloop.output.display import TableDisplay, parse_units, plot_display
     from mechloop.synthesis.parallel import check_scheduler
     from mechloop.synthesis.sweep import parse_vary
     from mechloop.synthesis.sweep import sweep as run_sweep
-    from mechloop.views.display import Display
     from mechloop.views.figure import FIGURE_SUFFIXES, save_figure
     from mechloop.views.sweep import plot_sweep
 
     _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
-    display = Display(**parse_units(units))
+    display = plot_display(TableDisplay(parse_units(units)))  # as the tables: m/rad, rad/s
     check_scheduler(scheduler)
     pairs = [parse_vary(text) for text in vary]
     m = load_model(model)
@@ -1426,6 +1433,42 @@ def gear_planetary_command(
 
     run_planetary(model, {}, out=out, plot=plot, model=vector_model, table=output,
                   force=force)
+
+
+@app.command(name="serve", cls=_Command)
+@user_errors
+def serve(
+    target: Annotated[Path | None, typer.Argument(help="a model file (opened first) or a "
+                      "folder; files are read and written only inside that folder "
+                      "(default: the current folder)", show_default=False)] = None,
+    host: Annotated[str, typer.Option(help="address to listen on; another than 127.0.0.1 "
+                    "makes the server reachable from other machines (a token is then "
+                    "required)")] = "127.0.0.1",
+    port: Annotated[int | None, typer.Option(help="port (default: a free one)")] = None,
+    browser: Annotated[bool, typer.Option("--browser/--no-browser", help="open the "
+                       "browser at the address (default: open)")] = True,
+    time_limit: Annotated[float, typer.Option("--time-limit", min=0.1, help="longest "
+                          "solve, s (default: 60)")] = 60.0,
+) -> None:
+    """Start the web application: edit a model with live validation, see the mechanism move,
+    plot a parameter, read the results table and download the report, in the browser.
+
+    Example:
+
+    ```
+    mechloop serve examples/crank_slider.yaml
+    ```
+    """
+    from mechloop.errors import HintedError
+
+    try:
+        from mechloop.web.serve import run
+    except ImportError as exc:  # starlette / uvicorn: the web extra
+        raise HintedError(f"the web application needs {exc.name}",
+                          'pip install "mechloop[web]"') from None
+
+    run(target, host=host, port=port, browser=browser, solve_seconds=time_limit,
+        say=lambda text: out.print(text, markup=False))
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -125,11 +125,17 @@ def run_planetary(path: Path | None, options: dict[str, Any], *, out: Console,
                   f"{spec.planets} planets (coaxial, assembled, clear of each other)")
         if not len(choice):
             raise located_error([no_design(spec)], file, lines)
-        _print_frame(out, frame, f"Designs of the {choice.scheme.name} scheme, best first")
+        _print_frame(out, frame, f"Designs of the {choice.scheme_name} scheme, best first")
         train = choice.train(0, spec.module, spec.addendum)
         out.print("the best design is analysed below")
+    from mechloop.gears.wolfrom import WolfromTrain
+
+    wolfrom = isinstance(train, WolfromTrain)
+    if wolfrom and model is not None:
+        raise HintedError("--model writes the 2K-H schemes (simple, two-row) as vector "
+                          "models; the wolfrom train is not written", "drop --model")
     summary = train_table(train, spec.input_speed)
-    title = spec.name or f"Planetary train ({train.scheme.title})"
+    title = spec.name or f"Planetary train ({train.title if wolfrom else train.scheme.title})"
     _print_frame(out, summary, title + ": " + ", ".join(f"z_{k} = {v}" for k, v in
                                                          train.teeth.items()))
     for ok, text in ((train.coaxial, "coaxiality"), (train.assembles, "assembly"),
@@ -145,10 +151,11 @@ def run_planetary(path: Path | None, options: dict[str, Any], *, out: Console,
         write_frame(frame if frame is not None else summary, table)
         out.print(f"wrote {table}")
     if plot is not None:
-        from mechloop.gears.velocity_plan import plot_velocity_plan
+        from mechloop.gears.velocity_plan import plot_velocity_plan, plot_wolfrom_plan
         from mechloop.views.figure import save_figure
 
-        out.print(f"wrote {save_figure(plot_velocity_plan(train, spec.input_speed), plot)}")
+        draw = plot_wolfrom_plan if wolfrom else plot_velocity_plan
+        out.print(f"wrote {save_figure(draw(train, spec.input_speed), plot)}")
     if model is not None:
         from mechloop.gears.vector_model import vector_model
         from mechloop.model.load import model_from_data

@@ -20,6 +20,7 @@ from mechloop.gears.checks import minimum_shift
 from mechloop.gears.pair import GearPair, gear_pair
 from mechloop.gears.planetary import SCHEMES, PlanetaryTrain, planetary_train
 from mechloop.gears.sliding import balanced_shift
+from mechloop.gears.wolfrom import WolfromTrain, wolfrom_train
 from mechloop.model.document import LineMap, located_error, read_document, validate_data
 from mechloop.model.numbers import Number
 from mechloop.model.signals import _Frozen
@@ -74,16 +75,24 @@ class PlanetarySpec(_Frozen):
     target ratio to choose them for."""
 
     name: str | None = Field(None, description="a title")
-    scheme: Literal[tuple(SCHEMES)] = Field("simple", description="simple, double_planet, "  # type: ignore[valid-type]
-                                            "two_rings or two_suns")
+    scheme: Literal[(*SCHEMES, "wolfrom")] = Field(  # type: ignore[valid-type]
+        "simple", description="simple (James), double_planet, two_rings, two_suns or "
+        "wolfrom (sun a, stepped planet g/f, fixed ring b, output ring e)")
     planets: Annotated[int, Field(ge=1, le=30)] = Field(3, description="number of planets k")
     module: Positive = Field(1.0, description="module m_n, mm (one module, unshifted)")
     addendum: Coefficient = Field(1.0, description="addendum coefficient h_a*")
-    teeth: dict[Literal["a", "g", "f", "b"], Teeth] | None = Field(
-        None, description="tooth numbers {a, g, b} (simple) or {a, g, f, b}")
+    teeth: dict[Literal["a", "g", "f", "b", "e"], Teeth] | None = Field(
+        None, description="tooth numbers {a, g, b} (simple), {a, g, f, b} (two-row) or "
+        "{a, g, f, b, e} (wolfrom)")
+    fixed: Literal["a", "b", "h"] = Field("b", description="the member held: central gear "
+                                          "a or b, or the carrier h (2K-H schemes)")
+    input: Literal["a", "b", "h"] = Field("a", description="the driving member; the "
+                                          "output is the third of a, b and h")
     target_ratio: Annotated[float, Field(gt=-1e6, lt=1e6)] | None = Field(
-        None, description="the ratio i_ah = ω_a/ω_h to choose the tooth numbers for")
-    input_speed: Number = Field(1000.0, description="speed of a, rpm (velocity plan)")
+        None, description="the ratio ω_input/ω_output (i_ah by default) to choose the "
+        "tooth numbers for")
+    input_speed: Number = Field(1000.0, description="speed of the input member, rpm "
+                                "(velocity plan)")
     search: SearchSpec = Field(default_factory=SearchSpec, description="limits of the choice")
 
 
@@ -165,9 +174,16 @@ def pair_of(spec: PairSpec, *, file: str | None = None, lines: LineMap | None = 
 
 
 def train_of(spec: PlanetarySpec, *, file: str | None = None,
-             lines: LineMap | None = None) -> PlanetaryTrain | None:
-    """The :class:`PlanetaryTrain` of a ``planetary:`` section with tooth numbers (None
-    when it only asks for a choice); problems told at their key and line."""
+             lines: LineMap | None = None) -> PlanetaryTrain | WolfromTrain | None:
+    """The :class:`PlanetaryTrain` (or :class:`WolfromTrain`) of a ``planetary:`` section
+    with tooth numbers (None when it only asks for a choice); problems told at their key
+    and line."""
+    if spec.scheme == "wolfrom":
+        return _wolfrom_of(spec, file, lines or {})
+    if spec.fixed == spec.input:
+        raise located_error([Problem(("planetary", "input"), f"the input {spec.input} is "
+                                     "the member held fixed",
+                                     "take another input of a, b and h")], file, lines or {})
     if spec.teeth is None:
         if spec.target_ratio is None:
             raise located_error([Problem(("planetary",), "neither tooth numbers nor a "
@@ -175,27 +191,60 @@ def train_of(spec: PlanetarySpec, *, file: str | None = None,
                                          "or target_ratio: 5")], file, lines or {})
         return None
     try:
+        if "e" in spec.teeth:
+            raise HintedError("a ring e belongs to the wolfrom scheme only",
+                              "remove e, or write scheme: wolfrom")
         return planetary_train(spec.scheme, dict(spec.teeth), spec.planets, spec.module,
-                               spec.addendum)
+                               spec.addendum, fixed=spec.fixed, driver=spec.input)
     except HintedError as exc:
         raise located_error([Problem(("planetary", "teeth"), exc.message, exc.hint)], file,
                             lines or {}) from None
 
 
+def _wolfrom_of(spec: PlanetarySpec, file: str | None, lines: LineMap
+                ) -> WolfromTrain | None:
+    problems = []
+    if spec.teeth is None and spec.target_ratio is None:
+        problems.append(Problem(("planetary",), "neither tooth numbers nor a target ratio",
+                                "add teeth: {a: 15, g: 24, f: 21, b: 63, e: 60} or "
+                                "target_ratio: 64"))
+    if (spec.fixed, spec.input) != ("b", "a"):
+        key = "fixed" if spec.fixed != "b" else "input"
+        problems.append(Problem(("planetary", key), "the wolfrom train holds ring b and "
+                                "is driven by the sun a (its output is ring e)",
+                                "remove fixed: and input:"))
+    if not problems and spec.teeth is None:
+        return None
+    if not problems:
+        try:
+            return wolfrom_train(dict(spec.teeth), spec.planets, spec.module, spec.addendum)
+        except HintedError as exc:
+            problems.append(Problem(("planetary", "teeth"), exc.message, exc.hint))
+    raise located_error(problems, file, lines)
+
+
 def choice_of(spec: PlanetarySpec, *, file: str | None = None,
               lines: LineMap | None = None):
     """The tooth numbers a ``planetary:`` section's ``target_ratio`` and ``search:`` ask
-    for (a :class:`~mechloop.gears.tooth_search.ToothChoice`, best first, possibly empty);
+    for (a :class:`~mechloop.gears.tooth_search.Choice` or ``WolfromChoice``, best first,
+    possibly empty);
     a bad search is told at its key and line."""
     from mechloop.gears.planetary import scheme_of
     from mechloop.gears.tooth_search import choose_teeth
 
     s = spec.search
     try:
+        if spec.scheme == "wolfrom":
+            from mechloop.gears.tooth_search import choose_wolfrom_teeth
+
+            return choose_wolfrom_teeth(float(spec.target_ratio), spec.planets,
+                                        teeth_min=s.teeth_min, teeth_max=s.teeth_max,
+                                        tolerance=s.tolerance, ha=spec.addendum)
         return choose_teeth(scheme_of(spec.scheme), float(spec.target_ratio), spec.planets,
                             teeth_min=s.teeth_min, teeth_max=s.teeth_max,
                             ring_difference_min=s.ring_difference_min,
-                            tolerance=s.tolerance, ha=spec.addendum)
+                            tolerance=s.tolerance, ha=spec.addendum, fixed=spec.fixed,
+                            driver=spec.input)
     except HintedError as exc:
         raise located_error([Problem(("planetary", "search"), exc.message, exc.hint)],
                             file, lines or {}) from None

@@ -27,6 +27,7 @@ from mechloop.gears.checks import (
     minimum_shift,
 )
 from mechloop.gears.involute import chordal_thickness, inv, thickness_on_circle
+from mechloop.gears.span import base_tangent_length, span_teeth
 
 
 @dataclass(frozen=True)
@@ -133,6 +134,16 @@ class GearPair:
     def chordal(self) -> tuple[np.ndarray, np.ndarray]:
         """Chordal thickness on the reference circle and its height from the tip."""
         return chordal_thickness(self.s, self.d, self.d_a)
+
+    @property
+    def k_span(self) -> np.ndarray:
+        """Teeth in the span of the base tangent length (see :mod:`.span`)."""
+        return span_teeth(self.zs, self.xs, self.alpha_n)
+
+    @property
+    def W_k(self) -> np.ndarray:
+        """Base tangent length over ``k_span`` teeth (span measurement)."""
+        return base_tangent_length(self.m_n, self.zs, self.xs, self.alpha_n, self.k_span)
 
     @property
     def x_min(self) -> np.ndarray:

@@ -8,7 +8,14 @@ ring).  Willis' formula for the train seen from the carrier:
 
     i_ab^h = (ω_a − ω_h)/(ω_b − ω_h) = σ_a σ_b · z_g z_b / (z_a z_f),
 
-and with ``b`` fixed ``i_ah = ω_a/ω_h = 1 − i_ab^h``.  Conditions of a design with ``k``
+and with ``b`` fixed ``i_ah = ω_a/ω_h = 1 − i_ab^h``.  Any member may be the fixed one (the
+simple scheme is the James train: sun, planets, ring, carrier), the formula read for it:
+
+* ``b`` fixed: ``i_ah = 1 − i_ab^h`` (and ``i_ha = 1/i_ah``);
+* ``a`` fixed: ``i_bh = 1 − 1/i_ab^h`` (and ``i_hb = 1/i_bh``);
+* the carrier ``h`` fixed (an ordinary train): ``i_ab = i_ab^h`` (and ``i_ba = 1/i_ab``).
+
+Conditions of a design with ``k``
 planets equally spaced, one module, unshifted gears:
 
 * coaxiality: ``z_a + σ_a z_g = z_b + σ_b z_f`` (both rows have the same centre distance;
@@ -74,6 +81,34 @@ def reduction_ratio(scheme: Scheme, z_a, z_g, z_f, z_b) -> np.ndarray:
     return 1.0 - willis_ratio(scheme, z_a, z_g, z_f, z_b)
 
 
+MEMBERS = ("a", "b", "h")
+
+
+def check_members(fixed: str, driver: str) -> None:
+    """A hinted error unless ``fixed`` and ``driver`` are two different members of
+    ``a, b, h``."""
+    if fixed not in MEMBERS or driver not in MEMBERS or fixed == driver:
+        raise HintedError(f"fixed {fixed!r} and input {driver!r}: take two different "
+                          "members of a, b and h", "e.g. fixed: b, input: a")
+
+
+def member_ratio(willis: ArrayLike, fixed: str = "b", driver: str = "a") -> np.ndarray:
+    """``i = ω_driver/ω_output`` of a 2K-H train with the member ``fixed`` held, from
+    Willis' ``i_ab^h``; the output is the third of ``a, b, h``.  Broadcasts; ``inf`` where
+    the output cannot turn (``i_ab^h = 1`` with a central gear held)."""
+    check_members(fixed, driver)
+    w = np.asarray(willis, float)
+    with np.errstate(divide="ignore"):
+        forward = {"b": 1.0 - w, "a": 1.0 - 1.0 / w, "h": w}[fixed]  # a or b in → out
+        first = {"b": "a", "a": "b", "h": "a"}[fixed]
+        return forward if driver == first else 1.0 / forward
+
+
+def output_member(fixed: str, driver: str) -> str:
+    """The member of ``a, b, h`` that is neither fixed nor the driver."""
+    return next(m for m in MEMBERS if m not in (fixed, driver))
+
+
 def centre_numbers(scheme: Scheme, z_a, z_g, z_f, z_b) -> tuple[np.ndarray, np.ndarray]:
     """``(z_a + σ_a z_g, z_b + σ_b z_f)``: twice the centre distances of the two rows in
     modules (equal when the train is coaxial).  Broadcasts."""
@@ -118,6 +153,12 @@ class PlanetaryTrain:
     k: int
     m_n: float = 1.0
     ha: float = 1.0
+    fixed: str = "b"   #: the member held: a, b or h
+    driver: str = "a"  #: the input member (the output is the third of a, b, h)
+
+    @property
+    def output(self) -> str:
+        return output_member(self.fixed, self.driver)
 
     @property
     def teeth(self) -> dict[str, int]:
@@ -132,8 +173,9 @@ class PlanetaryTrain:
 
     @property
     def ratio(self) -> float:
-        """``i_ah = ω_a/ω_h`` with ``b`` fixed."""
-        return 1.0 - self.willis
+        """``ω_driver/ω_output`` with ``fixed`` held (``i_ah = 1 − i_ab^h`` by default:
+        ``a`` in, ``b`` fixed, the carrier out)."""
+        return float(member_ratio(self.willis, self.fixed, self.driver))
 
     @property
     def a_w(self) -> float:
@@ -160,12 +202,14 @@ class PlanetaryTrain:
         return self.m_n * float(neighbour_margin(self.scheme, self.z_a, self.z_g, self.z_f,
                                                  self.k, self.ha))
 
-    def speeds(self, omega_a: float = 1.0) -> dict[str, float]:
-        """Angular speeds of every member for the input speed ``omega_a`` (``b`` fixed):
-        ``a``, ``h`` (carrier), ``g`` (the planet, absolute) and ``b`` (0)."""
-        omega_h = omega_a / self.ratio
+    def speeds(self, omega_in: float = 1.0) -> dict[str, float]:
+        """Angular speeds of every member for the input speed ``omega_in`` of the driver
+        (``b`` fixed and ``a`` driving by default): ``a``, ``h`` (carrier), ``g`` (the
+        planet, absolute) and ``b`` — the fixed one 0."""
+        omega = {self.fixed: 0.0, self.driver: omega_in, self.output: omega_in / self.ratio}
+        omega_a, omega_h = omega["a"], omega["h"]
         omega_g = omega_h - self.scheme.sigma_a * self.z_a / self.z_g * (omega_a - omega_h)
-        return {"a": omega_a, "h": omega_h, "g": omega_g, "b": 0.0}
+        return {"a": omega_a, "h": omega_h, "g": omega_g, "b": omega["b"]}
 
     def pitch_radii(self) -> dict[str, float]:
         """Reference radii ``m z/2`` of every gear."""
@@ -174,13 +218,16 @@ class PlanetaryTrain:
 
 
 def planetary_train(scheme: str | Scheme, teeth: dict[str, int], k: int, m_n: float = 1.0,
-                    ha: float = 1.0) -> PlanetaryTrain:
+                    ha: float = 1.0, *, fixed: str = "b", driver: str = "a"
+                    ) -> PlanetaryTrain:
     """A :class:`PlanetaryTrain` from a scheme name and ``teeth = {a, g, b}`` (simple) or
     ``{a, g, f, b}`` (two-row schemes).
 
     >>> t = planetary_train("simple", {"a": 20, "g": 30, "b": 80}, 4)
     >>> t.ratio, t.coaxial, t.assembles, t.assembly
     (5.0, True, True, 25.0)
+    >>> planetary_train("simple", {"a": 20, "g": 30, "b": 80}, 4, fixed="a", driver="h").ratio
+    0.8
     """
     s = scheme if isinstance(scheme, Scheme) else scheme_of(scheme)
     need = ("a", "g", "f", "b") if s.double else ("a", "g", "b")
@@ -194,10 +241,11 @@ def planetary_train(scheme: str | Scheme, teeth: dict[str, int], k: int, m_n: fl
     if k < 1 or math.floor(k) != k:
         raise HintedError(f"{k} planets: write a whole number of planets, 1 or more",
                           "e.g. planets: 3")
+    check_members(fixed, driver)
     train = PlanetaryTrain(s, int(teeth["a"]), int(teeth["g"]), int(z_f), int(teeth["b"]),
-                           int(k), float(m_n), float(ha))
-    if train.willis == 1.0:
-        raise HintedError("with these teeth i_ab^h = 1: a and the carrier would turn "
-                          "together with b fixed only if nothing turned (i_ah = 0)",
-                          "change a tooth number of one row")
+                           int(k), float(m_n), float(ha), fixed, driver)
+    if train.willis == 1.0 and fixed != "h":
+        raise HintedError(f"with these teeth i_ab^h = 1: a and b turn alike about the "
+                          f"carrier, so with {fixed} fixed nothing can turn",
+                          "change a tooth number of one row (or hold the carrier h)")
     return train

@@ -95,6 +95,12 @@ def read_document(path: str | os.PathLike[str]) -> tuple[Any, LineMap]:
     except OSError as exc:
         raise ModelFileError([Problem((), f"cannot read the file: {exc.strerror or exc}",
                                       "check the path and its permissions")], file) from None
+    return parse_document(text, file)
+
+
+def parse_document(text: str, file: str | None = None) -> tuple[Any, LineMap]:
+    """Parse the YAML/JSON ``text`` of a model (``file``: the name its errors carry) into
+    plain data and a map of lines; errors name the line."""
     check_events(text, file)
     try:
         loader = _Loader(text)

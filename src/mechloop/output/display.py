@@ -195,13 +195,16 @@ def resolve(section: DisplaySection | None, units: str | None = None,
 
 def plot_display(td: TableDisplay | None) -> Display | None:
     """The plot display that agrees with the tables of ``td`` (None: the plot's own
-    default): the named units, angular velocity and acceleration in rad/s and rad/s^2
-    unless named, the digits of the tables when given."""
+    default, which agrees with the tables written without a display): the named units,
+    angular velocity and acceleration in rad/s and rad/s^2 unless named, an angle inside
+    another derived kind (m/rad, kg*m^2/rad, rad/rad) in the named angle unit or else in
+    rad, the digits of the tables when given."""
     if td is None:
         return None
     from mechloop.views.display import Display
 
-    table = {"angular_velocity": "rad/s", "angular_acceleration": "rad/s^2"}
+    table = {"angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
+             "derived_angle": td.units.get("angle", "rad")}
     return Display(**(table | td.units), **({"digits": td.digits} if td.digits else {}))
 
 

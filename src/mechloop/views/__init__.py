@@ -14,6 +14,8 @@ file); :func:`mechloop.views.figure.save_figure` writes PNG, SVG or PDF atomical
 * ``motion`` — the motion in time (:class:`~mechloop.dynamics.simulate.Simulation`):
   angle, speed, acceleration over time and the phase portrait;
 * ``formula`` — the structure and parametric formulas drawn;
+* ``russian`` — the figures' words in Russian: ``translate(figure, "ru")`` after drawing,
+  the user's names (marked by the views with ``keep_names``) kept as written;
 * ``report`` — the course-project report (PDF, English and Russian).
 
 May import the model, the solver and the dynamics; nothing imports the views but the CLI.

@@ -144,8 +144,8 @@ class _Source:
         if name in self.columns():
             values, unit = self.columns()[name]
             kind = COLUMN_KINDS.get(unit)
-            if unit == "deg":
-                values = np.radians(values)
+            if unit == "deg":  # a reaction's direction: continuous, not wrapped
+                values = continuous_angle(np.radians(values), centred=True)
             return Series(name, values, kind, "" if kind else unit)
         raise self._unknown(name)
 
@@ -154,7 +154,8 @@ class _Source:
         base = "length" if letter == "r" else "angle"
         divisor = {"s": "time", "rad": "angle", "m": "length"}[self.kin.derivative_units()[0]]
         if order == "":
-            return Series(name, self.kin.value(parameter), base)
+            value = self.kin.value(parameter)
+            return Series(name, continuous_angle(value) if letter == "a" else value, base)
         if order == "d":
             return Series(name, self.kin.rate(parameter), f"{base}/{divisor}")
         return Series(name, self.kin.accel(parameter), f"{base}/{divisor}^2")
@@ -452,6 +453,31 @@ def wrap_angle(angle: Array) -> Array:
     return np.pi - np.mod(np.pi - angle, 2 * np.pi)
 
 
+def continuous_angle(angle: Array, *, centred: bool = False) -> Array:
+    """``angle`` (rad, shape (P,)) made continuous over the positions: within each unbroken
+    stretch (a run of finite values; a NaN, where the chain breaks, ends it) every step is
+    taken as the smallest turn, ``np.unwrap``, so no ±180° wrap shows as a jump.
+
+    The branch of each stretch: as given at its first position (``centred=False``: a
+    solver's angle keeps its values); or (``centred=True``: an angle difference, a
+    reaction's direction) the whole stretch shifted by whole turns so that the middle of
+    its range, ``(min + max) / 2``, lies in (−π, π] — a transmission angle reads
+    40°…140° (or −140°…−40°), a difference turning a full revolution 0°…360°.
+    NaN stay NaN; shape (P,), rad.
+    """
+    out = np.array(angle, dtype=float)
+    finite = np.isfinite(out)
+    edges = np.flatnonzero(np.diff(np.concatenate(([0], finite.astype(np.int8), [0]))))
+    for start, stop in edges.reshape(-1, 2):  # one pass per unbroken stretch (few)
+        piece = np.unwrap(out[start:stop])
+        if centred:
+            middle = 0.5 * (piece.min() + piece.max())
+            turns = np.round((wrap_angle(middle) - middle) / (2 * np.pi))
+            piece = piece + 2 * np.pi * turns
+        out[start:stop] = piece
+    return out
+
+
 def _vector_angle(v: int | str) -> str:
     text = str(v).strip()
     number = text[1:] if text[:1] == "a" else text
@@ -462,8 +488,10 @@ def _vector_angle(v: int | str) -> str:
 
 
 def angle_between(results: AnyResults, v1: int | str, v2: int | str) -> tuple[Array, Array]:
-    """The angle from vector ``v1`` to vector ``v2``: ``α_v2 − α_v1`` wrapped to (−π, π]
-    (rad, shape (P,)), and its rate (rad/s; an analog without model time).
+    """The angle from vector ``v1`` to vector ``v2``: ``α_v2 − α_v1`` continuous over the
+    positions, each unbroken stretch with the middle of its range in (−π, π]
+    (:func:`continuous_angle`; rad, shape (P,)), and its rate (rad/s; an analog without
+    model time).
 
     Vectors are given by number (3) or angle name ('a3').  The transmission angle of a
     four-bar is the angle between its coupler and its rocker; a pressure angle is the
@@ -477,7 +505,7 @@ def angle_between(results: AnyResults, v1: int | str, v2: int | str) -> tuple[Ar
             raise ViewError(f"no vector {name[1:]} in this model",
                             f"use one of vectors {vectors}")
     kin = source.kin
-    return (wrap_angle(kin.value(second) - kin.value(first)),
+    return (continuous_angle(kin.value(second) - kin.value(first), centred=True),
             kin.rate(second) - kin.rate(first))
 
 
@@ -490,8 +518,7 @@ def plot_angle_between(results: AnyResults, v1: int | str, v2: int | str, *,
     first, second = _vector_angle(v1), _vector_angle(v2)
     d1 = source.get(f"d{second}").kind
     name = f"{second} − {first}"
-    curves = [Series(name, angle, "angle", period=2 * np.pi),
-              Series(f"d({name})", rate, d1)]
+    curves = [Series(name, angle, "angle"), Series(f"d({name})", rate, d1)]
     figure, ax = axes_for(ax)
     draw_curves(ax, source.get(against), curves, display)
     ax.set_title(f"angle from vector {first[1:]} to vector {second[1:]}")

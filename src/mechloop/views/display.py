@@ -9,14 +9,21 @@ A *kind* is one of :data:`BASE_KINDS` (``"length"``, ``"angle"``, ``"force"``, .
 the named derived kinds in :data:`DERIVED_KINDS` (``"velocity"`` is ``"length/time"``,
 ``"angular_velocity"`` is ``"angle/time"``, ...), or a quotient of products of base kinds
 written the same way (``"inertia/angle"``, ``"length/angle^2"``).  A derived unit follows
-the base units: with ``angle="deg"`` an angular velocity is shown in deg/s, unless
-``angular_velocity`` names its own unit (``"rpm"``).
+the base units, except that an angle inside a derived kind is in ``derived_angle``
+(default ``"rad"``, as the result tables write it): angles are shown in degrees, but an
+angular velocity in rad/s, an analog ``dφ/dφ1`` in rad/rad (a plain number), ``dr/dφ1``
+in m/rad and ``dJ_red`` in kg*m^2/rad — unless ``angular_velocity`` names its own unit
+(``"rpm"``) or ``derived_angle=None`` makes the derived kinds follow ``angle``.
 
 >>> d = Display(force="kgf")
 >>> round(float(d.convert(9.80665, "force")), 9), d.label("force")
 (1.0, 'kgf')
->>> d.label("angular_acceleration")
-'deg/s^2'
+>>> d.label("angle"), d.label("angular_velocity"), d.label("angular_acceleration")
+('deg', 'rad/s', 'rad/s^2')
+>>> d.label("length/angle"), d.label("inertia/angle"), d.label("angle/angle")
+('m/rad', 'kg*m^2/rad', 'rad/rad')
+>>> Display(derived_angle=None).label("angular_velocity")
+'deg/s'
 """
 
 from __future__ import annotations
@@ -110,6 +117,11 @@ def _power(unit: str, exponent: int) -> str:
     return f"({unit})^{exponent}" if re.search(r"[*/^]", unit) else f"{unit}^{exponent}"
 
 
+def _is_derived(top: tuple, bottom: tuple) -> bool:
+    """Whether a parsed kind is derived (not one base kind to the first power)."""
+    return bool(bottom) or len(top) != 1 or top[0][1] != 1
+
+
 def _check_unit(name: str, unit: str, kind: str) -> None:
     """ViewError unless ``unit`` is a pint unit of ``kind``."""
     si = BASE_KINDS[kind][0] if kind in BASE_KINDS else SI_DERIVED[DERIVED_KINDS[kind]]
@@ -137,6 +149,9 @@ class Display:
 
     Each field is a pint unit for one kind of quantity; ``angular_velocity`` overrides
     the derived ``angle/time`` (None: derived, e.g. deg/s) — ``"rpm"`` for machine speed.
+    ``derived_angle`` is the unit of an angle inside a derived kind (a rate, an analog,
+    a quantity per angle; None: the same as ``angle``) — by default rad, so that only
+    angles themselves are in degrees, as in the result tables.
     ``digits`` is the number of significant digits in tables and legends.  An unknown
     unit, or one of the wrong kind, raises :class:`~mechloop.views.figure.ViewError`.
     """
@@ -155,6 +170,7 @@ class Display:
     angular_acceleration: str | None = None
     velocity: str | None = None
     acceleration: str | None = None
+    derived_angle: str | None = "rad"
 
     def __post_init__(self) -> None:
         for f in fields(self):
@@ -163,6 +179,8 @@ class Display:
                 _check_unit(f.name, value, f.name)
             elif f.name in OVERRIDES.values() and value is not None:
                 _check_unit(f.name, value, f.name)
+            elif f.name == "derived_angle" and value is not None:
+                _check_unit(f.name, value, "angle")
         if not isinstance(self.digits, int) or not 1 <= self.digits <= 15:
             raise ViewError(f"digits={self.digits!r} is not a number of significant digits",
                             "use an integer from 1 to 15")
@@ -171,6 +189,12 @@ class Display:
         """The unit named for a derived kind (``angular_velocity="rpm"``), or None."""
         name = OVERRIDES.get(DERIVED_KINDS.get(kind, kind).replace(" ", ""))
         return None if name is None else getattr(self, name)
+
+    def _base(self, kind: str, *, derived: bool) -> str:
+        """The unit of base ``kind``, alone or (``derived``) inside a derived kind."""
+        if kind == "angle" and derived and self.derived_angle is not None:
+            return self.derived_angle
+        return getattr(self, kind)
 
     def _units(self, kind: str) -> tuple[str, str]:
         """(SI unit, display unit) of ``kind`` as pint-readable text."""
@@ -185,8 +209,10 @@ class Display:
         def si(k):
             return BASE_KINDS[k][0]
 
+        derived = _is_derived(top, bottom)
+
         def shown(k):
-            return getattr(self, k)
+            return self._base(k, derived=derived)
 
         return (f"{text(top, si)}/({text(bottom, si)})",
                 f"{text(top, shown)}/({text(bottom, shown)})")
@@ -212,10 +238,11 @@ class Display:
         if named is not None:
             return named
         top, bottom = _parse_kind(kind)
-        num = "*".join(_power(getattr(self, k), n) for k, n in top) or "1"
+        derived = _is_derived(top, bottom)
+        num = "*".join(_power(self._base(k, derived=derived), n) for k, n in top) or "1"
         if not bottom:
             return num
-        den = "*".join(_power(getattr(self, k), n) for k, n in bottom)
+        den = "*".join(_power(self._base(k, derived=True), n) for k, n in bottom)
         if len(bottom) > 1 or (re.search(r"[*/]", den) and not den.startswith("(")):
             den = f"({den})"
         return f"{num}/{den}"
@@ -234,5 +261,6 @@ def _factor(si: str, shown: str) -> float:
     return float(registry().Quantity(1.0, si).to(shown).magnitude)
 
 
-#: The display a view uses when given none: SI units, angles in degrees, 4 digits.
+#: The display a view uses when given none: SI units, angles in degrees, every derived
+#: angle in rad (rad/s, rad/s^2, m/rad, kg*m^2/rad, as the tables), 4 digits.
 DEFAULT_DISPLAY = Display()

@@ -19,6 +19,7 @@ from mechloop.dynamics.analysis import DynamicResults
 from mechloop.views.curves import Series, draw_curves, series
 from mechloop.views.display import DEFAULT_DISPLAY, Display
 from mechloop.views.figure import ViewError, new_figure
+from mechloop.views.russian import keep_names, model_names
 
 
 def _check(dyn: object) -> DynamicResults:
@@ -49,7 +50,7 @@ def plot_reduced(dyn: DynamicResults, *, against: str = "position",
                         "(plot_balancing) instead")
     stems = ("m_red", "dm_red", "F_red") if _linear_input(dyn) else ("J_red", "dJ_red", "M_red")
     x = series(dyn, against)
-    figure = new_figure(8.0, 7.0)
+    figure = keep_names(new_figure(8.0, 7.0), model_names(dyn.kinematics.model))
     top, bottom = figure.subplots(2, 1, sharex=True)
     draw_curves(top, x, [series(dyn, stems[0]), series(dyn, stems[1])], display,
                 xlabel=False)
@@ -73,10 +74,11 @@ def plot_balancing(dyn: DynamicResults, *, against: str = "position",
     if not curves:
         raise ViewError("this model has no drive, so there is no balancing load",
                         "drive a body by a model argument")
-    figure = new_figure(8.0, 5.0)
+    figure = keep_names(new_figure(8.0, 5.0), model_names(dyn.kinematics.model))
     ax = figure.add_subplot()
     draw_curves(ax, series(dyn, against), curves, display, styles=styles)
-    ax.set_title("balancing load: kinetostatics (solid) and virtual power (dashed)")
+    # two lines: one would not fit the figure in Russian
+    ax.set_title("balancing load\nkinetostatics (solid), virtual power (dashed)")
     return figure
 
 
@@ -101,7 +103,7 @@ def plot_reactions(dyn: DynamicResults, joints: Sequence[str] | str | None = Non
     dyn = _check(dyn)
     names = _joints(dyn, joints)
     x = series(dyn, against)
-    figure = new_figure(8.0, 5.0)
+    figure = keep_names(new_figure(8.0, 5.0), model_names(dyn.kinematics.model))
     ax = figure.add_subplot()
     xs = x.shown(display)
     for i, name in enumerate(names):
@@ -130,7 +132,7 @@ def plot_hodograph(dyn: DynamicResults, joint: str, *, polar: bool = False,
     force = display.convert(dyn.forces.reactions[name].force.real, "force") \
         + 1j * display.convert(dyn.forces.reactions[name].force.imag, "force")
     unit = display.label("force")
-    figure = new_figure(6.5, 6.5)
+    figure = keep_names(new_figure(6.5, 6.5), model_names(dyn.kinematics.model))
     label = f"R{name}"
     if polar:
         ax = figure.add_subplot(projection="polar")
@@ -248,7 +250,7 @@ def plot_summary(dyn: DynamicResults, *, display: Display = DEFAULT_DISPLAY) -> 
     motion figures when the model has ``machine:``)."""
     header, rows, totals = summary_rows(dyn, display)
     lines = len(rows) + 1 + len(totals) + 1  # the rows of both tables and a gap
-    figure = new_figure(10.0, 0.9 + 0.3 * lines)
+    figure = keep_names(new_figure(10.0, 0.9 + 0.3 * lines), model_names(dyn.kinematics.model))
     ax = figure.add_subplot()
     ax.axis("off")
     row = 1.0 / lines
@@ -281,7 +283,7 @@ def plot_machine_motion(dyn: DynamicResults, *, display: Display = DEFAULT_DISPL
     k = dyn.mechanism.drives[0].argument
     q = display.convert(cycle.q, q_kind)
     unit = display.label(w_kind)
-    figure = new_figure(8.0, 5.0)
+    figure = keep_names(new_figure(8.0, 5.0), model_names(dyn.kinematics.model))
     ax = figure.add_subplot()
     ax.plot(q, display.convert(cycle.motion.omega, w_kind), color="C0", gid="omega",
             label=f"without flywheel, δ = {display.format(float(cycle.motion.delta))}")

@@ -12,6 +12,7 @@ from matplotlib.figure import Figure
 from mechloop.solve.intermediate import IntermediateResults
 from mechloop.views.display import DEFAULT_DISPLAY, Display
 from mechloop.views.figure import ViewError, new_figure
+from mechloop.views.russian import keep_names, model_names
 
 #: Family curves drawn at most (every k-th position past this many).
 MAX_FAMILY = 36
@@ -68,4 +69,4 @@ def plot_envelope(results: IntermediateResults, name: str | None = None, *,
                                f"argument {results.argument}", 60))
     ax.grid(True, linewidth=0.3)
     ax.legend(loc="best", fontsize="small")
-    return figure
+    return keep_names(figure, model_names(results.model))

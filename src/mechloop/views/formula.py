@@ -23,6 +23,7 @@ from mechloop.model.formula import describe_structure, parametric_formula, role_
 from mechloop.model.schema import Model
 from mechloop.model.structure import ContourInfo, Structure
 from mechloop.views.figure import new_figure
+from mechloop.views.russian import keep_names, model_names
 
 #: Boxes per row of the drawing (more contours wrap to further rows).
 BOXES_PER_ROW = 4
@@ -96,7 +97,8 @@ def plot_structure(model: Model) -> Figure:
     header = "\n".join(textwrap.fill(line, int(width * 11), subsequent_indent="    ")
                        for line in describe_structure(model).split("\n\n")[0].splitlines())
     header_lines = header.count("\n") + 1
-    figure = new_figure(width, 1.8 * rows + 0.2 * header_lines + 0.4)
+    figure = keep_names(new_figure(width, 1.8 * rows + 0.2 * header_lines + 0.4),
+                        model_names(model))
     ax = figure.add_subplot()
     ax.set_xlim(-0.5, columns - 0.5)
     ax.set_ylim(rows - 0.5, -0.5)

@@ -62,6 +62,12 @@ def load_gears(path: str | os.PathLike[str]) -> GearTask:
     spec = doc.planetary
     if spec is not None:
         train = train_of(spec, file=file, lines=lines)
+        if spec.scheme == "wolfrom" or (spec.fixed, spec.input) != ("b", "a"):
+            raise located_error([Problem(("planetary", "scheme"), "the gear sheet of the "
+                                         "report shows a 2K-H train driven by a with b "
+                                         "fixed", "analyse this train with mechloop gear "
+                                         "planetary; give the report a 2K-H train")],
+                                file, lines)
         if train is None:  # the best design of the choice for the target ratio
             choice = choice_of(spec, file=file, lines=lines)
             if not len(choice):
@@ -177,6 +183,8 @@ QUANTITIES_RU: dict[str, str] = {
     "tooth thickness, tip circle": "толщина зуба по окружности вершин",
     "chordal thickness, reference circle": "толщина зуба по хорде делительной окружности",
     "chordal height, reference circle": "высота до хорды делительной окружности",
+    "teeth in the span": "число охватываемых зубьев",
+    "base tangent length (span)": "длина общей нормали",
     "tip clearance": "радиальный зазор",
     "module": "модуль",
     "pressure angle": "угол профиля исходного контура",

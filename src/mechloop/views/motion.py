@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 from mechloop.dynamics.motors import RPM
 from mechloop.dynamics.simulate import Simulation
 from mechloop.views.figure import ViewError, new_figure
+from mechloop.views.russian import keep_names
 
 
 def plot_simulation(sim: Simulation, *, title: str = "") -> Figure:
@@ -46,7 +47,7 @@ def plot_simulation(sim: Simulation, *, title: str = "") -> Figure:
     _phase(axes[1, 1], sim)
     figure.suptitle(title or f"motion in time — ended: {sim.end.kind} at "
                              f"{sim.end.t:.4g} s")
-    return figure
+    return keep_names(figure, [title])  # the title: the user's name of the model
 
 
 def _panels(sim) -> tuple[Figure, Any, NDArray[np.float64], tuple]:
@@ -107,6 +108,6 @@ def _plot_inputs(sim, *, title: str = "") -> Figure:
     phase.set_title("phase portraits", fontsize="medium")
     phase.grid(True, alpha=0.3)
     end = sim.end
-    figure.suptitle(title or f"motion in time of {len(sim.inputs)} inputs — ended: "
+    figure.suptitle(title or f"motion in time, {len(sim.inputs)} inputs — ended: "
                              f"{end.kind} at {end.t:.4g} s")
-    return figure
+    return keep_names(figure, [title])

@@ -46,6 +46,7 @@ from mechloop.model.units import UnitProblem, unit_factor
 from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.labels import arrange_labels, settle
+from mechloop.views.russian import keep_names, model_names
 
 Complex = NDArray[np.complex128]
 Limits = tuple[float, float, float, float]
@@ -463,7 +464,7 @@ def _draw_centers(ax: Axes, scene: PlanScene, position: int, alpha: float) -> li
 
 
 def _break_note(ax: Axes, scene: PlanScene, position: int) -> Artist:
-    reasons = [f"contour {b.contour} ({b.module}): {b.reason}"
+    reasons = [f"contour {b.contour} ({b.module}):\n{b.reason}"  # a long reason: own line
                for b in scene.results.breaks if position in b.positions]
     text = "\n".join([f"chain break at position {position}", *reasons])
     return ax.text(0.5, 0.5, text, transform=ax.transAxes, ha="center", va="center",
@@ -528,6 +529,7 @@ def plot_plan(results: Results | DynamicResults, position: int, *, ax: Axes | No
     position = check_position(scene, position)
     box = resolve_limits(scene, limits, position)
     figure, ax = _target(ax, box)
+    keep_names(figure, model_names(scene.results.model))
     setup_axes(ax, scene, box, grid=grid, axes=axes, legend=_legend_handles(scene))
     ax.set_title(position_title(scene, position), fontsize=10)
     _draw_arranged(figure, ax, scene, position, numbers=numbers)
@@ -554,6 +556,7 @@ def plot_overlay(results: Results | DynamicResults, positions: Iterable[int] | N
     else:
         box = resolve_limits(scene, limits)
     figure, ax = _target(ax, box)
+    keep_names(figure, model_names(scene.results.model))
     setup_axes(ax, scene, box, grid=grid, axes=axes,
                legend=_legend_handles(scene, marks=highlight is not None))
     alpha = float(np.clip(4.0 / len(chosen), 0.12, 0.6))
@@ -657,6 +660,7 @@ def plot_trajectories(results: Results | DynamicResults, points: Sequence[Any], 
         raise ViewError("no points to trace", "give at least one point, e.g. [{'head': 2}]")
     box = resolve_limits(scene, limits, position, [z for _, z in paths])
     figure, ax = _target(ax, box)
+    keep_names(figure, model_names(scene.results.model))
     handles = _legend_handles(scene)
     colors = matplotlib.colormaps["Dark2"]
     for i, (label, _) in enumerate(paths):

@@ -1,0 +1,203 @@
+"""The routes of the web application (Starlette).
+
+Pages: ``/`` (the application) and ``/static/...`` (its scripts and styles, shipped in
+the package).  The API takes and gives JSON; a model is always sent as its text with the
+file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
+``{"example": "crank_slider"}`` among the bundled examples):
+
+* ``GET /api/models`` — the model files of the folder and the bundled examples;
+* ``GET /api/model?path=...`` or ``?example=...`` — the text of one;
+* ``POST /api/validate`` ``{text, path|example}`` — ``{ok, problems}``, each problem with
+  its line, YAML path, message and fix;
+* ``POST /api/solve`` — the diagram of every position, the breaks and the results table
+  (:func:`mechloop.web.payload.solution`), computed in a child process with a time limit;
+* ``POST /api/save`` ``{text, path}`` — written atomically inside the folder;
+* ``POST /api/report`` ``{text, path|example, lang}`` — the report PDF.
+
+Every refusal is JSON ``{"error", "hint", "problems"}`` with a 4xx/5xx status; a model
+error is 422 with every problem located by line.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import orjson
+from starlette.applications import Starlette
+from starlette.concurrency import run_in_threadpool
+from starlette.requests import Request
+from starlette.responses import FileResponse, JSONResponse, Response
+from starlette.routing import Mount, Route
+from starlette.staticfiles import StaticFiles
+
+from mechloop.bundled.catalog import examples, examples_dir, find_example
+from mechloop.errors import HintedError, MechloopError, ModelError
+from mechloop.output.atomic import atomic_write_text
+from mechloop.web.documents import problems, read_model
+from mechloop.web.payload import solution
+from mechloop.web.safety import Guard, WebError, Workspace
+from mechloop.web.worker import REPORT_SECONDS, SOLVE_SECONDS, WorkFailed, run_limited
+
+STATIC = Path(__file__).parent / "static"
+
+
+class _JSON(Response):
+    """A JSON response by orjson (NumPy arrays as lists, NaN as null)."""
+
+    media_type = "application/json"
+
+    def render(self, content: Any) -> bytes:
+        return orjson.dumps(content, option=orjson.OPT_SERIALIZE_NUMPY)
+
+
+def _error(exc: MechloopError, status: int | None = None) -> JSONResponse:
+    items = exc.problems if isinstance(exc, WorkFailed) else problems(exc)
+    first = items[0] if items else {"message": str(exc), "hint": ""}
+    code = status or getattr(exc, "status", 422 if isinstance(exc, ModelError) else 400)
+    return JSONResponse({"error": first["message"], "hint": first["hint"],
+                         "problems": items}, status_code=code)
+
+
+def _solve_text(text: str, path: Path, root: Path) -> bytes:
+    """The solution of the model in ``text`` as JSON bytes (run in the child)."""
+    document = read_model(text, path, root)
+    try:
+        return orjson.dumps(solution(document.model), option=orjson.OPT_SERIALIZE_NUMPY)
+    except ModelError as exc:
+        raise document.locate(exc) from None
+
+
+def _report_text(text: str, path: Path, root: Path, lang: str) -> bytes:
+    """The report PDF of the model in ``text`` (run in the child), with the course
+    project's gear and cam sheets when its ``project:`` section names them."""
+    from mechloop.model.project import project_documents
+    from mechloop.views.report import write_report
+
+    document = read_model(text, path, root)  # its project: files lie inside root
+    with tempfile.TemporaryDirectory(prefix="mechloop-web-") as folder:
+        target = Path(folder) / "report.pdf"
+        try:
+            project = project_documents(document.model, path)
+            write_report(document.model, target, lang=lang, project=project)
+        except ModelError as exc:
+            raise document.locate(exc) from None
+        return target.read_bytes()
+
+
+def create_app(folder: str | Path, *, token: str | None = None,
+               hosts: list[str] | None = None, solve_seconds: float = SOLVE_SECONDS,
+               report_seconds: float = REPORT_SECONDS, start: str | None = None) -> Any:
+    """The application serving ``folder``: ``token`` required in every request when given,
+    only the ``hosts`` named (None: any; the CLI names the loopback ones), the time limits
+    of a solve and a report (s); ``start``: the model (a path in the folder) the page opens
+    first."""
+    workspace = Workspace.at(folder)
+
+    def source(data: dict[str, Any]) -> tuple[Path, Path]:
+        """(the file a request's model belongs to, the folder its tables may come from)."""
+        if data.get("example"):
+            try:
+                found = find_example(str(data["example"]))
+            except HintedError as exc:
+                raise WebError(exc.message, exc.hint, 404) from None
+            if found.path.suffix != ".yaml":
+                raise WebError(f"{data['example']!r} is not a model", "pick a model", 404)
+            return found.path.resolve(), examples_dir().resolve()
+        return workspace.resolve(str(data.get("path", "")), exists=False), workspace.root
+
+    async def body(request: Request) -> dict[str, Any]:
+        kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
+        if kind != "application/json":
+            raise WebError(f"the request is {kind or 'untyped'}, not application/json",
+                           "send the JSON with content-type: application/json", 415)
+        try:
+            data = orjson.loads(await request.body())
+        except orjson.JSONDecodeError:
+            raise WebError("the request is not JSON", "send a JSON object") from None
+        if not isinstance(data, dict):
+            raise WebError("the request is not a JSON object", "send a JSON object")
+        if "text" in data and not isinstance(data["text"], str):
+            raise WebError("'text' is not a string", "send the model's text")
+        return data
+
+    def guarded(handler: Any) -> Any:
+        async def endpoint(request: Request) -> Response:
+            try:
+                return await handler(request)
+            except MechloopError as exc:
+                return _error(exc)
+        return endpoint
+
+    async def index(request: Request) -> Response:
+        return FileResponse(STATIC / "index.html", headers={"cache-control": "no-store"})
+
+    async def models(request: Request) -> Response:
+        listed = [{"id": e.stem, "title": e.title, "title_ru": e.title_ru or e.title,
+                   "number": e.number} for e in examples() if e.path.suffix == ".yaml"]
+        files = await run_in_threadpool(workspace.models)
+        return JSONResponse({"folder": workspace.root.name, "files": files,
+                             "examples": listed, "start": start})
+
+    async def model(request: Request) -> Response:
+        path, _ = source(dict(request.query_params))
+        if not path.is_file():
+            raise WebError(f"{request.query_params.get('path')!r} not found",
+                           "pick a file from the list", 404)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise WebError(f"cannot read the file: {exc}", "save it as UTF-8 text") from None
+        return JSONResponse({"text": text})
+
+    async def validate(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        try:
+            await run_in_threadpool(read_model, data.get("text", ""), path, root)
+        except MechloopError as exc:
+            return JSONResponse({"ok": False, "problems": problems(exc)})
+        return JSONResponse({"ok": True, "problems": []})
+
+    async def solve(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        payload = await run_in_threadpool(run_limited, _solve_text, data.get("text", ""),
+                                          path, root, seconds=solve_seconds)
+        return Response(payload, media_type="application/json")
+
+    async def save(request: Request) -> Response:
+        data = await body(request)
+        if data.get("example"):
+            raise WebError("a bundled example cannot be overwritten",
+                           "save it under a file name in the folder", 403)
+        path = workspace.resolve(str(data.get("path", "")), exists=False)
+        if not path.parent.is_dir():
+            raise WebError(f"no folder {workspace.relative(path.parent)!r}",
+                           "save into an existing folder", 404)
+        await run_in_threadpool(atomic_write_text, path, data.get("text", ""))
+        return JSONResponse({"saved": workspace.relative(path)})
+
+    async def report(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        lang = data.get("lang", "en")
+        if lang not in ("en", "ru"):
+            raise WebError(f"no report language {lang!r}", "use 'en' or 'ru'")
+        pdf = await run_in_threadpool(run_limited, _report_text, data.get("text", ""),
+                                      path, root, lang, seconds=report_seconds)
+        name = (path.stem or "model") + ".pdf"
+        return Response(pdf, media_type="application/pdf",
+                        headers={"content-disposition": f'attachment; filename="{name}"'})
+
+    routes = [Route("/", index),
+              Route("/api/models", guarded(models)),
+              Route("/api/model", guarded(model)),
+              Route("/api/validate", guarded(validate), methods=["POST"]),
+              Route("/api/solve", guarded(solve), methods=["POST"]),
+              Route("/api/save", guarded(save), methods=["POST"]),
+              Route("/api/report", guarded(report), methods=["POST"]),
+              Mount("/static", StaticFiles(directory=STATIC), name="static")]
+    app = Starlette(routes=routes)
+    return Guard(app, token=token, hosts=hosts)

@@ -1,0 +1,382 @@
+// The page: the editor with live validation, the mechanism at the current position, one
+// plot and the results table, all following the position slider; save, report, language.
+"use strict";
+
+const query = new URLSearchParams(location.search);
+const TOKEN = query.get("token");
+const $ = (id) => document.getElementById(id);
+
+const state = {
+  source: null,        // {path: ...} or {example: ...}
+  solution: null,
+  position: 0,
+  column: null,        // the name of the plotted column
+  problems: [],
+  timer: null,         // playing
+  version: 0,          // of the text: answers to older texts are dropped
+};
+
+async function api(path, options) {
+  const headers = Object.assign({}, (options && options.headers) || {});
+  if (TOKEN) headers["X-Mechloop-Token"] = TOKEN;
+  try {
+    return await fetch(path, Object.assign({}, options, { headers }));
+  } catch (error) {  // the server stopped or the network failed: said, not thrown
+    return { ok: false, status: 0, json: async () => ({ error: String(error), hint: "" }) };
+  }
+}
+
+// The JSON of an answer; an answer that is not JSON becomes an error with its status.
+async function read(response) {
+  try {
+    return await response.json();
+  } catch (error) {
+    return { error: `${response.status} ${response.statusText || ""}`.trim(), hint: "" };
+  }
+}
+
+async function postJSON(path, data) {
+  return api(path, { method: "POST", body: JSON.stringify(data),
+    headers: { "content-type": "application/json" } });
+}
+
+// The status line, kept as a key of WORDS (re-said when the language changes).
+let lastStatus = ["", null, ""];
+function status(key, values, kind) {
+  lastStatus = [key, values, kind];
+  const node = $("status");
+  node.textContent = key ? t(key, values) : "";
+  node.className = kind || "";
+}
+
+// ------------------------------------------------------------------ the editor
+function lineCount() {
+  return $("editor").value.split("\n").length;
+}
+
+function renderGutter() {
+  const bad = new Set(state.problems.map((p) => p.line).filter((n) => n));
+  const gutter = $("gutter");
+  gutter.textContent = "";
+  for (let n = 1; n <= lineCount(); n++) {
+    const line = document.createElement("span");
+    line.textContent = n + "\n";
+    line.dataset.line = n;
+    if (bad.has(n)) line.className = "bad";
+    gutter.appendChild(line);
+  }
+  gutter.scrollTop = $("editor").scrollTop;
+}
+
+function goToLine(n) {
+  const editor = $("editor");
+  const lines = editor.value.split("\n");
+  const start = lines.slice(0, n - 1).reduce((s, l) => s + l.length + 1, 0);
+  editor.focus();
+  editor.setSelectionRange(start, start + (lines[n - 1] || "").length);
+  const height = editor.scrollHeight / Math.max(lines.length, 1);
+  editor.scrollTop = Math.max(0, (n - 5) * height);
+}
+
+function renderProblems() {
+  const list = $("problems");
+  list.textContent = "";
+  $("problem-count").textContent = state.problems.length ? `(${state.problems.length})` : "";
+  if (!state.problems.length) {
+    const item = document.createElement("li");
+    item.className = "ok";
+    item.textContent = t("ok");
+    list.appendChild(item);
+  }
+  for (const problem of state.problems) {
+    const item = document.createElement("li");
+    item.className = "problem";
+    if (problem.line) item.dataset.line = problem.line;
+    const where = document.createElement("a");
+    where.className = "where";
+    where.textContent = [problem.line ? t("line", { n: problem.line }) : "", problem.path]
+      .filter(Boolean).join(", ");
+    if (problem.line) where.onclick = () => goToLine(problem.line);
+    const message = document.createElement("span");
+    message.className = "message";
+    message.textContent = " " + problem.message;
+    item.append(where, message);
+    if (problem.hint) {
+      const hint = document.createElement("div");
+      hint.className = "hint";
+      hint.textContent = `${t("fix")}: ${problem.hint}`;
+      item.appendChild(hint);
+    }
+    list.appendChild(item);
+  }
+  renderGutter();
+}
+
+let pending = null;
+function edited() {
+  state.version += 1;
+  renderGutter();
+  clearTimeout(pending);
+  pending = setTimeout(check, 350);
+}
+
+async function check() {
+  const version = state.version;
+  const body = Object.assign({ text: $("editor").value }, state.source);
+  status("checking", null);
+  const response = await postJSON("api/validate", body);
+  const answer = await read(response);
+  if (version !== state.version) return;
+  if (!response.ok) {
+    state.problems = answer.problems || [{ message: answer.error, hint: answer.hint }];
+    renderProblems();
+    status("failed", { error: answer.error }, "error");
+    return;
+  }
+  state.problems = answer.problems;
+  renderProblems();
+  if (answer.ok) {
+    await solve(version);
+  } else {
+    status("invalid", null, "error");
+  }
+}
+
+// ------------------------------------------------------------------ the results
+async function solve(version) {
+  status("solving", null);
+  const body = Object.assign({ text: $("editor").value }, state.source);
+  const response = await postJSON("api/solve", body);
+  const answer = await read(response);
+  if (version !== state.version) return;
+  if (!response.ok) {
+    state.problems = answer.problems || [];
+    renderProblems();
+    status("failed", { error: answer.error }, "error");
+    return;
+  }
+  state.solution = answer;
+  const slider = $("slider");
+  slider.max = answer.count - 1;
+  state.position = Math.min(state.position, answer.count - 1);
+  slider.value = state.position;
+  fillPlotChoices();
+  render();
+  status("solved", null, "ok");
+  document.body.dataset.solved = String(version);
+}
+
+function fillPlotChoices() {
+  const select = $("plot-select");
+  const columns = state.solution.columns;
+  const names = columns.map((c) => c.name);
+  if (!names.includes(state.column)) {
+    // the first unknown of the loops (a function parameter) that varies
+    const functions = state.solution.diagram.vectors.flatMap((v) => Object.entries(v.marks)
+      .filter(([, role]) => role === "function").map(([letter]) => letter + v.number));
+    const varying = columns.find((c) => functions.includes(c.name)
+      && new Set(c.values).size > 1);
+    state.column = (varying || columns[0] || {}).name || null;
+  }
+  select.textContent = "";
+  for (const column of columns) {
+    const option = document.createElement("option");
+    option.value = column.name;
+    option.textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
+    select.appendChild(option);
+  }
+  select.value = state.column;
+}
+
+function render() {
+  const solution = state.solution;
+  if (!solution) return;
+  const k = state.position;
+  drawDiagram($("diagram"), solution, k);
+  const column = solution.columns.find((c) => c.name === state.column);
+  drawPlot($("plot"), solution, column, k);
+  let label = t("position", { k, n: solution.count - 1 });
+  if (solution.time) label += ", " + t("time", { t: format(solution.time[k]) });
+  $("position-label").textContent = label;
+  const note = $("break-note");
+  if (solution.broken[k]) {
+    const reasons = solution.breaks.filter((b) => b.positions.includes(k))
+      .map((b) => t("breakReason", b));
+    note.textContent = [t("broken", { k }), ...reasons].join("; ");
+    note.hidden = false;
+  } else {
+    note.hidden = true;
+  }
+  const body = $("results").tBodies[0];
+  body.textContent = "";
+  for (const c of solution.columns) {
+    const row = body.insertRow();
+    row.dataset.name = c.name;
+    row.insertCell().textContent = columnText(c.name);
+    const value = row.insertCell();
+    value.textContent = format(c.values[k] === null ? NaN : c.values[k]);
+    value.className = "number";
+    row.insertCell().textContent = unitText(c.unit);
+  }
+}
+
+function setPosition(k) {
+  state.position = k;
+  $("slider").value = k;
+  render();
+}
+
+function togglePlay() {
+  if (state.timer) {
+    clearInterval(state.timer);
+    state.timer = null;
+  } else if (state.solution) {
+    state.timer = setInterval(() => {
+      setPosition((state.position + 1) % state.solution.count);  // one cycle, looped
+    }, 60);
+  }
+  $("play").dataset.i18n = state.timer ? "pause" : "play";
+  $("play").textContent = t($("play").dataset.i18n);
+}
+
+// ------------------------------------------------------------------ files
+async function loadList() {
+  const response = await api("api/models");
+  const answer = await read(response);
+  const select = $("model-select");
+  select.textContent = "";
+  const files = document.createElement("optgroup");
+  files.dataset.i18nLabel = "files";
+  for (const path of answer.files) {
+    const option = document.createElement("option");
+    option.value = "path:" + path;
+    option.textContent = path;
+    files.appendChild(option);
+  }
+  const examples = document.createElement("optgroup");
+  examples.dataset.i18nLabel = "examples";
+  for (const example of answer.examples) {
+    const option = document.createElement("option");
+    option.value = "example:" + example.id;
+    option.dataset.en = example.id + (example.title ? " — " + example.title : "");
+    option.dataset.ru = example.id + (example.title_ru ? " — " + example.title_ru : "");
+    examples.appendChild(option);
+  }
+  if (answer.files.length) select.appendChild(files);
+  select.appendChild(examples);
+  labelList();
+  return answer;
+}
+
+function labelList() {
+  for (const group of $("model-select").querySelectorAll("optgroup")) {
+    group.label = t(group.dataset.i18nLabel);
+  }
+  for (const option of $("model-select").querySelectorAll("option[data-en]")) {
+    option.textContent = option.dataset[LANG];
+  }
+}
+
+async function open(choice) {
+  const [kind, name] = [choice.slice(0, choice.indexOf(":")), choice.slice(choice.indexOf(":") + 1)];
+  state.source = kind === "path" ? { path: name } : { example: name };
+  $("model-select").value = choice;
+  $("save-path").value = kind === "path" ? name : name + ".yaml";
+  const response = await api("api/model?" + new URLSearchParams(state.source));
+  const answer = await read(response);
+  if (!response.ok) {
+    status("failed", { error: answer.error }, "error");
+    return;
+  }
+  state.solution = null;
+  state.position = 0;
+  $("editor").value = answer.text;
+  $("editor").scrollTop = 0;
+  edited();
+}
+
+async function save() {
+  const path = $("save-path").value.trim();
+  if (!path) {
+    status("unsaved", null, "error");
+    return;
+  }
+  status("saving", null);
+  const response = await postJSON("api/save", { path, text: $("editor").value });
+  const answer = await read(response);
+  if (!response.ok) {
+    status("failed", { error: answer.error }, "error");
+    return;
+  }
+  await loadList();
+  state.source = { path: answer.saved };
+  $("model-select").value = "path:" + answer.saved;
+  status("saved", { path: answer.saved }, "ok");
+}
+
+async function report() {
+  status("writing", null);
+  const body = Object.assign({ text: $("editor").value, lang: LANG }, state.source);
+  const response = await postJSON("api/report", body);
+  if (!response.ok) {
+    const answer = await read(response);
+    status("failed", { error: answer.error }, "error");
+    return;
+  }
+  const blob = await response.blob();
+  const link = document.createElement("a");
+  link.href = URL.createObjectURL(blob);
+  const stem = ($("save-path").value.split("/").pop() || "model").replace(/\.[^.]*$/, "");
+  link.download = `${stem}-${LANG}.pdf`;
+  document.body.appendChild(link);
+  link.click();
+  link.remove();
+  status("written", null, "ok");
+}
+
+function setLanguage(lang) {
+  LANG = lang;
+  localStorage.setItem("mechloop-lang", lang);
+  applyWords();
+  labelList();
+  renderProblems();
+  $("play").textContent = t($("play").dataset.i18n);
+  status(...lastStatus);
+  if (state.solution) {
+    fillPlotChoices();
+    render();
+  }
+}
+
+// ------------------------------------------------------------------ start
+window.addEventListener("DOMContentLoaded", async () => {
+  LANG = query.get("lang") || localStorage.getItem("mechloop-lang") || "en";
+  applyWords();
+  $("editor").addEventListener("input", edited);
+  $("editor").addEventListener("scroll", () => { $("gutter").scrollTop = $("editor").scrollTop; });
+  $("editor").addEventListener("keydown", (event) => {
+    if (event.key === "Tab") {  // two spaces, as YAML wants
+      event.preventDefault();
+      document.execCommand("insertText", false, "  ");
+    }
+  });
+  $("slider").addEventListener("input", () => setPosition(Number($("slider").value)));
+  $("play").addEventListener("click", togglePlay);
+  $("plot-select").addEventListener("change", () => {
+    state.column = $("plot-select").value;
+    render();
+  });
+  $("model-select").addEventListener("change", () => open($("model-select").value));
+  $("save").addEventListener("click", save);
+  $("report").addEventListener("click", report);
+  for (const button of document.querySelectorAll("button.lang")) {
+    button.addEventListener("click", () => setLanguage(button.dataset.lang));
+  }
+  const listed = await loadList();
+  const first = query.get("path") ? "path:" + query.get("path")
+    : query.get("example") ? "example:" + query.get("example")
+    : listed.start ? "path:" + listed.start
+    : listed.files.length ? "path:" + listed.files[0]
+    : "example:crank_slider";
+  await open(first);
+});

@@ -1,0 +1,194 @@
+// The vector diagram and the plot, drawn as SVG from the solution the API sends.
+// Every drawn vector and the plot's marker carry their numbers (data-x1 ... data-value) in
+// the units of the solution, so what is drawn can be checked against the API.
+"use strict";
+
+const SVG = "http://www.w3.org/2000/svg";
+
+function el(name, attributes, parent) {
+  const node = document.createElementNS(SVG, name);
+  for (const [key, value] of Object.entries(attributes || {})) node.setAttribute(key, value);
+  if (parent) parent.appendChild(node);
+  return node;
+}
+
+function clear(svg) {
+  while (svg.firstChild) svg.removeChild(svg.firstChild);
+}
+
+function known(...values) {
+  return values.every((v) => v !== null && v !== undefined && Number.isFinite(v));
+}
+
+// A map from the solution's plane (y up) to the SVG's pixels, one scale on both axes.
+function planeMap(limits, width, height, pad) {
+  const [x0, x1, y0, y1] = limits;
+  const scale = Math.min((width - 2 * pad) / (x1 - x0), (height - 2 * pad) / (y1 - y0));
+  const dx = (width - scale * (x1 - x0)) / 2;
+  const dy = (height - scale * (y1 - y0)) / 2;
+  return {
+    scale,
+    x: (x) => dx + (x - x0) * scale,
+    y: (y) => height - dy - (y - y0) * scale,
+  };
+}
+
+function drawDiagram(svg, solution, k) {
+  clear(svg);
+  const width = Number(svg.getAttribute("width"));
+  const height = Number(svg.getAttribute("height"));
+  const diagram = solution.diagram;
+  const map = planeMap(diagram.limits, width, height, 16);
+  const defs = el("defs", {}, svg);
+  const size = 10;
+  for (const vector of diagram.vectors) {
+    const marker = el("marker", {
+      id: "arrow-" + vector.number, viewBox: "0 0 10 10", refX: "10", refY: "5",
+      markerWidth: size, markerHeight: size, markerUnits: "userSpaceOnUse",
+      orient: "auto-start-reverse",
+    }, defs);
+    el("path", { d: "M0,1 L10,5 L0,9 z", fill: vector.color }, marker);
+  }
+  // the ground: a hatched base under every fixed point
+  const ground = el("g", { class: "ground" }, svg);
+  diagram.ground.x.forEach((gx, i) => {
+    const px = map.x(gx), py = map.y(diagram.ground.y[i]);
+    el("path", { d: `M${px},${py} l-7,11 h14 z`, fill: "none", stroke: "#333",
+      "stroke-width": 1 }, ground);
+    for (let h = -8; h <= 6; h += 4) {
+      el("line", { x1: px + h, y1: py + 15, x2: px + h + 4, y2: py + 11, stroke: "#333",
+        "stroke-width": 1 }, ground);
+    }
+  });
+  const vectors = el("g", { class: "vectors" }, svg);
+  const labels = el("g", { class: "labels" }, svg);
+  for (const vector of diagram.vectors) {
+    const x1 = vector.tail.x[k], y1 = vector.tail.y[k];
+    const x2 = vector.head.x[k], y2 = vector.head.y[k];
+    if (!known(x1, y1, x2, y2)) continue;
+    const a = [map.x(x1), map.y(y1)], b = [map.x(x2), map.y(y2)];
+    el("line", {
+      id: "vector-" + vector.number, class: "vector", x1: a[0], y1: a[1], x2: b[0],
+      y2: b[1], stroke: vector.color, "stroke-width": 2.2,
+      "marker-end": "url(#arrow-" + vector.number + ")",
+      "data-x1": x1, "data-y1": y1, "data-x2": x2, "data-y2": y2,
+    }, vectors);
+    for (const [letter, role] of Object.entries(vector.marks)) {
+      const f = letter === "a" ? 0.25 : 0.75;
+      const mx = a[0] + f * (b[0] - a[0]), my = a[1] + f * (b[1] - a[1]);
+      if (role === "function") {
+        el("circle", { cx: mx, cy: my, r: 4, fill: "white", stroke: "black",
+          class: "mark-function" }, vectors);
+      } else {
+        const angle = Math.atan2(b[1] - a[1], b[0] - a[0]) * 180 / Math.PI;
+        el("path", { d: "M6,0 L-4,5 L-4,-5 z", fill: vector.color, stroke: "black",
+          "stroke-width": 0.8, class: "mark-argument",
+          transform: `translate(${mx},${my}) rotate(${angle})` }, vectors);
+      }
+    }
+    const label = el("g", { class: "number" }, labels);
+    const cx = (a[0] + b[0]) / 2, cy = (a[1] + b[1]) / 2;
+    el("rect", { x: cx - 7, y: cy - 7, width: 14, height: 14, rx: 3, fill: "white",
+      stroke: vector.color }, label);
+    el("text", { x: cx, y: cy + 4, "text-anchor": "middle", "font-size": 10 }, label)
+      .textContent = vector.number;
+  }
+  for (const joint of diagram.joints) {
+    const x = joint.x[k], y = joint.y[k];
+    if (!known(x, y)) continue;
+    if (joint.kind === "revolute") {
+      el("circle", { cx: map.x(x), cy: map.y(y), r: 3.5, fill: "#bbb", stroke: "black",
+        class: "joint" }, labels);
+    }
+    el("text", { x: map.x(x) + 5, y: map.y(y) - 5, "font-size": 10, "font-weight": "bold" },
+      labels).textContent = joint.name;
+  }
+  for (const center of diagram.centers) {
+    const x = center.x[k], y = center.y[k];
+    if (!known(x, y)) continue;
+    const px = map.x(x), py = map.y(y);
+    el("circle", { cx: px, cy: py, r: 5, fill: "white", stroke: "black", class: "center" },
+      labels);
+    el("path", { d: `M${px},${py} v-5 a5,5 0 0,1 5,5 z M${px},${py} v5 a5,5 0 0,1 -5,-5 z`,
+      fill: "black" }, labels);
+    el("text", { x: px + 6, y: py + 12, "font-size": 9 }, labels).textContent = center.name;
+  }
+  el("text", { x: 6, y: height - 6, "font-size": 10, fill: "#555", class: "unit" }, svg)
+    .textContent = unitText(diagram.unit);
+}
+
+// Round tick values covering [low, high].
+function ticks(low, high, count) {
+  if (!(high > low)) return [low];
+  const raw = (high - low) / count;
+  const power = Math.pow(10, Math.floor(Math.log10(raw)));
+  const step = [1, 2, 5, 10].map((m) => m * power).find((s) => s >= raw);
+  const out = [];
+  for (let v = Math.ceil(low / step) * step; v <= high + 1e-9 * step; v += step) {
+    out.push(Math.abs(v) < 1e-12 * step ? 0 : v);
+  }
+  return out;
+}
+
+function format(value) {
+  if (!Number.isFinite(value)) return "—";
+  if (value === 0) return "0";
+  const magnitude = Math.abs(value);
+  if (magnitude >= 1e6 || magnitude < 1e-3) return value.toExponential(4);
+  return String(Number(value.toPrecision(6)));
+}
+
+function drawPlot(svg, solution, column, k) {
+  clear(svg);
+  if (!column) return;
+  const width = Number(svg.getAttribute("width"));
+  const height = Number(svg.getAttribute("height"));
+  const left = 64, right = 12, top = 12, bottom = 34;
+  const values = column.values;
+  const finite = values.filter((v) => known(v));
+  let low = finite.length ? Math.min(...finite) : 0;
+  let high = finite.length ? Math.max(...finite) : 1;
+  if (high - low < 1e-12 * Math.max(1, Math.abs(high))) { low -= 1; high += 1; }
+  const n = values.length - 1;
+  const x = (i) => left + (n > 0 ? i / n : 0) * (width - left - right);
+  const y = (v) => top + (high - v) / (high - low) * (height - top - bottom);
+  const axes = el("g", { class: "axes", "font-size": 10, fill: "#333" }, svg);
+  for (const v of ticks(low, high, 5)) {
+    el("line", { x1: left, x2: width - right, y1: y(v), y2: y(v), stroke: "#e3e3e3" }, axes);
+    el("text", { x: left - 5, y: y(v) + 3, "text-anchor": "end" }, axes).textContent =
+      format(v);
+  }
+  for (const i of ticks(0, n, 8)) {
+    el("line", { x1: x(i), x2: x(i), y1: top, y2: height - bottom, stroke: "#e3e3e3" }, axes);
+    el("text", { x: x(i), y: height - bottom + 13, "text-anchor": "middle" }, axes)
+      .textContent = format(i);
+  }
+  el("rect", { x: left, y: top, width: width - left - right, height: height - top - bottom,
+    fill: "none", stroke: "#888" }, axes);
+  el("text", { x: (left + width - right) / 2, y: height - 4, "text-anchor": "middle" }, axes)
+    .textContent = t("axisPosition");
+  el("text", { x: 12, y: top + (height - top - bottom) / 2, "text-anchor": "middle",
+    transform: `rotate(-90 12 ${top + (height - top - bottom) / 2})` }, axes)
+    .textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
+  // the curve, broken where a value is unknown
+  let path = "", pen = false;
+  values.forEach((v, i) => {
+    if (known(v)) {
+      path += `${pen ? "L" : "M"}${x(i).toFixed(2)},${y(v).toFixed(2)} `;
+      pen = true;
+    } else {
+      pen = false;
+    }
+  });
+  el("path", { d: path, fill: "none", stroke: "#1f77b4", "stroke-width": 1.8,
+    class: "curve" }, svg);
+  el("line", { x1: x(k), x2: x(k), y1: top, y2: height - bottom, stroke: "#d62728",
+    "stroke-dasharray": "4 3", class: "cursor" }, svg);
+  const v = values[k];
+  if (known(v)) {
+    el("circle", { id: "plot-marker", cx: x(k), cy: y(v), r: 4.5, fill: "#d62728",
+      "data-position": k, "data-value": v }, svg);
+    el("text", { x: Math.min(x(k) + 6, width - right - 70), y: Math.max(y(v) - 7, top + 10),
+      "font-size": 11, fill: "#d62728", id: "plot-value" }, svg).textContent = format(v);
+  }
+}

@@ -1,0 +1,75 @@
+// Every string of the interface, in English and Russian.  An element with data-i18n="key"
+// shows WORDS[lang][key]; the scripts ask t(key, values) for the strings they build.
+"use strict";
+
+const WORDS = {
+  en: {
+    model: "Model", file: "File", save: "Save", report: "Report (PDF)",
+    editor: "Model (YAML)", problems: "Problems", mechanism: "Mechanism", play: "Play",
+    pause: "Pause", plot: "Plot", table: "Results at this position", quantity: "Quantity",
+    value: "Value", unit: "Unit", files: "Files in the folder", examples: "Bundled examples",
+    position: "position {k} of 0..{n}", time: "t = {t} s",
+    fix: "fix", line: "line {n}", solving: "solving…", solved: "solved",
+    checking: "checking…", saved: "saved {path}", saving: "saving…",
+    writing: "writing the report…", written: "report downloaded",
+    invalid: "the model has problems", broken: "chain break at position {k}",
+    breakReason: "contour {contour} ({module}): {reason}", failed: "failed: {error}",
+    axisPosition: "position", ok: "no problems", unsaved: "give a file name to save to",
+  },
+  ru: {
+    model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт (PDF)",
+    editor: "Модель (YAML)", problems: "Ошибки", mechanism: "Механизм", play: "Пуск",
+    pause: "Пауза", plot: "График", table: "Результаты в этом положении",
+    quantity: "Величина", value: "Значение", unit: "Единица", files: "Файлы папки",
+    examples: "Встроенные примеры", position: "положение {k} из 0..{n}",
+    time: "t = {t} с", fix: "исправление", line: "строка {n}",
+    solving: "расчёт…", solved: "рассчитано", checking: "проверка…",
+    saved: "сохранено: {path}", saving: "сохранение…", writing: "создание отчёта…",
+    written: "отчёт загружен", invalid: "в модели есть ошибки",
+    broken: "разрыв цепи в положении {k}",
+    breakReason: "контур {contour} ({module}): {reason}", failed: "ошибка: {error}",
+    axisPosition: "положение", ok: "ошибок нет", unsaved: "укажите имя файла для сохранения",
+  },
+};
+
+// Units as the tables write them, in Russian (the rest are shown as written).
+const UNITS_RU = {
+  s: "с", m: "м", mm: "мм", cm: "см", deg: "град", rad: "рад", N: "Н", kN: "кН",
+  "N*m": "Н·м", J: "Дж", W: "Вт", kW: "кВт", kg: "кг", "rad/s": "рад/с",
+  "rad/s^2": "рад/с²", "m/s": "м/с", "m/s^2": "м/с²", "mm/s": "мм/с", "mm/s^2": "мм/с²",
+  rpm: "об/мин", "rad/rad": "рад/рад", "m/rad": "м/рад", "rad/rad^2": "рад/рад²",
+  "m/rad^2": "м/рад²", "kg*m^2": "кг·м²",
+};
+
+let LANG = "en";
+
+function t(key, values) {
+  let text = (WORDS[LANG] && WORDS[LANG][key]) || WORDS.en[key] || key;
+  for (const [name, value] of Object.entries(values || {})) {
+    text = text.split("{" + name + "}").join(String(value));
+  }
+  return text;
+}
+
+function unitText(unit) {
+  return LANG === "ru" && UNITS_RU[unit] ? UNITS_RU[unit] : unit;
+}
+
+// A column of the results table by name: the parameters (a2, dr3, M_bal) are symbols,
+// the same in both languages; time and the arguments are words.
+function columnText(name) {
+  if (name === "time") return LANG === "ru" ? "время" : "time";
+  const argument = /^arg(\d+)$/.exec(name);
+  if (argument) return (LANG === "ru" ? "аргумент " : "argument ") + argument[1];
+  return name;
+}
+
+function applyWords() {
+  document.documentElement.lang = LANG;
+  for (const element of document.querySelectorAll("[data-i18n]")) {
+    element.textContent = t(element.dataset.i18n);
+  }
+  for (const button of document.querySelectorAll("button.lang")) {
+    button.classList.toggle("active", button.dataset.lang === LANG);
+  }
+}
