@@ -8,11 +8,11 @@ Run from the repository root:  python examples/views_api.py
 from pathlib import Path
 
 import mechloop
+from mechloop.report.write import write_report
 from mechloop.views import curves, dynamics, plan
 from mechloop.views.animation import animate
 from mechloop.views.display import Display
 from mechloop.views.figure import save_figure
-from mechloop.report.write import write_report
 
 HERE = Path(__file__).parent
 OUT = Path("views_out")
