@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from helpers.latin import latin_words
+from helpers.latin import latin_words, model_names
 from typer.testing import CliRunner
 
 import mechloop
@@ -58,22 +58,6 @@ def texts(document) -> list[str]:
                 out.append(block.caption)
             else:
                 out += [block.caption, *block.header, *(c for row in block.rows for c in row)]
-    return out
-
-
-def user_names(model: mechloop.Model) -> list[str]:
-    """The user's own names of a model (allowed in a Russian report)."""
-    out = [model.name, model.description]
-    out += [v.name or "" for v in model.vectors.values()]
-    out += [b.name or "" for b in model.bodies.values()]
-    out += [*(model.joints or {}), *model.gears]
-    out += [c.name or "" for c in model.contours]
-    for load in [*model.forces, *model.moments]:
-        out.append(load.name or "")
-        out.append(getattr(load.value, "expression", ""))
-    out += [x.name or "" for x in [*model.springs, *model.dampers]]
-    if model.report is not None:
-        out += [str(v) for v in model.report.model_dump(exclude_none=True).values()]
     return out
 
 
@@ -274,7 +258,7 @@ def test_the_russian_document_has_no_english_words(path):
     model = mechloop.load_model(path)
     project = project_documents(model, path) if model.project else None
     document = build_document(model, lang="ru", project=project)
-    names = user_names(model)
+    names = model_names(model)
     if project is not None:  # the names of the cam and the gears in their documents
         names += [getattr(project.cam, "name", None) or "",
                   getattr(project.gears, "pair_name", None) or "",

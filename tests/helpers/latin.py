@@ -42,3 +42,19 @@ def latin_words(text: str, names: Iterable[str] = ()) -> list[str]:
             continue
         found.append(word)
     return found
+
+
+def model_names(model) -> list[str]:
+    """The user's own names of a model (allowed in a Russian report)."""
+    out = [model.name, model.description]
+    out += [v.name or "" for v in model.vectors.values()]
+    out += [b.name or "" for b in model.bodies.values()]
+    out += [*(model.joints or {}), *model.gears]
+    out += [c.name or "" for c in model.contours]
+    for load in [*model.forces, *model.moments]:
+        out.append(load.name or "")
+        out.append(getattr(load.value, "expression", ""))
+    out += [x.name or "" for x in [*model.springs, *model.dampers]]
+    if model.report is not None:
+        out += [str(v) for v in model.report.model_dump(exclude_none=True).values()]
+    return out

@@ -36,6 +36,7 @@ from mechloop.report.formula import formula_section
 from mechloop.report.numbers import Shown
 from mechloop.report.parameters import parameters_section
 from mechloop.report.sheets import project_sheets, sheet_section
+from mechloop.report.summary import summary_tables
 from mechloop.report.title import title_info, title_page
 from mechloop.report.values import symbol
 from mechloop.report.words import words
@@ -167,8 +168,7 @@ def _dynamic_sections(dyn: DynamicResults, model: Model, results: Results, posit
     if broken is not None:
         summary.append(Paragraph(w["cycle_breaks"].format(where=broken.where(lang)),
                                  "warning"))
-    summary.append(_figure(w["f_summary"], lambda: dynamics.plot_summary(
-        dyn, display=display), lang))
+    summary += summary_tables(dyn, display, lang, w)
     reduced.append(Section(w["s_summary"], summary))
     if dyn.cycle is not None and broken is None:
         reduced.append(Section(w["s_motion"], [_figure(

@@ -158,4 +158,4 @@ def masses_section(dyn: DynamicResults, model: Model, shown: Shown, w: dict[str,
     other = other_table(model, shown, w)
     if other is not None:
         blocks.append(other)
-    return Section(w["s_masses"], blocks)
+    return Section(w["s_masses"], [b for b in blocks if not isinstance(b, Table) or b.rows])
