@@ -447,3 +447,27 @@ def test_a_break_between_two_positions_is_explained_with_its_angles(lang):
     assert len(numbers) == 4
     for printed, value in zip(numbers, expected, strict=True):
         _close(printed, value)
+
+
+def test_rounding_noise_prints_as_zero_and_nothing_else_does():
+    """A slider's inertia moment (1e-12 N·m of rounding beside 50 N·m) is 0 in the
+    appendix; a value at 1e-6 of its unit's largest is kept."""
+    import pandas as pd
+
+    from mechloop.report.appendix import _rounding_noise_as_zero
+
+    frame = pd.DataFrame({"M_bal [N*m]": [50.0, -20.0, np.nan],
+                          "Mi3 [N*m]": [1.1e-12, -8e-13, np.nan],
+                          "Mi2 [N*m]": [5e-5, 0.0, np.nan],
+                          "r3 [m]": [1e-13, 2e-13, np.nan]})
+    out = _rounding_noise_as_zero(frame)
+    assert out["Mi3 [N*m]"].tolist()[:2] == [0.0, 0.0]
+    assert out["M_bal [N*m]"].tolist()[:2] == [50.0, -20.0]
+    assert out["Mi2 [N*m]"].tolist()[:2] == [5e-5, 0.0]
+    assert out["r3 [m]"].tolist()[:2] == [1e-13, 2e-13]  # its own unit's scale
+    assert np.isnan(out.iloc[2]).all()
+    model = mechloop.load_model(ROOT / "examples" / "crank_slider_dynamics.yaml")
+    document = build_document(model, lang="en")
+    cells = [c for block in walk(document.appendices) if isinstance(block, Table)
+             for row in block.rows for c in row]
+    assert not [c for c in cells if re.search(r"e-\d", c)]

@@ -5,8 +5,9 @@ header 'name, unit'.
 
 A column with no value at any position is left out; the chain-break column only when the
 chain breaks somewhere, as a word of the report's language; every column's numbers are
-printed to the precision of its largest value (zero to that precision is 0); a broken
-row's values are '—'."""
+printed to the precision of its largest value (zero to that precision is 0), a value
+below :data:`NOISE` of the largest of its unit in the table printed as 0; a broken row's
+values are '—'."""
 
 from __future__ import annotations
 
@@ -67,6 +68,31 @@ def shown_frame(frame: pd.DataFrame, shown: Shown) -> pd.DataFrame:
     return converted[keep]
 
 
+#: A value below this share of the largest value of its unit in the whole table is the
+#: solver's rounding noise (1e-12 N·m of a slider's inertia moment beside 50 N·m).
+NOISE = 1e-9
+
+
+def _rounding_noise_as_zero(data: pd.DataFrame) -> pd.DataFrame:
+    """``data`` with the values that are rounding noise beside the largest value of the
+    same unit (over every column of that unit) set to 0."""
+    units: dict[str, list[str]] = {}
+    for column in data.columns:
+        match = _HEADER.match(column)
+        if match is not None and data[column].dtype.kind == "f":
+            units.setdefault(match.group(2), []).append(column)
+    data = data.copy()
+    for columns in units.values():
+        values = data[columns].to_numpy(dtype=float)
+        finite = np.isfinite(values)
+        if not finite.any():
+            continue
+        scale = np.abs(values[finite]).max()
+        noise = finite & (np.abs(np.where(finite, values, 0.0)) <= NOISE * scale)
+        data[columns] = np.where(noise, 0.0, values)
+    return data
+
+
 def appendix_tables(frame: pd.DataFrame, shown: Shown, w: dict[str, str],
                     names: tuple[str, ...] = ()) -> list[Table]:
     """The appendix's tables of ``frame`` (a results table in SI headers); ``names``:
@@ -74,6 +100,7 @@ def appendix_tables(frame: pd.DataFrame, shown: Shown, w: dict[str, str],
     data = shown_frame(frame, shown)
     broken = data["chain_break"].to_numpy(dtype=bool) if "chain_break" in data \
         else np.zeros(len(data), dtype=bool)
+    data = _rounding_noise_as_zero(data)
     texts: dict[str, list[str]] = {}
     for column in data.columns:
         values = data[column]
