@@ -23,6 +23,7 @@ from mechloop.errors import HintedError
 from mechloop.model.project import project_documents
 from mechloop.report.content import build_document
 from mechloop.report.document import FigureItem, Paragraph, Section, Table, walk
+from mechloop.report.document import texts as document_texts
 from mechloop.report.numbers import Shown
 from mechloop.report.words import TEXT
 
@@ -42,23 +43,8 @@ def _title(lang: str, key: str) -> str:
 
 
 def texts(document) -> list[str]:
-    """Every text of ``document``: title page, titles, paragraphs, captions, table
-    headers and cells."""
-    t = document.title
-    out = [*t.organisation, t.kind, t.course, t.title, t.subject, t.place_year]
-    out += [text for pair in t.people for text in pair]
-    for section in [*document.sections, *document.appendices]:
-        out.append(section.title)
-        for block in walk(section.blocks):
-            if isinstance(block, Section):
-                out.append(block.title)
-            elif isinstance(block, Paragraph):
-                out.append(block.text)
-            elif isinstance(block, FigureItem):
-                out.append(block.caption)
-            else:
-                out += [block.caption, *block.header, *(c for row in block.rows for c in row)]
-    return out
+    """Every text of ``document`` (:func:`mechloop.report.document.texts`)."""
+    return document_texts(document)
 
 
 @pytest.fixture(scope="module")

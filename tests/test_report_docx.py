@@ -24,8 +24,8 @@ from mechloop.report.document import (
     caption,
     heading,
     numbered,
-    walk,
 )
+from mechloop.report.document import texts as document_texts
 from mechloop.report.docx import write_docx
 from mechloop.report.docx_table import column_widths, is_number, numeric_columns, text_em
 
@@ -53,23 +53,9 @@ def _body(doc):
     return out
 
 
-def _source_texts(document):
-    """Every text the document's content gives the writer."""
-    t = document.title
-    texts = [document.name, *t.organisation, t.kind, t.course, t.title, t.subject,
-             t.place_year, *(x for pair in t.people for x in pair)]
-    for section in [*document.sections, *document.appendices]:
-        texts.append(section.title)
-        for block in walk(section.blocks):
-            if isinstance(block, Section):
-                texts.append(block.title)
-            elif isinstance(block, Paragraph):
-                texts.append(block.text)
-            elif isinstance(block, FigureItem):
-                texts.append(block.caption)
-            else:
-                texts += [block.caption, *block.header, *(c for r in block.rows for c in r)]
-    return texts
+def _source_texts(document) -> list[str]:
+    """Every text of ``document`` (:func:`mechloop.report.document.texts`)."""
+    return document_texts(document)
 
 
 def _docx_texts(doc):

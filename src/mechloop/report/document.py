@@ -21,7 +21,7 @@ from typing import Literal
 from mechloop.views.sheet import FigureItem, Table
 
 __all__ = ["Block", "Document", "FigureItem", "Numbered", "Paragraph", "Section", "Table",
-           "TitlePage", "Words", "caption", "heading", "numbered", "walk"]
+           "TitlePage", "Words", "caption", "heading", "numbered", "texts", "walk"]
 
 
 @dataclass(frozen=True)
@@ -169,3 +169,23 @@ def heading(document: Document, item: Numbered) -> str:
     if item.appendix and item.depth == 1:
         return f"{document.words.appendix} {item.number}. {item.block.title}"
     return f"{item.number} {item.block.title}"
+
+
+def texts(document: Document) -> list[str]:
+    """Every text of ``document`` in order: its name, the title page, the section titles,
+    paragraphs, captions, table headers and cells (for checks of its words)."""
+    t = document.title
+    out = [document.name, *t.organisation, t.kind, t.course, t.title, t.subject,
+           t.place_year, *(text for pair in t.people for text in pair)]
+    for section in [*document.sections, *document.appendices]:
+        out.append(section.title)
+        for block in walk(section.blocks):
+            if isinstance(block, Section):
+                out.append(block.title)
+            elif isinstance(block, Paragraph):
+                out.append(block.text)
+            elif isinstance(block, FigureItem):
+                out.append(block.caption)
+            else:
+                out += [block.caption, *block.header, *(c for row in block.rows for c in row)]
+    return out
