@@ -252,3 +252,60 @@ def test_save_writes_the_editors_text_inside_the_folder_only(browser, server):
     assert browser.find_element(By.ID, "status").text == "saved copy.yaml"
     assert Select(browser.find_element(By.ID, "model-select")).first_selected_option \
         .get_attribute("value") == "path:copy.yaml"
+
+
+def _downloaded(driver, path: Path, wait: float = WAIT) -> Path:
+    """``path`` once the browser has finished writing it."""
+    WebDriverWait(driver, wait).until(
+        lambda d: path.exists() and path.stat().st_size > 0
+        and not path.with_name(path.name + ".crdownload").exists(), f"no {path.name}")
+    return path
+
+
+def test_the_structure_panel_and_every_download(browser, server, downloads):
+    import pandas as pd
+    from docx import Document as DocxDocument
+
+    base, _ = server
+    _open(browser, base + "/?example=crank_slider_dynamics&lang=en")
+    text = browser.find_element(By.ID, "editor").get_property("value")
+    source = {"example": "crank_slider_dynamics", "text": text}
+    api = _post(base, "/api/structure", source)["mechanism"]
+    formula = _wait(browser, lambda d: d.find_elements(By.ID, "structure-formula"),
+                    "no structure shown")[0]
+    assert formula.text == f"structure formula: {api['formula']}" \
+        == "structure formula: L0(1) → L2(2,3)"
+    rows = browser.find_elements(By.CSS_SELECTOR, "#structure-groups tbody tr")
+    assert [r.get_attribute("data-label") for r in rows] == \
+        [g["label"] for g in api["groups"]]
+    assert "W = 3·3 − 2·4 − 0 = 1" in browser.find_element(By.ID, "structure").text
+    browser.find_element(By.ID, "lang-ru").click()
+    assert browser.find_element(By.ID, "structure-formula").text == \
+        "формула строения: L0(1) → L2(2,3)"
+    assert "Звенья" in browser.find_element(By.ID, "structure-groups").text
+    browser.find_element(By.ID, "lang-en").click()
+
+    solved = _post(base, "/api/solve", source)
+    r3 = next(c for c in solved["columns"] if c["name"] == "r3")
+    Select(browser.find_element(By.ID, "table-format")).select_by_value("xlsx")
+    browser.find_element(By.ID, "table-download").click()
+    table = pd.read_excel(_downloaded(browser, downloads / "crank_slider_dynamics.xlsx"))
+    assert table[f"r3 [{r3['unit']}]"].to_numpy() == pytest.approx(r3["values"], rel=1e-12)
+
+    Select(browser.find_element(By.ID, "plot-select")).select_by_value("r3")
+    Select(browser.find_element(By.ID, "figure-format")).select_by_value("svg")
+    browser.find_element(By.ID, "figure-download").click()
+    svg = _downloaded(browser, downloads / "crank_slider_dynamics-r3.svg").read_text()
+    assert "<!-- r3 [m] -->" in svg and "<!-- position -->" in svg
+
+    browser.find_element(By.ID, "model-download").click()
+    model = _downloaded(browser, downloads / "crank_slider_dynamics.yaml")
+    assert model.read_text(encoding="utf-8") == text
+
+    Select(browser.find_element(By.ID, "report-format")).select_by_value("docx")
+    browser.find_element(By.ID, "report").click()
+    docx = _downloaded(browser, downloads / "crank_slider_dynamics-en.docx", REPORT_WAIT)
+    assert any(p.style.name.startswith("Heading") for p in DocxDocument(docx).paragraphs)
+    assert browser.find_element(By.ID, "status").text == "report downloaded"
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-structure.png"))

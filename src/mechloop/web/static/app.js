@@ -13,6 +13,7 @@ const state = {
   column: null,        // the name of the plotted column
   problems: [],
   timer: null,         // playing
+  structure: null,     // the answer of api/structure
   version: 0,          // of the text: answers to older texts are dropped
 };
 
@@ -164,6 +165,7 @@ async function solve(version) {
   render();
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
+  loadStructure(version);
 }
 
 function fillPlotChoices() {
@@ -314,24 +316,120 @@ async function save() {
   status("saved", { path: answer.saved }, "ok");
 }
 
-async function report() {
-  status("writing", null);
-  const body = Object.assign({ text: $("editor").value, lang: LANG }, state.source);
-  const response = await postJSON("api/report", body);
+// The file name of a download: the model's name with ``suffix``.
+function fileName(suffix) {
+  const stem = ($("save-path").value.split("/").pop() || "model").replace(/\.[^.]*$/, "");
+  return stem + suffix;
+}
+
+function saveBlob(blob, name) {
+  const link = document.createElement("a");
+  link.href = URL.createObjectURL(blob);
+  link.download = name;
+  document.body.appendChild(link);
+  link.click();
+  link.remove();
+}
+
+// POST the editor's model (with ``extra``) to ``route`` and save the answer as ``name``.
+// ``words``: the status keys while it is made and when it is saved.
+async function download(route, extra, name, words) {
+  status(words.busy, { name });
+  const body = Object.assign({ text: $("editor").value }, extra, state.source);
+  const response = await postJSON(route, body);
   if (!response.ok) {
     const answer = await read(response);
     status("failed", { error: answer.error }, "error");
     return;
   }
-  const blob = await response.blob();
-  const link = document.createElement("a");
-  link.href = URL.createObjectURL(blob);
-  const stem = ($("save-path").value.split("/").pop() || "model").replace(/\.[^.]*$/, "");
-  link.download = `${stem}-${LANG}.pdf`;
-  document.body.appendChild(link);
-  link.click();
-  link.remove();
-  status("written", null, "ok");
+  saveBlob(await response.blob(), name);
+  status(words.done, { name }, "ok");
+}
+
+async function report() {
+  const format = $("report-format").value;
+  await download("api/report", { lang: LANG, format }, fileName(`-${LANG}.${format}`),
+    { busy: "writing", done: "written" });
+}
+
+async function tableFile() {
+  const format = $("table-format").value;
+  await download("api/table", { format }, fileName("." + format),
+    { busy: "downloading", done: "downloaded" });
+}
+
+async function figureFile() {
+  if (!state.column) return;
+  const format = $("figure-format").value;
+  await download("api/figure", { names: [state.column], format, lang: LANG },
+    fileName(`-${state.column}.${format}`), { busy: "downloading", done: "downloaded" });
+}
+
+function modelFile() {
+  const name = fileName(".yaml");
+  saveBlob(new Blob([$("editor").value], { type: "application/x-yaml" }), name);
+  status("downloaded", { name }, "ok");
+}
+
+// ------------------------------------------------------------------ structure
+async function loadStructure(version) {
+  const body = Object.assign({ text: $("editor").value }, state.source);
+  const response = await postJSON("api/structure", body);
+  const answer = await read(response);
+  if (version !== state.version) return;
+  state.structure = response.ok ? answer : { error: answer.error };
+  renderStructure();
+}
+
+function renderStructure() {
+  const panel = $("structure");
+  panel.textContent = "";
+  const answer = state.structure;
+  if (!answer) return;
+  const line = (text, className) => {
+    const p = document.createElement("p");
+    p.textContent = text;
+    if (className) p.className = className;
+    panel.appendChild(p);
+    return p;
+  };
+  if (answer.error) {
+    line(t("failed", { error: answer.error }), "break");
+    return;
+  }
+  const m = answer.mechanism;
+  if (!m) {
+    line(t("noBodies"));
+  } else {
+    line(`${t("formula")}: ${m.formula}`).id = "structure-formula";
+    line(`${t("mechanismClass")}: ${m.class || t("noClass")}`);
+    line(`${t("mobility")}: W = 3·${m.n} − 2·${m.p5} − ${m.p4} = ${m.W}; `
+      + `${t("inputs")}: ${m.inputs}`).className = m.ok ? "" : "break";
+    const table = document.createElement("table");
+    table.id = "structure-groups";
+    const head = table.createTHead().insertRow();
+    for (const word of [t("group"), t("links"), t("pairs"), t("variant")]) {
+      const cell = document.createElement("th");
+      cell.textContent = word;
+      head.appendChild(cell);
+    }
+    const rows = table.createTBody();
+    for (const group of m.groups) {
+      const row = rows.insertRow();
+      row.dataset.label = group.label;
+      const pairs = [...group.external, ...group.internal]
+        .map((p) => `${p.name} ${p.kind} ${p.link}–${p.to}`).join(", ");
+      for (const text of [group.label, group.links.join(", "), `${group.pairs}: ${pairs}`,
+        group.variant === null ? "—" : String(group.variant)]) {
+        row.insertCell().textContent = text;
+      }
+    }
+    panel.appendChild(table);
+    for (const note of m.notes) line(note);  // the library's words (English)
+  }
+  const description = document.createElement("pre");
+  description.textContent = answer.description;  // the library's words (English)
+  panel.appendChild(description);
 }
 
 function setLanguage(lang) {
@@ -346,6 +444,7 @@ function setLanguage(lang) {
     fillPlotChoices();
     render();
   }
+  renderStructure();
 }
 
 // ------------------------------------------------------------------ start
@@ -369,6 +468,9 @@ window.addEventListener("DOMContentLoaded", async () => {
   $("model-select").addEventListener("change", () => open($("model-select").value));
   $("save").addEventListener("click", save);
   $("report").addEventListener("click", report);
+  $("table-download").addEventListener("click", tableFile);
+  $("figure-download").addEventListener("click", figureFile);
+  $("model-download").addEventListener("click", modelFile);
   for (const button of document.querySelectorAll("button.lang")) {
     button.addEventListener("click", () => setLanguage(button.dataset.lang));
   }

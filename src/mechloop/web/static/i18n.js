@@ -4,7 +4,14 @@
 
 const WORDS = {
   en: {
-    model: "Model", file: "File", save: "Save", report: "Report (PDF)",
+    model: "Model", file: "File", save: "Save", report: "Report",
+    downloads: "Download", tableFile: "Table", figureFile: "Plot", modelFile: "Model file",
+    downloading: "preparing {name}…", downloaded: "downloaded {name}",
+    structure: "Structure", formula: "structure formula",
+    mechanismClass: "class of the mechanism", noClass: "not determined",
+    mobility: "mobility (Chebyshev)", inputs: "inputs",
+    group: "Group", links: "Links", pairs: "Pairs", variant: "Variant",
+    noBodies: "the model has no bodies, so only the vector model's structure is shown",
     editor: "Model (YAML)", problems: "Problems", mechanism: "Mechanism", play: "Play",
     pause: "Pause", plot: "Plot", table: "Results at this position", quantity: "Quantity",
     value: "Value", unit: "Unit", files: "Files in the folder", examples: "Bundled examples",
@@ -17,7 +24,15 @@ const WORDS = {
     axisPosition: "position", ok: "no problems", unsaved: "give a file name to save to",
   },
   ru: {
-    model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт (PDF)",
+    model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
+    downloads: "Скачать", tableFile: "Таблица", figureFile: "График",
+    modelFile: "Файл модели", downloading: "подготовка {name}…",
+    downloaded: "загружено: {name}", structure: "Строение",
+    formula: "формула строения", mechanismClass: "класс механизма",
+    noClass: "не определён",
+    mobility: "подвижность (по Чебышёву)", inputs: "входов",
+    group: "Группа", links: "Звенья", pairs: "Пары", variant: "Вариант",
+    noBodies: "в модели нет тел, поэтому показано только строение векторной модели",
     editor: "Модель (YAML)", problems: "Ошибки", mechanism: "Механизм", play: "Пуск",
     pause: "Пауза", plot: "График", table: "Результаты в этом положении",
     quantity: "Величина", value: "Значение", unit: "Единица", files: "Файлы папки",
