@@ -309,3 +309,37 @@ def test_the_structure_panel_and_every_download(browser, server, downloads):
     assert browser.find_element(By.ID, "status").text == "report downloaded"
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-structure.png"))
+
+
+def test_up_to_six_curves_one_axis_per_unit_follow_the_slider(browser, server):
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml&lang=en")
+    text = browser.find_element(By.ID, "editor").get_property("value")
+    api = {c["name"]: c for c in _post(base, "/api/solve", {"path": "crank_slider.yaml",
+                                                            "text": text})["columns"]}
+    Select(browser.find_element(By.ID, "plot-select")).select_by_value("r3")
+    for name in ("dr3", "a2", "ddr3"):
+        Select(browser.find_element(By.ID, "plot-add")).select_by_value(name)
+    axes = browser.find_elements(By.CSS_SELECTOR, "#plot g.y-axis")
+    assert [a.get_attribute("data-unit") for a in axes] == \
+        [api[n]["unit"] for n in ("r3", "dr3", "a2", "ddr3")] == ["m", "m/s", "deg", "m/s^2"]
+    for k in (0, 7, 30):
+        browser.find_element(By.ID, "slider").send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * k)
+        markers = browser.find_elements(By.CSS_SELECTOR, "#plot circle.marker")
+        shown = {m.get_attribute("data-name"): float(m.get_attribute("data-value"))
+                 for m in markers}
+        assert shown == pytest.approx({n: api[n]["values"][k]
+                                       for n in ("r3", "dr3", "a2", "ddr3")}, rel=1e-12)
+        assert all(m.get_attribute("data-position") == str(k) for m in markers)
+    assert browser.find_element(By.ID, "plot-marker").get_attribute("data-name") == "r3"
+    for name in ("da2", "dda2"):
+        Select(browser.find_element(By.ID, "plot-add")).select_by_value(name)
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#plot path.curve")) == 6
+    assert not browser.find_element(By.ID, "plot-add").is_enabled()  # six at most
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#plot g.y-axis")) == 6
+    browser.find_element(By.CSS_SELECTOR, ".curve-chip[data-name='a2']").click()
+    assert [c.get_attribute("data-name") for c in browser.find_elements(
+        By.CSS_SELECTOR, "#plot path.curve")] == ["r3", "dr3", "ddr3", "da2", "dda2"]
+    assert browser.find_element(By.ID, "plot-add").is_enabled()
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-curves.png"))

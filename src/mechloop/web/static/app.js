@@ -5,12 +5,14 @@
 const query = new URLSearchParams(location.search);
 const TOKEN = query.get("token");
 const $ = (id) => document.getElementById(id);
+const MAX_CURVES = 6;  // on one plot, as the library's plot_parameters
 
 const state = {
   source: null,        // {path: ...} or {example: ...}
   solution: null,
   position: 0,
   column: null,        // the name of the plotted column
+  extra: [],           // the names of the columns plotted with it (up to 5)
   problems: [],
   timer: null,         // playing
   structure: null,     // the answer of api/structure
@@ -188,6 +190,47 @@ function fillPlotChoices() {
     select.appendChild(option);
   }
   select.value = state.column;
+  state.extra = state.extra.filter((name) => names.includes(name) && name !== state.column);
+  fillExtraCurves();
+}
+
+// The curves plotted with the first: a removable item each, and a list to add one.
+function fillExtraCurves() {
+  const columns = state.solution.columns;
+  const add = $("plot-add");
+  add.textContent = "";
+  const prompt = document.createElement("option");
+  prompt.value = "";
+  prompt.textContent = t("addCurve");
+  add.appendChild(prompt);
+  for (const column of columns) {
+    if (column.name === state.column || state.extra.includes(column.name)) continue;
+    const option = document.createElement("option");
+    option.value = column.name;
+    option.textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
+    add.appendChild(option);
+  }
+  add.value = "";
+  add.disabled = state.extra.length >= MAX_CURVES - 1;
+  const list = $("plot-curves");
+  list.textContent = "";
+  for (const name of state.extra) {
+    const button = document.createElement("button");
+    button.className = "curve-chip";
+    button.dataset.name = name;
+    button.title = t("removeCurve");
+    button.textContent = `${columnText(name)} ✕`;
+    button.onclick = () => {
+      state.extra = state.extra.filter((other) => other !== name);
+      fillExtraCurves();
+      render();
+    };
+    list.appendChild(button);
+  }
+}
+
+function plotted() {
+  return [state.column, ...state.extra].filter(Boolean);
 }
 
 function render() {
@@ -195,8 +238,8 @@ function render() {
   if (!solution) return;
   const k = state.position;
   drawDiagram($("diagram"), solution, k);
-  const column = solution.columns.find((c) => c.name === state.column);
-  drawPlot($("plot"), solution, column, k);
+  drawPlot($("plot"), solution,
+    plotted().map((name) => solution.columns.find((c) => c.name === name)), k);
   let label = t("position", { k, n: solution.count - 1 });
   if (solution.time) label += ", " + t("time", { t: format(solution.time[k]) });
   $("position-label").textContent = label;
@@ -361,8 +404,8 @@ async function tableFile() {
 async function figureFile() {
   if (!state.column) return;
   const format = $("figure-format").value;
-  await download("api/figure", { names: [state.column], format, lang: LANG },
-    fileName(`-${state.column}.${format}`), { busy: "downloading", done: "downloaded" });
+  await download("api/figure", { names: plotted(), format, lang: LANG },
+    fileName(`-${plotted().join("-")}.${format}`), { busy: "downloading", done: "downloaded" });
 }
 
 function modelFile() {
@@ -463,6 +506,14 @@ window.addEventListener("DOMContentLoaded", async () => {
   $("play").addEventListener("click", togglePlay);
   $("plot-select").addEventListener("change", () => {
     state.column = $("plot-select").value;
+    state.extra = state.extra.filter((name) => name !== state.column);
+    fillExtraCurves();
+    render();
+  });
+  $("plot-add").addEventListener("change", () => {
+    const name = $("plot-add").value;
+    if (name && state.extra.length < MAX_CURVES - 1) state.extra.push(name);
+    fillExtraCurves();
     render();
   });
   $("model-select").addEventListener("change", () => open($("model-select").value));

@@ -5,6 +5,7 @@
 const WORDS = {
   en: {
     model: "Model", file: "File", save: "Save", report: "Report",
+    addCurve: "+ curve", removeCurve: "remove this curve",
     downloads: "Download", tableFile: "Table", figureFile: "Plot", modelFile: "Model file",
     downloading: "preparing {name}…", downloaded: "downloaded {name}",
     structure: "Structure", formula: "structure formula",
@@ -25,6 +26,7 @@ const WORDS = {
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
+    addCurve: "+ кривая", removeCurve: "убрать эту кривую",
     downloads: "Скачать", tableFile: "Таблица", figureFile: "График",
     modelFile: "Файл модели", downloading: "подготовка {name}…",
     downloaded: "загружено: {name}", structure: "Строение",
