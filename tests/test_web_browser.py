@@ -8,12 +8,14 @@ a chain break, switch to Russian, download the report.  The screenshots of the R
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import threading
 import time
 import urllib.request
 from pathlib import Path
 
+import numpy as np
 import pytest
 import uvicorn
 from selenium import webdriver
@@ -343,3 +345,47 @@ def test_up_to_six_curves_one_axis_per_unit_follow_the_slider(browser, server):
     assert browser.find_element(By.ID, "plot-add").is_enabled()
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-curves.png"))
+
+
+def _path_points(driver, element_id: str) -> list[tuple[float, float]]:
+    d = driver.find_element(By.ID, element_id).get_attribute("d")
+    return [tuple(map(float, pair.split(","))) for pair in re.findall(r"[ML]([^ ]+)", d)]
+
+
+def test_trajectories_and_all_positions_on_the_mechanism(browser, server):
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml&lang=en")
+    assert not browser.find_elements(By.CSS_SELECTOR, "#diagram path.overlay")
+    browser.find_element(By.ID, "overlay").click()
+    faint = browser.find_elements(By.CSS_SELECTOR, "#diagram path.overlay")
+    assert [p.get_attribute("data-vector") for p in faint] == ["1", "2", "3", "4"]
+    rod = faint[1].get_attribute("d")
+    assert rod.count("M") == 73  # the rod at every position of 0..72
+    for key in ("head:1", "head:2"):
+        Select(browser.find_element(By.ID, "trace-add")).select_by_value(key)
+    crank = _path_points(browser, "trajectory-head-1")
+    assert len(crank) == 73
+    for k in (0, 11, 40):
+        browser.find_element(By.ID, "slider").send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * k)
+        line = browser.find_element(By.ID, "vector-1")
+        head = (float(line.get_attribute("x2")), float(line.get_attribute("y2")))
+        assert crank[k] == pytest.approx(head, abs=1e-9)  # the drawn head is on it
+    # the crank's head runs on a circle of r1 = 0.05 m round O (the tail of vector 1)
+    line = browser.find_element(By.ID, "vector-1")
+    centre = np.array([float(line.get_attribute("x1")), float(line.get_attribute("y1"))])
+    scale = np.hypot(*(np.array([float(line.get_attribute("x2")),
+                                 float(line.get_attribute("y2"))]) - centre)) / 0.05
+    radii = np.hypot(*(np.array(crank) - centre).T) / scale
+    assert radii == pytest.approx(np.full(73, 0.05), rel=1e-9)
+    # the rod's head, the slider pin B, moves on the guide: y = -r4 = -0.01 m
+    pin = np.array(_path_points(browser, "trajectory-head-2"))
+    assert (pin[:, 1] - centre[1]) / scale == pytest.approx(np.full(73, 0.01), rel=1e-9)
+    browser.find_element(By.ID, "lang-ru").click()
+    chips = [c.text for c in browser.find_elements(By.CSS_SELECTOR, "#traces button")]
+    assert chips == ["конец вектора 1 ✕", "конец вектора 2 ✕"]
+    browser.find_element(By.CSS_SELECTOR, "#traces button[data-key='head:1']").click()
+    assert not browser.find_elements(By.ID, "trajectory-head-1")
+    assert browser.find_elements(By.ID, "trajectory-head-2")
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-trajectories.png"))
+    browser.find_element(By.ID, "lang-en").click()

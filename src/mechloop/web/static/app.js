@@ -13,6 +13,7 @@ const state = {
   position: 0,
   column: null,        // the name of the plotted column
   extra: [],           // the names of the columns plotted with it (up to 5)
+  traces: [],          // the points whose trajectories are drawn (keys of tracePoints)
   problems: [],
   timer: null,         // playing
   structure: null,     // the answer of api/structure
@@ -164,6 +165,7 @@ async function solve(version) {
   state.position = Math.min(state.position, answer.count - 1);
   slider.value = state.position;
   fillPlotChoices();
+  fillTraces();
   render();
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
@@ -229,6 +231,42 @@ function fillExtraCurves() {
   }
 }
 
+// The points whose trajectories are drawn: a removable item each, and a list to add one.
+function fillTraces() {
+  const points = tracePoints(state.solution.diagram);
+  state.traces = state.traces.filter((key) => points.some((p) => p.key === key));
+  const add = $("trace-add");
+  add.textContent = "";
+  const prompt = document.createElement("option");
+  prompt.value = "";
+  prompt.textContent = t("addTrace");
+  add.appendChild(prompt);
+  const text = (p) => t(p.word, { n: p.n });
+  for (const point of points) {
+    if (state.traces.includes(point.key)) continue;
+    const option = document.createElement("option");
+    option.value = point.key;
+    option.textContent = text(point);
+    add.appendChild(option);
+  }
+  add.value = "";
+  const list = $("traces");
+  list.textContent = "";
+  for (const key of state.traces) {
+    const button = document.createElement("button");
+    button.className = "curve-chip";
+    button.dataset.key = key;
+    button.title = t("removeTrace");
+    button.textContent = `${text(points.find((p) => p.key === key))} ✕`;
+    button.onclick = () => {
+      state.traces = state.traces.filter((other) => other !== key);
+      fillTraces();
+      render();
+    };
+    list.appendChild(button);
+  }
+}
+
 function plotted() {
   return [state.column, ...state.extra].filter(Boolean);
 }
@@ -237,7 +275,7 @@ function render() {
   const solution = state.solution;
   if (!solution) return;
   const k = state.position;
-  drawDiagram($("diagram"), solution, k);
+  drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
   drawPlot($("plot"), solution,
     plotted().map((name) => solution.columns.find((c) => c.name === name)), k);
   let label = t("position", { k, n: solution.count - 1 });
@@ -485,6 +523,7 @@ function setLanguage(lang) {
   status(...lastStatus);
   if (state.solution) {
     fillPlotChoices();
+    fillTraces();
     render();
   }
   renderStructure();
@@ -508,6 +547,12 @@ window.addEventListener("DOMContentLoaded", async () => {
     state.column = $("plot-select").value;
     state.extra = state.extra.filter((name) => name !== state.column);
     fillExtraCurves();
+    render();
+  });
+  $("overlay").addEventListener("change", render);
+  $("trace-add").addEventListener("change", () => {
+    if ($("trace-add").value) state.traces.push($("trace-add").value);
+    fillTraces();
     render();
   });
   $("plot-add").addEventListener("change", () => {

@@ -33,7 +33,61 @@ function planeMap(limits, width, height, pad) {
   };
 }
 
-function drawDiagram(svg, solution, k) {
+// The points a trajectory can follow: "head:2", "tail:2" (of a vector), "center:S2",
+// "joint:A"; each {key, x, y} over every position (null where the chain breaks).
+function tracePoints(diagram) {
+  const points = [];
+  for (const v of diagram.vectors) {
+    points.push({ key: `head:${v.number}`, word: "pointHead", n: v.number, ...v.head });
+    points.push({ key: `tail:${v.number}`, word: "pointTail", n: v.number, ...v.tail });
+  }
+  for (const c of diagram.centers) {
+    points.push({ key: `center:${c.name}`, word: "pointCenter", n: c.name, x: c.x, y: c.y });
+  }
+  for (const j of diagram.joints) {
+    points.push({ key: `joint:${j.name}`, word: "pointJoint", n: j.name, x: j.x, y: j.y });
+  }
+  return points;
+}
+
+// Every position faintly (the photo overlay) and the trajectories of the points ``traces``
+// (keys of tracePoints), drawn under the mechanism; a trajectory is broken where the
+// chain breaks.
+function drawHistory(svg, diagram, map, overlay, traces) {
+  if (overlay) {
+    const group = el("g", { id: "overlay", opacity: 0.2 }, svg);
+    for (const vector of diagram.vectors) {
+      let d = "";
+      vector.tail.x.forEach((x1, i) => {
+        const y1 = vector.tail.y[i], x2 = vector.head.x[i], y2 = vector.head.y[i];
+        if (known(x1, y1, x2, y2)) d += `M${map.x(x1)},${map.y(y1)} L${map.x(x2)},${map.y(y2)} `;
+      });
+      el("path", { d, fill: "none", stroke: vector.color, "stroke-width": 1,
+        class: "overlay", "data-vector": vector.number }, group);
+    }
+  }
+  const points = tracePoints(diagram);
+  traces.forEach((key, j) => {
+    const point = points.find((p) => p.key === key);
+    if (!point) return;
+    let d = "", pen = false, count = 0;
+    point.x.forEach((x, i) => {
+      const y = point.y[i];
+      if (known(x, y)) {
+        d += `${pen ? "L" : "M"}${map.x(x)},${map.y(y)} `;
+        pen = true;
+        count += 1;
+      } else {
+        pen = false;
+      }
+    });
+    el("path", { d, fill: "none", stroke: CURVE_COLORS[j % CURVE_COLORS.length],
+      "stroke-width": 1.4, "stroke-dasharray": "5 3", class: "trajectory",
+      id: "trajectory-" + key.replace(":", "-"), "data-points": count }, svg);
+  });
+}
+
+function drawDiagram(svg, solution, k, overlay = false, traces = []) {
   clear(svg);
   const width = Number(svg.getAttribute("width"));
   const height = Number(svg.getAttribute("height"));
@@ -60,6 +114,7 @@ function drawDiagram(svg, solution, k) {
         "stroke-width": 1 }, ground);
     }
   });
+  drawHistory(svg, diagram, map, overlay, traces);
   const vectors = el("g", { class: "vectors" }, svg);
   const labels = el("g", { class: "labels" }, svg);
   for (const vector of diagram.vectors) {

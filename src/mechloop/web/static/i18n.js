@@ -6,6 +6,9 @@ const WORDS = {
   en: {
     model: "Model", file: "File", save: "Save", report: "Report",
     addCurve: "+ curve", removeCurve: "remove this curve",
+    overlay: "all positions", addTrace: "+ trajectory", removeTrace: "remove this trajectory",
+    pointHead: "head of vector {n}", pointTail: "tail of vector {n}",
+    pointCenter: "centre of mass {n}", pointJoint: "joint {n}",
     downloads: "Download", tableFile: "Table", figureFile: "Plot", modelFile: "Model file",
     downloading: "preparing {name}…", downloaded: "downloaded {name}",
     structure: "Structure", formula: "structure formula",
@@ -27,6 +30,9 @@ const WORDS = {
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
     addCurve: "+ кривая", removeCurve: "убрать эту кривую",
+    overlay: "все положения", addTrace: "+ траектория",
+    removeTrace: "убрать эту траекторию", pointHead: "конец вектора {n}",
+    pointTail: "начало вектора {n}", pointCenter: "центр масс {n}", pointJoint: "пара {n}",
     downloads: "Скачать", tableFile: "Таблица", figureFile: "График",
     modelFile: "Файл модели", downloading: "подготовка {name}…",
     downloaded: "загружено: {name}", structure: "Строение",
