@@ -8,12 +8,14 @@ a chain break, switch to Russian, download the report.  The screenshots of the R
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import threading
 import time
 import urllib.request
 from pathlib import Path
 
+import numpy as np
 import pytest
 import uvicorn
 from selenium import webdriver
@@ -252,3 +254,138 @@ def test_save_writes_the_editors_text_inside_the_folder_only(browser, server):
     assert browser.find_element(By.ID, "status").text == "saved copy.yaml"
     assert Select(browser.find_element(By.ID, "model-select")).first_selected_option \
         .get_attribute("value") == "path:copy.yaml"
+
+
+def _downloaded(driver, path: Path, wait: float = WAIT) -> Path:
+    """``path`` once the browser has finished writing it."""
+    WebDriverWait(driver, wait).until(
+        lambda d: path.exists() and path.stat().st_size > 0
+        and not path.with_name(path.name + ".crdownload").exists(), f"no {path.name}")
+    return path
+
+
+def test_the_structure_panel_and_every_download(browser, server, downloads):
+    import pandas as pd
+    from docx import Document as DocxDocument
+
+    base, _ = server
+    _open(browser, base + "/?example=crank_slider_dynamics&lang=en")
+    text = browser.find_element(By.ID, "editor").get_property("value")
+    source = {"example": "crank_slider_dynamics", "text": text}
+    api = _post(base, "/api/structure", source)["mechanism"]
+    formula = _wait(browser, lambda d: d.find_elements(By.ID, "structure-formula"),
+                    "no structure shown")[0]
+    assert formula.text == f"structure formula: {api['formula']}" \
+        == "structure formula: L0(1) → L2(2,3)"
+    rows = browser.find_elements(By.CSS_SELECTOR, "#structure-groups tbody tr")
+    assert [r.get_attribute("data-label") for r in rows] == \
+        [g["label"] for g in api["groups"]]
+    assert "W = 3·3 − 2·4 − 0 = 1" in browser.find_element(By.ID, "structure").text
+    browser.find_element(By.ID, "lang-ru").click()
+    assert browser.find_element(By.ID, "structure-formula").text == \
+        "формула строения: L0(1) → L2(2,3)"
+    assert "Звенья" in browser.find_element(By.ID, "structure-groups").text
+    browser.find_element(By.ID, "lang-en").click()
+
+    solved = _post(base, "/api/solve", source)
+    r3 = next(c for c in solved["columns"] if c["name"] == "r3")
+    Select(browser.find_element(By.ID, "table-format")).select_by_value("xlsx")
+    browser.find_element(By.ID, "table-download").click()
+    table = pd.read_excel(_downloaded(browser, downloads / "crank_slider_dynamics.xlsx"))
+    assert table[f"r3 [{r3['unit']}]"].to_numpy() == pytest.approx(r3["values"], rel=1e-12)
+
+    Select(browser.find_element(By.ID, "plot-select")).select_by_value("r3")
+    Select(browser.find_element(By.ID, "figure-format")).select_by_value("svg")
+    browser.find_element(By.ID, "figure-download").click()
+    svg = _downloaded(browser, downloads / "crank_slider_dynamics-r3.svg").read_text()
+    assert "<!-- r3 [m] -->" in svg and "<!-- position -->" in svg
+
+    browser.find_element(By.ID, "model-download").click()
+    model = _downloaded(browser, downloads / "crank_slider_dynamics.yaml")
+    assert model.read_text(encoding="utf-8") == text
+
+    Select(browser.find_element(By.ID, "report-format")).select_by_value("docx")
+    browser.find_element(By.ID, "report").click()
+    docx = _downloaded(browser, downloads / "crank_slider_dynamics-en.docx", REPORT_WAIT)
+    assert any(p.style.name.startswith("Heading") for p in DocxDocument(docx).paragraphs)
+    assert browser.find_element(By.ID, "status").text == "report downloaded"
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-structure.png"))
+
+
+def test_up_to_six_curves_one_axis_per_unit_follow_the_slider(browser, server):
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml&lang=en")
+    text = browser.find_element(By.ID, "editor").get_property("value")
+    api = {c["name"]: c for c in _post(base, "/api/solve", {"path": "crank_slider.yaml",
+                                                            "text": text})["columns"]}
+    Select(browser.find_element(By.ID, "plot-select")).select_by_value("r3")
+    for name in ("dr3", "a2", "ddr3"):
+        Select(browser.find_element(By.ID, "plot-add")).select_by_value(name)
+    axes = browser.find_elements(By.CSS_SELECTOR, "#plot g.y-axis")
+    assert [a.get_attribute("data-unit") for a in axes] == \
+        [api[n]["unit"] for n in ("r3", "dr3", "a2", "ddr3")] == ["m", "m/s", "deg", "m/s^2"]
+    for k in (0, 7, 30):
+        browser.find_element(By.ID, "slider").send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * k)
+        markers = browser.find_elements(By.CSS_SELECTOR, "#plot circle.marker")
+        shown = {m.get_attribute("data-name"): float(m.get_attribute("data-value"))
+                 for m in markers}
+        assert shown == pytest.approx({n: api[n]["values"][k]
+                                       for n in ("r3", "dr3", "a2", "ddr3")}, rel=1e-12)
+        assert all(m.get_attribute("data-position") == str(k) for m in markers)
+    assert browser.find_element(By.ID, "plot-marker").get_attribute("data-name") == "r3"
+    for name in ("da2", "dda2"):
+        Select(browser.find_element(By.ID, "plot-add")).select_by_value(name)
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#plot path.curve")) == 6
+    assert not browser.find_element(By.ID, "plot-add").is_enabled()  # six at most
+    assert len(browser.find_elements(By.CSS_SELECTOR, "#plot g.y-axis")) == 6
+    browser.find_element(By.CSS_SELECTOR, ".curve-chip[data-name='a2']").click()
+    assert [c.get_attribute("data-name") for c in browser.find_elements(
+        By.CSS_SELECTOR, "#plot path.curve")] == ["r3", "dr3", "ddr3", "da2", "dda2"]
+    assert browser.find_element(By.ID, "plot-add").is_enabled()
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-curves.png"))
+
+
+def _path_points(driver, element_id: str) -> list[tuple[float, float]]:
+    d = driver.find_element(By.ID, element_id).get_attribute("d")
+    return [tuple(map(float, pair.split(","))) for pair in re.findall(r"[ML]([^ ]+)", d)]
+
+
+def test_trajectories_and_all_positions_on_the_mechanism(browser, server):
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml&lang=en")
+    assert not browser.find_elements(By.CSS_SELECTOR, "#diagram path.overlay")
+    browser.find_element(By.ID, "overlay").click()
+    faint = browser.find_elements(By.CSS_SELECTOR, "#diagram path.overlay")
+    assert [p.get_attribute("data-vector") for p in faint] == ["1", "2", "3", "4"]
+    rod = faint[1].get_attribute("d")
+    assert rod.count("M") == 73  # the rod at every position of 0..72
+    for key in ("head:1", "head:2"):
+        Select(browser.find_element(By.ID, "trace-add")).select_by_value(key)
+    crank = _path_points(browser, "trajectory-head-1")
+    assert len(crank) == 73
+    for k in (0, 11, 40):
+        browser.find_element(By.ID, "slider").send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * k)
+        line = browser.find_element(By.ID, "vector-1")
+        head = (float(line.get_attribute("x2")), float(line.get_attribute("y2")))
+        assert crank[k] == pytest.approx(head, abs=1e-9)  # the drawn head is on it
+    # the crank's head runs on a circle of r1 = 0.05 m round O (the tail of vector 1)
+    line = browser.find_element(By.ID, "vector-1")
+    centre = np.array([float(line.get_attribute("x1")), float(line.get_attribute("y1"))])
+    scale = np.hypot(*(np.array([float(line.get_attribute("x2")),
+                                 float(line.get_attribute("y2"))]) - centre)) / 0.05
+    radii = np.hypot(*(np.array(crank) - centre).T) / scale
+    assert radii == pytest.approx(np.full(73, 0.05), rel=1e-9)
+    # the rod's head, the slider pin B, moves on the guide: y = -r4 = -0.01 m
+    pin = np.array(_path_points(browser, "trajectory-head-2"))
+    assert (pin[:, 1] - centre[1]) / scale == pytest.approx(np.full(73, 0.01), rel=1e-9)
+    browser.find_element(By.ID, "lang-ru").click()
+    chips = [c.text for c in browser.find_elements(By.CSS_SELECTOR, "#traces button")]
+    assert chips == ["конец вектора 1 ✕", "конец вектора 2 ✕"]
+    browser.find_element(By.CSS_SELECTOR, "#traces button[data-key='head:1']").click()
+    assert not browser.find_elements(By.ID, "trajectory-head-1")
+    assert browser.find_elements(By.ID, "trajectory-head-2")
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-trajectories.png"))
+    browser.find_element(By.ID, "lang-en").click()

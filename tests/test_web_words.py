@@ -31,6 +31,7 @@ def _asked_keys() -> set[str]:
         keys |= set(re.findall(r'\bt\("(\w+)"', script))
         keys |= set(re.findall(r'\bstatus\("(\w+)"', script))
         keys |= set(re.findall(r'i18nLabel = "(\w+)"', script))
+        keys |= set(re.findall(r'\b(?:busy|done|word): "(\w+)"', script))
         for pair in re.findall(r'state\.timer \? "(\w+)" : "(\w+)"', script):
             keys |= set(pair)
     return keys

@@ -12,7 +12,14 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
 * ``POST /api/solve`` — the diagram of every position, the breaks and the results table
   (:func:`mechloop.web.payload.solution`), computed in a child process with a time limit;
 * ``POST /api/save`` ``{text, path}`` — written atomically inside the folder;
-* ``POST /api/report`` ``{text, path|example, lang}`` — the report PDF.
+* ``POST /api/report`` ``{text, path|example, lang, format}`` — the report, ``pdf``
+  (default) or ``docx``;
+* ``POST /api/table`` ``{text, path|example, format}`` — the results table, ``csv``,
+  ``xlsx`` or ``json``, in the model's display units;
+* ``POST /api/figure`` ``{text, path|example, names, format, lang}`` — a plot of up to
+  six parameters, ``png`` or ``svg``;
+* ``POST /api/structure`` ``{text, path|example}`` — the structure formula, the Assur
+  groups and the mobility (:func:`mechloop.web.exports.structure`).
 
 Every refusal is JSON ``{"error", "hint", "problems"}`` with a 4xx/5xx status; a model
 error is 422 with every problem located by line.
@@ -20,7 +27,6 @@ error is 422 with every problem located by line.
 
 from __future__ import annotations
 
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -35,6 +41,7 @@ from starlette.staticfiles import StaticFiles
 from mechloop.bundled.catalog import examples, examples_dir, find_example
 from mechloop.errors import HintedError, MechloopError, ModelError
 from mechloop.output.atomic import atomic_write_text
+from mechloop.web import exports
 from mechloop.web.documents import problems, read_model
 from mechloop.web.payload import solution
 from mechloop.web.safety import Guard, WebError, Workspace
@@ -67,23 +74,6 @@ def _solve_text(text: str, path: Path, root: Path) -> bytes:
         return orjson.dumps(solution(document.model), option=orjson.OPT_SERIALIZE_NUMPY)
     except ModelError as exc:
         raise document.locate(exc) from None
-
-
-def _report_text(text: str, path: Path, root: Path, lang: str) -> bytes:
-    """The report PDF of the model in ``text`` (run in the child), with the course
-    project's gear and cam sheets when its ``project:`` section names them."""
-    from mechloop.model.project import project_documents
-    from mechloop.views.report import write_report
-
-    document = read_model(text, path, root)  # its project: files lie inside root
-    with tempfile.TemporaryDirectory(prefix="mechloop-web-") as folder:
-        target = Path(folder) / "report.pdf"
-        try:
-            project = project_documents(document.model, path)
-            write_report(document.model, target, lang=lang, project=project)
-        except ModelError as exc:
-            raise document.locate(exc) from None
-        return target.read_bytes()
 
 
 def create_app(folder: str | Path, *, token: str | None = None,
@@ -179,17 +169,48 @@ def create_app(folder: str | Path, *, token: str | None = None,
         await run_in_threadpool(atomic_write_text, path, data.get("text", ""))
         return JSONResponse({"saved": workspace.relative(path)})
 
+    def attachment(content: bytes, kind: str, path: Path, suffix: str) -> Response:
+        name = (path.stem or "model") + suffix
+        return Response(content, media_type=kind,
+                        headers={"content-disposition": f'attachment; filename="{name}"'})
+
     async def report(request: Request) -> Response:
         data = await body(request)
         path, root = source(data)
-        lang = data.get("lang", "en")
-        if lang not in ("en", "ru"):
-            raise WebError(f"no report language {lang!r}", "use 'en' or 'ru'")
-        pdf = await run_in_threadpool(run_limited, _report_text, data.get("text", ""),
-                                      path, root, lang, seconds=report_seconds)
-        name = (path.stem or "model") + ".pdf"
-        return Response(pdf, media_type="application/pdf",
-                        headers={"content-disposition": f'attachment; filename="{name}"'})
+        lang = exports.language(data.get("lang", "en"))
+        fmt = exports.pick("report", data.get("format", "pdf"), exports.REPORT_TYPES)
+        content = await run_in_threadpool(run_limited, exports.report_file,
+                                          data.get("text", ""), path, root, lang, fmt,
+                                          seconds=report_seconds)
+        return attachment(content, exports.REPORT_TYPES[fmt], path, f".{fmt}")
+
+    async def table_download(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        fmt = exports.pick("table", data.get("format", "csv"), exports.TABLE_TYPES)
+        content = await run_in_threadpool(run_limited, exports.table_file,
+                                          data.get("text", ""), path, root, fmt,
+                                          seconds=solve_seconds)
+        return attachment(content, exports.TABLE_TYPES[fmt], path, f".{fmt}")
+
+    async def figure(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        names = exports.curve_names(data.get("names"))
+        fmt = exports.pick("figure", data.get("format", "png"), exports.FIGURE_TYPES)
+        lang = exports.language(data.get("lang", "en"))
+        content = await run_in_threadpool(run_limited, exports.figure_file,
+                                          data.get("text", ""), path, root, names, fmt,
+                                          lang, seconds=solve_seconds)
+        return attachment(content, exports.FIGURE_TYPES[fmt], path, f".{fmt}")
+
+    async def structure(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        answer = await run_in_threadpool(run_limited, exports.structure,
+                                         data.get("text", ""), path, root,
+                                         seconds=solve_seconds)
+        return JSONResponse(answer)
 
     routes = [Route("/", index),
               Route("/api/models", guarded(models)),
@@ -198,6 +219,9 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/solve", guarded(solve), methods=["POST"]),
               Route("/api/save", guarded(save), methods=["POST"]),
               Route("/api/report", guarded(report), methods=["POST"]),
+              Route("/api/table", guarded(table_download), methods=["POST"]),
+              Route("/api/figure", guarded(figure), methods=["POST"]),
+              Route("/api/structure", guarded(structure), methods=["POST"]),
               Mount("/static", StaticFiles(directory=STATIC), name="static")]
     app = Starlette(routes=routes)
     return Guard(app, token=token, hosts=hosts)

@@ -5,14 +5,18 @@
 const query = new URLSearchParams(location.search);
 const TOKEN = query.get("token");
 const $ = (id) => document.getElementById(id);
+const MAX_CURVES = 6;  // on one plot, as the library's plot_parameters
 
 const state = {
   source: null,        // {path: ...} or {example: ...}
   solution: null,
   position: 0,
   column: null,        // the name of the plotted column
+  extra: [],           // the names of the columns plotted with it (up to 5)
+  traces: [],          // the points whose trajectories are drawn (keys of tracePoints)
   problems: [],
   timer: null,         // playing
+  structure: null,     // the answer of api/structure
   version: 0,          // of the text: answers to older texts are dropped
 };
 
@@ -161,9 +165,11 @@ async function solve(version) {
   state.position = Math.min(state.position, answer.count - 1);
   slider.value = state.position;
   fillPlotChoices();
+  fillTraces();
   render();
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
+  loadStructure(version);
 }
 
 function fillPlotChoices() {
@@ -186,15 +192,92 @@ function fillPlotChoices() {
     select.appendChild(option);
   }
   select.value = state.column;
+  state.extra = state.extra.filter((name) => names.includes(name) && name !== state.column);
+  fillExtraCurves();
+}
+
+// The curves plotted with the first: a removable item each, and a list to add one.
+function fillExtraCurves() {
+  const columns = state.solution.columns;
+  const add = $("plot-add");
+  add.textContent = "";
+  const prompt = document.createElement("option");
+  prompt.value = "";
+  prompt.textContent = t("addCurve");
+  add.appendChild(prompt);
+  for (const column of columns) {
+    if (column.name === state.column || state.extra.includes(column.name)) continue;
+    const option = document.createElement("option");
+    option.value = column.name;
+    option.textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
+    add.appendChild(option);
+  }
+  add.value = "";
+  add.disabled = state.extra.length >= MAX_CURVES - 1;
+  const list = $("plot-curves");
+  list.textContent = "";
+  for (const name of state.extra) {
+    const button = document.createElement("button");
+    button.className = "curve-chip";
+    button.dataset.name = name;
+    button.title = t("removeCurve");
+    button.textContent = `${columnText(name)} ✕`;
+    button.onclick = () => {
+      state.extra = state.extra.filter((other) => other !== name);
+      fillExtraCurves();
+      render();
+    };
+    list.appendChild(button);
+  }
+}
+
+// The points whose trajectories are drawn: a removable item each, and a list to add one.
+function fillTraces() {
+  const points = tracePoints(state.solution.diagram);
+  state.traces = state.traces.filter((key) => points.some((p) => p.key === key));
+  const add = $("trace-add");
+  add.textContent = "";
+  const prompt = document.createElement("option");
+  prompt.value = "";
+  prompt.textContent = t("addTrace");
+  add.appendChild(prompt);
+  const text = (p) => t(p.word, { n: p.n });
+  for (const point of points) {
+    if (state.traces.includes(point.key)) continue;
+    const option = document.createElement("option");
+    option.value = point.key;
+    option.textContent = text(point);
+    add.appendChild(option);
+  }
+  add.value = "";
+  const list = $("traces");
+  list.textContent = "";
+  for (const key of state.traces) {
+    const button = document.createElement("button");
+    button.className = "curve-chip";
+    button.dataset.key = key;
+    button.title = t("removeTrace");
+    button.textContent = `${text(points.find((p) => p.key === key))} ✕`;
+    button.onclick = () => {
+      state.traces = state.traces.filter((other) => other !== key);
+      fillTraces();
+      render();
+    };
+    list.appendChild(button);
+  }
+}
+
+function plotted() {
+  return [state.column, ...state.extra].filter(Boolean);
 }
 
 function render() {
   const solution = state.solution;
   if (!solution) return;
   const k = state.position;
-  drawDiagram($("diagram"), solution, k);
-  const column = solution.columns.find((c) => c.name === state.column);
-  drawPlot($("plot"), solution, column, k);
+  drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
+  drawPlot($("plot"), solution,
+    plotted().map((name) => solution.columns.find((c) => c.name === name)), k);
   let label = t("position", { k, n: solution.count - 1 });
   if (solution.time) label += ", " + t("time", { t: format(solution.time[k]) });
   $("position-label").textContent = label;
@@ -314,24 +397,120 @@ async function save() {
   status("saved", { path: answer.saved }, "ok");
 }
 
-async function report() {
-  status("writing", null);
-  const body = Object.assign({ text: $("editor").value, lang: LANG }, state.source);
-  const response = await postJSON("api/report", body);
+// The file name of a download: the model's name with ``suffix``.
+function fileName(suffix) {
+  const stem = ($("save-path").value.split("/").pop() || "model").replace(/\.[^.]*$/, "");
+  return stem + suffix;
+}
+
+function saveBlob(blob, name) {
+  const link = document.createElement("a");
+  link.href = URL.createObjectURL(blob);
+  link.download = name;
+  document.body.appendChild(link);
+  link.click();
+  link.remove();
+}
+
+// POST the editor's model (with ``extra``) to ``route`` and save the answer as ``name``.
+// ``words``: the status keys while it is made and when it is saved.
+async function download(route, extra, name, words) {
+  status(words.busy, { name });
+  const body = Object.assign({ text: $("editor").value }, extra, state.source);
+  const response = await postJSON(route, body);
   if (!response.ok) {
     const answer = await read(response);
     status("failed", { error: answer.error }, "error");
     return;
   }
-  const blob = await response.blob();
-  const link = document.createElement("a");
-  link.href = URL.createObjectURL(blob);
-  const stem = ($("save-path").value.split("/").pop() || "model").replace(/\.[^.]*$/, "");
-  link.download = `${stem}-${LANG}.pdf`;
-  document.body.appendChild(link);
-  link.click();
-  link.remove();
-  status("written", null, "ok");
+  saveBlob(await response.blob(), name);
+  status(words.done, { name }, "ok");
+}
+
+async function report() {
+  const format = $("report-format").value;
+  await download("api/report", { lang: LANG, format }, fileName(`-${LANG}.${format}`),
+    { busy: "writing", done: "written" });
+}
+
+async function tableFile() {
+  const format = $("table-format").value;
+  await download("api/table", { format }, fileName("." + format),
+    { busy: "downloading", done: "downloaded" });
+}
+
+async function figureFile() {
+  if (!state.column) return;
+  const format = $("figure-format").value;
+  await download("api/figure", { names: plotted(), format, lang: LANG },
+    fileName(`-${plotted().join("-")}.${format}`), { busy: "downloading", done: "downloaded" });
+}
+
+function modelFile() {
+  const name = fileName(".yaml");
+  saveBlob(new Blob([$("editor").value], { type: "application/x-yaml" }), name);
+  status("downloaded", { name }, "ok");
+}
+
+// ------------------------------------------------------------------ structure
+async function loadStructure(version) {
+  const body = Object.assign({ text: $("editor").value }, state.source);
+  const response = await postJSON("api/structure", body);
+  const answer = await read(response);
+  if (version !== state.version) return;
+  state.structure = response.ok ? answer : { error: answer.error };
+  renderStructure();
+}
+
+function renderStructure() {
+  const panel = $("structure");
+  panel.textContent = "";
+  const answer = state.structure;
+  if (!answer) return;
+  const line = (text, className) => {
+    const p = document.createElement("p");
+    p.textContent = text;
+    if (className) p.className = className;
+    panel.appendChild(p);
+    return p;
+  };
+  if (answer.error) {
+    line(t("failed", { error: answer.error }), "break");
+    return;
+  }
+  const m = answer.mechanism;
+  if (!m) {
+    line(t("noBodies"));
+  } else {
+    line(`${t("formula")}: ${m.formula}`).id = "structure-formula";
+    line(`${t("mechanismClass")}: ${m.class || t("noClass")}`);
+    line(`${t("mobility")}: W = 3·${m.n} − 2·${m.p5} − ${m.p4} = ${m.W}; `
+      + `${t("inputs")}: ${m.inputs}`).className = m.ok ? "" : "break";
+    const table = document.createElement("table");
+    table.id = "structure-groups";
+    const head = table.createTHead().insertRow();
+    for (const word of [t("group"), t("links"), t("pairs"), t("variant")]) {
+      const cell = document.createElement("th");
+      cell.textContent = word;
+      head.appendChild(cell);
+    }
+    const rows = table.createTBody();
+    for (const group of m.groups) {
+      const row = rows.insertRow();
+      row.dataset.label = group.label;
+      const pairs = [...group.external, ...group.internal]
+        .map((p) => `${p.name} ${p.kind} ${p.link}–${p.to}`).join(", ");
+      for (const text of [group.label, group.links.join(", "), `${group.pairs}: ${pairs}`,
+        group.variant === null ? "—" : String(group.variant)]) {
+        row.insertCell().textContent = text;
+      }
+    }
+    panel.appendChild(table);
+    for (const note of m.notes) line(note);  // the library's words (English)
+  }
+  const description = document.createElement("pre");
+  description.textContent = answer.description;  // the library's words (English)
+  panel.appendChild(description);
 }
 
 function setLanguage(lang) {
@@ -344,8 +523,10 @@ function setLanguage(lang) {
   status(...lastStatus);
   if (state.solution) {
     fillPlotChoices();
+    fillTraces();
     render();
   }
+  renderStructure();
 }
 
 // ------------------------------------------------------------------ start
@@ -364,11 +545,28 @@ window.addEventListener("DOMContentLoaded", async () => {
   $("play").addEventListener("click", togglePlay);
   $("plot-select").addEventListener("change", () => {
     state.column = $("plot-select").value;
+    state.extra = state.extra.filter((name) => name !== state.column);
+    fillExtraCurves();
+    render();
+  });
+  $("overlay").addEventListener("change", render);
+  $("trace-add").addEventListener("change", () => {
+    if ($("trace-add").value) state.traces.push($("trace-add").value);
+    fillTraces();
+    render();
+  });
+  $("plot-add").addEventListener("change", () => {
+    const name = $("plot-add").value;
+    if (name && state.extra.length < MAX_CURVES - 1) state.extra.push(name);
+    fillExtraCurves();
     render();
   });
   $("model-select").addEventListener("change", () => open($("model-select").value));
   $("save").addEventListener("click", save);
   $("report").addEventListener("click", report);
+  $("table-download").addEventListener("click", tableFile);
+  $("figure-download").addEventListener("click", figureFile);
+  $("model-download").addEventListener("click", modelFile);
   for (const button of document.querySelectorAll("button.lang")) {
     button.addEventListener("click", () => setLanguage(button.dataset.lang));
   }

@@ -33,7 +33,61 @@ function planeMap(limits, width, height, pad) {
   };
 }
 
-function drawDiagram(svg, solution, k) {
+// The points a trajectory can follow: "head:2", "tail:2" (of a vector), "center:S2",
+// "joint:A"; each {key, x, y} over every position (null where the chain breaks).
+function tracePoints(diagram) {
+  const points = [];
+  for (const v of diagram.vectors) {
+    points.push({ key: `head:${v.number}`, word: "pointHead", n: v.number, ...v.head });
+    points.push({ key: `tail:${v.number}`, word: "pointTail", n: v.number, ...v.tail });
+  }
+  for (const c of diagram.centers) {
+    points.push({ key: `center:${c.name}`, word: "pointCenter", n: c.name, x: c.x, y: c.y });
+  }
+  for (const j of diagram.joints) {
+    points.push({ key: `joint:${j.name}`, word: "pointJoint", n: j.name, x: j.x, y: j.y });
+  }
+  return points;
+}
+
+// Every position faintly (the photo overlay) and the trajectories of the points ``traces``
+// (keys of tracePoints), drawn under the mechanism; a trajectory is broken where the
+// chain breaks.
+function drawHistory(svg, diagram, map, overlay, traces) {
+  if (overlay) {
+    const group = el("g", { id: "overlay", opacity: 0.2 }, svg);
+    for (const vector of diagram.vectors) {
+      let d = "";
+      vector.tail.x.forEach((x1, i) => {
+        const y1 = vector.tail.y[i], x2 = vector.head.x[i], y2 = vector.head.y[i];
+        if (known(x1, y1, x2, y2)) d += `M${map.x(x1)},${map.y(y1)} L${map.x(x2)},${map.y(y2)} `;
+      });
+      el("path", { d, fill: "none", stroke: vector.color, "stroke-width": 1,
+        class: "overlay", "data-vector": vector.number }, group);
+    }
+  }
+  const points = tracePoints(diagram);
+  traces.forEach((key, j) => {
+    const point = points.find((p) => p.key === key);
+    if (!point) return;
+    let d = "", pen = false, count = 0;
+    point.x.forEach((x, i) => {
+      const y = point.y[i];
+      if (known(x, y)) {
+        d += `${pen ? "L" : "M"}${map.x(x)},${map.y(y)} `;
+        pen = true;
+        count += 1;
+      } else {
+        pen = false;
+      }
+    });
+    el("path", { d, fill: "none", stroke: CURVE_COLORS[j % CURVE_COLORS.length],
+      "stroke-width": 1.4, "stroke-dasharray": "5 3", class: "trajectory",
+      id: "trajectory-" + key.replace(":", "-"), "data-points": count }, svg);
+  });
+}
+
+function drawDiagram(svg, solution, k, overlay = false, traces = []) {
   clear(svg);
   const width = Number(svg.getAttribute("width"));
   const height = Number(svg.getAttribute("height"));
@@ -60,6 +114,7 @@ function drawDiagram(svg, solution, k) {
         "stroke-width": 1 }, ground);
     }
   });
+  drawHistory(svg, diagram, map, overlay, traces);
   const vectors = el("g", { class: "vectors" }, svg);
   const labels = el("g", { class: "labels" }, svg);
   for (const vector of diagram.vectors) {
@@ -138,57 +193,94 @@ function format(value) {
   return String(Number(value.toPrecision(6)));
 }
 
-function drawPlot(svg, solution, column, k) {
+// The colours of the curves (matplotlib's first six).
+const CURVE_COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"];
+const AXIS_WIDTH = 58;  // px of one y-axis with its labels
+
+// Up to six columns over the positions, one y-axis per unit (the first unit's axis on the
+// left, the next on the right, and so on outwards), the slider's position marked on every
+// curve; the first curve's marker is #plot-marker, every marker carries its value.
+function drawPlot(svg, solution, columns, k) {
   clear(svg);
-  if (!column) return;
+  columns = columns.filter(Boolean);
+  if (!columns.length) return;
   const width = Number(svg.getAttribute("width"));
   const height = Number(svg.getAttribute("height"));
-  const left = 64, right = 12, top = 12, bottom = 34;
-  const values = column.values;
-  const finite = values.filter((v) => known(v));
-  let low = finite.length ? Math.min(...finite) : 0;
-  let high = finite.length ? Math.max(...finite) : 1;
-  if (high - low < 1e-12 * Math.max(1, Math.abs(high))) { low -= 1; high += 1; }
-  const n = values.length - 1;
+  const units = [...new Set(columns.map((c) => c.unit))];
+  const sides = units.map((u, j) => (j % 2 === 0 ? "left" : "right"));
+  const count = (side) => sides.filter((s) => s === side).length;
+  const left = AXIS_WIDTH * count("left") + 6, right = AXIS_WIDTH * count("right") + 12;
+  const top = 12 + 14 * Math.ceil(columns.length / 3), bottom = 34;
+  const n = solution.count - 1;
   const x = (i) => left + (n > 0 ? i / n : 0) * (width - left - right);
-  const y = (v) => top + (high - v) / (high - low) * (height - top - bottom);
   const axes = el("g", { class: "axes", "font-size": 10, fill: "#333" }, svg);
-  for (const v of ticks(low, high, 5)) {
-    el("line", { x1: left, x2: width - right, y1: y(v), y2: y(v), stroke: "#e3e3e3" }, axes);
-    el("text", { x: left - 5, y: y(v) + 3, "text-anchor": "end" }, axes).textContent =
-      format(v);
-  }
   for (const i of ticks(0, n, 8)) {
     el("line", { x1: x(i), x2: x(i), y1: top, y2: height - bottom, stroke: "#e3e3e3" }, axes);
     el("text", { x: x(i), y: height - bottom + 13, "text-anchor": "middle" }, axes)
       .textContent = format(i);
   }
-  el("rect", { x: left, y: top, width: width - left - right, height: height - top - bottom,
-    fill: "none", stroke: "#888" }, axes);
   el("text", { x: (left + width - right) / 2, y: height - 4, "text-anchor": "middle" }, axes)
     .textContent = t("axisPosition");
-  el("text", { x: 12, y: top + (height - top - bottom) / 2, "text-anchor": "middle",
-    transform: `rotate(-90 12 ${top + (height - top - bottom) / 2})` }, axes)
-    .textContent = `${columnText(column.name)}, ${unitText(column.unit)}`;
-  // the curve, broken where a value is unknown
-  let path = "", pen = false;
-  values.forEach((v, i) => {
-    if (known(v)) {
-      path += `${pen ? "L" : "M"}${x(i).toFixed(2)},${y(v).toFixed(2)} `;
-      pen = true;
-    } else {
-      pen = false;
+  const scales = {};
+  units.forEach((unit, j) => {
+    const finite = columns.filter((c) => c.unit === unit)
+      .flatMap((c) => c.values.filter((v) => known(v)));
+    let low = finite.length ? Math.min(...finite) : 0;
+    let high = finite.length ? Math.max(...finite) : 1;
+    if (high - low < 1e-12 * Math.max(1, Math.abs(high))) { low -= 1; high += 1; }
+    const y = (v) => top + (high - v) / (high - low) * (height - top - bottom);
+    scales[unit] = y;
+    const side = sides[j], outward = Math.floor(j / 2);
+    const at = side === "left" ? left - outward * AXIS_WIDTH : width - right + outward * AXIS_WIDTH;
+    const sign = side === "left" ? -1 : 1;
+    const first = columns.findIndex((c) => c.unit === unit);
+    const color = units.length > 1 ? CURVE_COLORS[first] : "#333";
+    const axis = el("g", { class: "y-axis", "data-unit": unit, fill: color }, axes);
+    el("line", { x1: at, x2: at, y1: top, y2: height - bottom, stroke: color }, axis);
+    for (const v of ticks(low, high, 5)) {
+      if (j === 0) {
+        el("line", { x1: left, x2: width - right, y1: y(v), y2: y(v), stroke: "#e3e3e3" },
+          axes);
+      }
+      el("line", { x1: at, x2: at + 3 * sign, y1: y(v), y2: y(v), stroke: color }, axis);
+      el("text", { x: at + 5 * sign, y: y(v) + 3,
+        "text-anchor": side === "left" ? "end" : "start" }, axis).textContent = format(v);
     }
+    const middle = top + (height - top - bottom) / 2, lx = at + (AXIS_WIDTH - 8) * sign;
+    const names = columns.filter((c) => c.unit === unit).map((c) => columnText(c.name));
+    el("text", { x: lx, y: middle, "text-anchor": "middle",
+      transform: `rotate(-90 ${lx} ${middle})` }, axis)
+      .textContent = `${names.join(", ")}, ${unitText(unit)}`;
   });
-  el("path", { d: path, fill: "none", stroke: "#1f77b4", "stroke-width": 1.8,
-    class: "curve" }, svg);
+  el("rect", { x: left, y: top, width: width - left - right, height: height - top - bottom,
+    fill: "none", stroke: "#888" }, axes);
   el("line", { x1: x(k), x2: x(k), y1: top, y2: height - bottom, stroke: "#d62728",
     "stroke-dasharray": "4 3", class: "cursor" }, svg);
-  const v = values[k];
-  if (known(v)) {
-    el("circle", { id: "plot-marker", cx: x(k), cy: y(v), r: 4.5, fill: "#d62728",
-      "data-position": k, "data-value": v }, svg);
-    el("text", { x: Math.min(x(k) + 6, width - right - 70), y: Math.max(y(v) - 7, top + 10),
-      "font-size": 11, fill: "#d62728", id: "plot-value" }, svg).textContent = format(v);
-  }
+  columns.forEach((column, j) => {
+    const y = scales[column.unit], color = CURVE_COLORS[j];
+    // the curve, broken where a value is unknown
+    let path = "", pen = false;
+    column.values.forEach((v, i) => {
+      if (known(v)) {
+        path += `${pen ? "L" : "M"}${x(i).toFixed(2)},${y(v).toFixed(2)} `;
+        pen = true;
+      } else {
+        pen = false;
+      }
+    });
+    el("path", { d: path, fill: "none", stroke: color, "stroke-width": 1.8,
+      class: "curve", "data-name": column.name }, svg);
+    const v = column.values[k];
+    const legend = el("text", { x: 8 + (j % 3) * ((width - 16) / 3),
+      y: 11 + 14 * Math.floor(j / 3), "font-size": 11, fill: color, class: "legend",
+      "data-name": column.name }, svg);
+    legend.textContent = `${columnText(column.name)} = ${format(v === null ? NaN : v)} `
+      + unitText(column.unit);
+    if (known(v)) {
+      const marker = el("circle", { cx: x(k), cy: y(v), r: 4.5, fill: color,
+        stroke: "#d62728", class: "marker", "data-name": column.name, "data-position": k,
+        "data-value": v }, svg);
+      if (j === 0) marker.id = "plot-marker";
+    }
+  });
 }
