@@ -21,7 +21,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import root
 
-from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl4
+from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl3, solve_pl4
 from mechloop.spatial import (
     components,
     in_convention,
@@ -32,6 +32,7 @@ from mechloop.spatial import (
     solve_pr3,
     solve_pr4,
     solve_pr5,
+    solve_pr6,
     solve_pr7,
     solve_pr8,
     solve_pr9,
@@ -56,6 +57,7 @@ MODULES = {
     "Pr3": (solve_pr3, [(0, "r"), (0, "a"), (1, "a")], [(0, "b"), (1, "r"), (1, "b")], 2, False),
     "Pr4": (solve_pr4, [(0, "r"), (0, "a"), (1, "b")], [(0, "b"), (1, "r"), (1, "a")], 2, False),
     "Pr5": (solve_pr5, [(0, "r"), (0, "b"), (1, "r")], [(0, "a"), (1, "a"), (1, "b")], 2, False),
+    "Pr6": (solve_pr6, [(0, "r"), (0, "b"), (1, "a")], [(0, "a"), (1, "r"), (1, "b")], 4, False),
     "Pr7": (solve_pr7, [(0, "r"), (0, "b"), (1, "b")], [(0, "a"), (1, "r"), (1, "a")], 2, False),
     "Pr8": (solve_pr8, [(0, "a"), (0, "b"), (1, "r")], [(0, "r"), (1, "a"), (1, "b")], 2, True),
     "Pr9": (solve_pr9, [(0, "a"), (0, "b"), (1, "a")], [(0, "r"), (1, "r"), (1, "b")], 2, True),
@@ -212,7 +214,7 @@ def test_zero_vector_is_a_reported_break():
 
 @FAST
 @given(seed=seeds)
-def test_planar_contour_as_spatial_matches_pl1_pl2_pl4(seed):
+def test_planar_contour_as_spatial_matches_pl1_to_pl4(seed):
     rng = np.random.default_rng(seed)
     x, y = rng.uniform(-2, 2, (2, P))
     zero = np.zeros(P)
@@ -235,6 +237,16 @@ def test_planar_contour_as_spatial_matches_pl1_pl2_pl4(seed):
     cols = np.arange(P)
     np.testing.assert_allclose(ri[pick, cols][ok2], r1[ok2], rtol=1e-12, atol=1e-12)
     np.testing.assert_allclose(rj[pick, cols][ok2], r2[ok2], rtol=1e-12, atol=1e-12)
+    # Pl3 ↔ Pr6 on its β_i = 0 branches: both variants, as a set
+    q2 = rng.uniform(0.5, 2.0, P)
+    for variant in (1, 2):
+        p1, p2, ok3 = solve_pl3(x, y, a1, q2, variant=variant)
+        ri, bi, aj, ok6 = solve_pr6(x, y, zero, a1, q2, zero)
+        flat = ok6 & (np.abs(wrap(bi)) < 1e-9)
+        assert np.all(flat.any(axis=0) == ok3)
+        gap = np.fmax(np.abs(ri - p1) / (1 + np.abs(p1)), np.abs(wrap(aj - p2)))
+        gap = np.where(flat, gap, np.inf).min(axis=0)
+        assert np.all(gap[ok3] <= 1e-12), gap[ok3].max()
     # Pl4 ↔ Pr9 (convention 1): both variants, as a set, with β_i = 0
     q1, q2 = rng.uniform(0.5, 2.0, (2, P))
     for variant in (1, 2):

@@ -22,7 +22,7 @@ Pr2     r_i α_i r_j           1         yes    normal of i's plane: linear     
 Pr3     r_i α_i α_j           2         yes    normal of i's plane: cos α_j = c vertical_plane
 Pr4     r_i α_i β_j           2         yes    normal of i's plane: sin(β_j−β_i) vertical_plane
 Pr5     r_i β_i r_j           2         yes    cone ∩ line: quadratic           cone
-Pr6     r_i β_i α_j           4         no     cone ∩ circle: quartic           —
+Pr6     r_i β_i α_j           4         yes    cone ∩ circle: quartic (eigval)  cone
 Pr7     r_i β_i β_j           2         yes    cone ∩ horizontal circle         cone
 Pr8     α_i β_i r_j           2         yes    sphere ∩ line: quadratic         sphere
 Pr9     α_i β_i α_j           2         yes    sphere ∩ circle                  sphere
@@ -42,10 +42,14 @@ Pr20    β_i β_j β_k           ∞         yes    existence of the family only
 Not yet here: variant choice/continuity, exact velocities and accelerations (the 3×3
 Jacobian), models with spatial contours, dynamics, views.
 
+Shared helpers: :mod:`.roots` (``a cos θ + b sin θ = c``, quadratics), :mod:`.quartic`
+(trigonometric quartic by batched companion eigenvalues), :mod:`.parts` (the rest of
+the unknowns once a root is known).
+
 Owns the modules above; imports only NumPy; knows nothing of models or files.
 """
 
-from mechloop.spatial.cone import solve_pr5, solve_pr7
+from mechloop.spatial.cone import solve_pr5, solve_pr6, solve_pr7
 from mechloop.spatial.horizontal import horizontal_pair, pr20_family, solve_pr18, solve_pr19
 from mechloop.spatial.lengths import solve_pr11, solve_pr12, solve_pr13
 from mechloop.spatial.one_vector import solve_pr1
@@ -64,6 +68,7 @@ __all__ = [
     "solve_pr3",
     "solve_pr4",
     "solve_pr5",
+    "solve_pr6",
     "solve_pr7",
     "solve_pr8",
     "solve_pr9",
