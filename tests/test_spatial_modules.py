@@ -40,6 +40,8 @@ from mechloop.spatial import (
     solve_pr11,
     solve_pr12,
     solve_pr13,
+    solve_pr14,
+    solve_pr15,
     solve_pr18,
     solve_pr19,
 )
@@ -48,6 +50,8 @@ from mechloop.spatial.roots import wrap
 FAST = settings(max_examples=40, deadline=None)
 seeds = st.integers(0, 2**32 - 1)
 P = 64
+#: Distance (in sin/cos of an elevation) kept from the degenerate directions.
+MARGIN = 0.15
 
 # module: (function, unknowns, knowns, branches, takes convention) with a parameter named
 # by (vector 0/1/2, "r" | "a" | "b").
@@ -69,6 +73,10 @@ MODULES = {
              [(0, "a"), (0, "b"), (1, "a"), (1, "b"), (2, "r"), (2, "b")], 2, False),
     "Pr13": (solve_pr13, [(0, "r"), (1, "r"), (2, "b")],
              [(0, "a"), (0, "b"), (1, "a"), (1, "b"), (2, "r"), (2, "a")], 2, False),
+    "Pr14": (solve_pr14, [(0, "r"), (1, "a"), (2, "a")],
+             [(0, "a"), (0, "b"), (1, "r"), (1, "b"), (2, "r"), (2, "b")], 4, False),
+    "Pr15": (solve_pr15, [(0, "r"), (1, "a"), (2, "b")],
+             [(0, "a"), (0, "b"), (1, "r"), (1, "b"), (2, "r"), (2, "a")], 4, False),
     "Pr18": (solve_pr18, [(0, "b"), (1, "b"), (2, "r")],
              [(0, "r"), (0, "a"), (1, "r"), (1, "a"), (2, "a"), (2, "b")], 2, False),
     "Pr19": (solve_pr19, [(0, "b"), (1, "b"), (2, "a")],
@@ -85,6 +93,19 @@ def _config(rng: np.random.Generator, name: str, convention: int, n: int = P) ->
         par[v, "r"] = rng.uniform(0.5, 2.0, n) if v in used else np.zeros(n)
         par[v, "a"] = rng.uniform(-np.pi, np.pi, n)
         par[v, "b"] = rng.uniform(-np.pi, np.pi, n)
+    for v in range(3):
+        # keep away from the degenerate directions where an unknown β is undefined
+        # (vertical vector) or, with its elevation known, the cone flattens (horizontal)
+        if (v, "b") in unknowns:
+            a = par[v, "a"]
+            while True:
+                bad = np.abs(np.cos(a)) < MARGIN
+                if (v, "a") in knowns:
+                    bad |= np.abs(np.sin(a)) < MARGIN
+                if not bad.any():
+                    break
+                a = np.where(bad, rng.uniform(-np.pi, np.pi, n), a)
+            par[v, "a"] = a
     for v in range(3):  # both angles of one vector unknown: the truth in the convention
         if (v, "a") in unknowns and (v, "b") in unknowns:
             par[v, "a"], par[v, "b"] = in_convention(par[v, "a"], par[v, "b"],

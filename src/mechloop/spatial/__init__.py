@@ -30,8 +30,8 @@ Pr10    α_i β_i β_j           2         yes    sphere ∩ horizontal circle  
 Pr11    r_i r_j r_k           1         yes    linear 3×3 (Cramer)              lengths
 Pr12    r_i r_j α_k           2         yes    normal of (u_i, u_j): trig-linear lengths
 Pr13    r_i r_j β_k           2         yes    normal of (u_i, u_j): trig-linear lengths
-Pr14    r_i α_j α_k           4         no     two ellipses: quartic            —
-Pr15    r_i α_j β_k           4         no     two ellipses: quartic            —
+Pr14    r_i α_j α_k           4         yes    two ellipses: quartic (eigval)   ellipses
+Pr15    r_i α_j β_k           4         yes    two ellipses: quartic (eigval)   ellipses
 Pr16    α_i α_j α_k           8         no     octic (eigenvalue solve)         —
 Pr17    α_i α_j β_k           8         no     octic (eigenvalue solve)         —
 Pr18    β_i β_j r_k           2         yes    Y row linear, then Pl4 in XZ     horizontal
@@ -50,6 +50,7 @@ Owns the modules above; imports only NumPy; knows nothing of models or files.
 """
 
 from mechloop.spatial.cone import solve_pr5, solve_pr6, solve_pr7
+from mechloop.spatial.ellipses import ellipse_pair, solve_pr14, solve_pr15
 from mechloop.spatial.horizontal import horizontal_pair, pr20_family, solve_pr18, solve_pr19
 from mechloop.spatial.lengths import solve_pr11, solve_pr12, solve_pr13
 from mechloop.spatial.one_vector import solve_pr1
@@ -59,6 +60,7 @@ from mechloop.spatial.vertical_plane import solve_pr2, solve_pr3, solve_pr4
 
 __all__ = [
     "components",
+    "ellipse_pair",
     "horizontal_pair",
     "in_convention",
     "parameters",
@@ -76,6 +78,8 @@ __all__ = [
     "solve_pr11",
     "solve_pr12",
     "solve_pr13",
+    "solve_pr14",
+    "solve_pr15",
     "solve_pr18",
     "solve_pr19",
     "unit",
