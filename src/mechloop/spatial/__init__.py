@@ -32,8 +32,8 @@ Pr12    r_i r_j α_k           2         yes    normal of (u_i, u_j): trig-linea
 Pr13    r_i r_j β_k           2         yes    normal of (u_i, u_j): trig-linear lengths
 Pr14    r_i α_j α_k           4         yes    two ellipses: quartic (eigval)   ellipses
 Pr15    r_i α_j β_k           4         yes    two ellipses: quartic (eigval)   ellipses
-Pr16    α_i α_j α_k           8         no     octic (eigenvalue solve)         —
-Pr17    α_i α_j β_k           8         no     octic (eigenvalue solve)         —
+Pr16    α_i α_j α_k           8         yes    octic (eigval) + 3-D Newton      octic
+Pr17    α_i α_j β_k           8         yes    octic (eigval) + 3-D Newton      octic
 Pr18    β_i β_j r_k           2         yes    Y row linear, then Pl4 in XZ     horizontal
 Pr19    β_i β_j α_k           4         yes    Y row sin α_k = c, then Pl4 in XZ horizontal
 Pr20    β_i β_j β_k           ∞         yes    existence of the family only     horizontal
@@ -53,6 +53,7 @@ from mechloop.spatial.cone import solve_pr5, solve_pr6, solve_pr7
 from mechloop.spatial.ellipses import ellipse_pair, solve_pr14, solve_pr15
 from mechloop.spatial.horizontal import horizontal_pair, pr20_family, solve_pr18, solve_pr19
 from mechloop.spatial.lengths import solve_pr11, solve_pr12, solve_pr13
+from mechloop.spatial.octic import solve_pr16, solve_pr17
 from mechloop.spatial.one_vector import solve_pr1
 from mechloop.spatial.sphere import solve_pr8, solve_pr9, solve_pr10
 from mechloop.spatial.vector import components, in_convention, parameters, unit
@@ -80,6 +81,8 @@ __all__ = [
     "solve_pr13",
     "solve_pr14",
     "solve_pr15",
+    "solve_pr16",
+    "solve_pr17",
     "solve_pr18",
     "solve_pr19",
     "unit",
