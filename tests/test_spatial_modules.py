@@ -155,6 +155,9 @@ def test_module_finds_the_configuration_and_every_branch_closes(name, convention
         res = np.linalg.norm(_closure_sum(trial) + s, axis=0)
         assert np.all(res[ok[b]] <= 1e-9), (name, b, res[ok[b]].max())
         assert all(np.isnan(v[b][~ok[b]]).all() for v in values)
+    # real roots of these equations come in pairs (a lost or invented root breaks that)
+    if branches > 1:
+        assert np.all(ok.sum(axis=0) % 2 == 0), (name, ok.sum(axis=0))
     # the configuration the sum was built from is on one of the branches
     dist = np.zeros((branches, P))
     for key, val in zip(unknowns, values, strict=True):
@@ -183,17 +186,17 @@ def _canonical(name: str, x: np.ndarray, convention: int) -> np.ndarray:
 
 
 @pytest.mark.parametrize("name", sorted(set(MODULES) - {"Pr1", "Pr2", "Pr11"}))
-@settings(max_examples=4, deadline=None)
+@settings(max_examples=3, deadline=None)
 @given(seed=seeds)
 def test_no_solution_is_missed(name, seed):
-    """Slow oracle: SciPy's root on the raw closure from 40 starts per position finds no
+    """Slow oracle: SciPy's root on the raw closure from 30 starts per position finds no
     solution outside the module's branches (so the count of real roots is complete)."""
     rng = np.random.default_rng(seed)
     _, unknowns, _, _, _ = MODULES[name]
-    par = _config(rng, name, 1, n=3)
+    par = _config(rng, name, 1, n=2)
     s = -_closure_sum(par)
     values, ok = _call(name, par, s, 1)
-    for p in range(3):
+    for p in range(2):
         base = {k: v[p] for k, v in par.items()}
 
         def residual(x, base=base, p=p):
@@ -203,7 +206,7 @@ def test_no_solution_is_missed(name, seed):
             return _closure_sum(trial) + s[:, p]
 
         found = np.stack([values[i][:, p] for i in range(3)], axis=1)[ok[:, p]]
-        for _ in range(40):
+        for _ in range(30):
             x0 = [rng.uniform(-3, 3) if k[1] == "r" else rng.uniform(-np.pi, np.pi)
                   for k in unknowns]
             sol = root(residual, x0, tol=1e-13)
@@ -302,7 +305,7 @@ def test_impossible_geometry_is_a_break_on_every_branch():
         assert all(np.isnan(v).all() for v in values)
 
 
-@pytest.mark.parametrize("name", ["Pr3", "Pr11", "Pr19"])
+@pytest.mark.parametrize("name", ["Pr3", "Pr6", "Pr11", "Pr16", "Pr19"])
 def test_designs_by_positions_equals_row_by_row(name):
     rng = np.random.default_rng(3)
     pars = [_config(rng, name, 1, n=P) for _ in range(2)]
