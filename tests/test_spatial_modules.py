@@ -23,10 +23,12 @@ from scipy.optimize import root
 
 from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl3, solve_pl4
 from mechloop.spatial import (
+    accelerations,
     components,
     in_convention,
     parameters,
     pr20_family,
+    rates,
     solve_pr1,
     solve_pr2,
     solve_pr3,
@@ -330,3 +332,71 @@ def test_pr20_family_exists_exactly_when_y_row_and_polygon_close():
     # horizontal sum beyond reach of the three projections: no solution
     big = 10.0 * np.ones(P)
     assert not pr20_family(big, s[1], s[2], r[0], a[0], r[1], a[1], r[2], a[2]).any()
+
+
+@pytest.mark.parametrize("name", ["Pr2", "Pr6", "Pr9", "Pr11", "Pr15", "Pr17", "Pr19"])
+@settings(max_examples=10, deadline=None)
+@given(seed=seeds)
+def test_rates_and_accelerations_match_finite_differences(name, seed):
+    """Known parameters move as ``p0 + p1 t + p2 t²`` (a fourth, fully known vector makes
+    ``S``); the module solved at ``t = −h, 0, h`` on the branch nearest the truth gives
+    central differences that :func:`rates` / :func:`accelerations` must match."""
+    rng = np.random.default_rng(seed)
+    _, unknowns, knowns, _, _ = MODULES[name]
+    n = 16
+    par = _config(rng, name, 1, n=n)
+    extra = {"r": rng.uniform(0.5, 2, n), "a": rng.uniform(-3, 3, n), "b": rng.uniform(-3, 3, n)}
+    s0 = -_closure_sum(par)
+    # the fourth vector absorbs the closure at t = 0: S = v_3 + (S0 − v_3(0)) is fixed
+    # apart from v_3's motion
+    v3 = np.stack(components(extra["r"], extra["a"], extra["b"]))
+    rest = s0 - v3
+    moving = [*knowns, (3, "r"), (3, "a"), (3, "b")]
+    d1 = {k: rng.uniform(-1, 1, n) for k in moving}
+    d2 = {k: rng.uniform(-1, 1, n) for k in moving}
+
+    def at(t):
+        q = {k: v.copy() for k, v in par.items()}
+        q.update({(3, p): extra[p].copy() for p in "rab"})
+        for k in moving:
+            q[k] = q[k] + d1[k] * t + d2[k] * t * t
+        s = rest + np.stack(components(q[3, "r"], q[3, "a"], q[3, "b"]))
+        values, ok = _call(name, q, s, 1)
+        return q, values, ok
+
+    def pick(values, ok):
+        dist = np.zeros(ok.shape)
+        for key, val in zip(unknowns, values, strict=True):
+            dist = np.fmax(dist, np.where(ok, _distance(key, val, par[key][None]), np.inf))
+        b = dist.argmin(axis=0)
+        return np.stack([v[b, np.arange(n)] for v in values])
+
+    h1, h = 1e-6, 1e-5  # steps for the first and the second difference
+    x = {t: pick(*at(t)[1:]) for t in (-h, -h1, 0.0, h1, h)}
+    fd1 = (x[h1] - x[-h1]) / (2 * h1)
+    fd2 = (x[h] - 2 * x[0.0] + x[-h]) / h**2
+    for i, key in enumerate(unknowns):
+        if key[1] != "r":
+            fd1[i] = wrap(x[h1][i] - x[-h1][i]) / (2 * h1)
+            fd2[i] = (wrap(x[h][i] - x[0.0][i]) - wrap(x[0.0][i] - x[-h][i])) / h**2
+    q0 = {k: v.copy() for k, v in par.items()}
+    q0.update({(3, p): extra[p] for p in "rab"})
+    stack = {p: np.stack([q0[v, p] for v in range(4)]) for p in "rab"}
+    for i, key in enumerate(unknowns):
+        stack[key[1]][key[0]] = x[0.0][i]
+    rate = {p: np.stack([d1.get((v, p), np.zeros(n)) for v in range(4)]) for p in "rab"}
+    acc = {p: np.stack([2 * d2.get((v, p), np.zeros(n)) for v in range(4)]) for p in "rab"}
+    *v1, ok1 = rates(stack["r"], stack["a"], stack["b"], rate["r"], rate["a"], rate["b"],
+                     unknowns)
+    assert ok1.all()
+    for i, key in enumerate(unknowns):
+        rate[key[1]][key[0]] = v1[i]
+    *v2, ok2 = accelerations(stack["r"], stack["a"], stack["b"], rate["r"], rate["a"],
+                             rate["b"], acc["r"], acc["a"], acc["b"], unknowns)
+    assert ok2.all()
+    # near a dead point (huge rates) finite differences lose their accuracy: compare
+    # away from it, at most positions
+    calm = (np.abs(np.stack(v1)) < 30.0).all(axis=0) & (np.abs(np.stack(v2)) < 300.0).all(axis=0)
+    assert calm.sum() >= n // 2
+    np.testing.assert_allclose(np.stack(v1)[:, calm], fd1[:, calm], rtol=1e-5, atol=1e-5)
+    np.testing.assert_allclose(np.stack(v2)[:, calm], fd2[:, calm], rtol=1e-3, atol=1e-3)

@@ -39,8 +39,10 @@ Pr19    β_i β_j α_k           4         yes    Y row sin α_k = c, then Pl4 i
 Pr20    β_i β_j β_k           ∞         yes    existence of the family only     horizontal
 ======  ====================  ========  =====  ===============================  ==========
 
-Not yet here: variant choice/continuity, exact velocities and accelerations (the 3×3
-Jacobian), models with spatial contours, dynamics, views.
+Exact velocities and accelerations of the unknowns by the 3×3 Jacobian: :mod:`.rates`.
+
+Not yet here: variant choice/continuity over positions, models with spatial contours
+(schema, solver, mixed planar/spatial, coupled blocks), dynamics, views.
 
 Shared helpers: :mod:`.roots` (``a cos θ + b sin θ = c``, quadratics), :mod:`.quartic`
 (trigonometric quartic by batched companion eigenvalues), :mod:`.parts` (the rest of
@@ -55,17 +57,20 @@ from mechloop.spatial.horizontal import horizontal_pair, pr20_family, solve_pr18
 from mechloop.spatial.lengths import solve_pr11, solve_pr12, solve_pr13
 from mechloop.spatial.octic import solve_pr16, solve_pr17
 from mechloop.spatial.one_vector import solve_pr1
+from mechloop.spatial.rates import accelerations, rates
 from mechloop.spatial.sphere import solve_pr8, solve_pr9, solve_pr10
 from mechloop.spatial.vector import components, in_convention, parameters, unit
 from mechloop.spatial.vertical_plane import solve_pr2, solve_pr3, solve_pr4
 
 __all__ = [
+    "accelerations",
     "components",
     "ellipse_pair",
     "horizontal_pair",
     "in_convention",
     "parameters",
     "pr20_family",
+    "rates",
     "solve_pr1",
     "solve_pr2",
     "solve_pr3",
