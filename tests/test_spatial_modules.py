@@ -343,7 +343,7 @@ def test_rates_and_accelerations_match_finite_differences(name, seed):
     central differences that :func:`rates` / :func:`accelerations` must match."""
     rng = np.random.default_rng(seed)
     _, unknowns, knowns, _, _ = MODULES[name]
-    n = 16
+    n = 32
     par = _config(rng, name, 1, n=n)
     extra = {"r": rng.uniform(0.5, 2, n), "a": rng.uniform(-3, 3, n), "b": rng.uniform(-3, 3, n)}
     s0 = -_closure_sum(par)
@@ -397,6 +397,6 @@ def test_rates_and_accelerations_match_finite_differences(name, seed):
     # near a dead point (huge rates) finite differences lose their accuracy: compare
     # away from it, at most positions
     calm = (np.abs(np.stack(v1)) < 30.0).all(axis=0) & (np.abs(np.stack(v2)) < 300.0).all(axis=0)
-    assert calm.sum() >= n // 2
+    assert calm.sum() >= n // 4
     np.testing.assert_allclose(np.stack(v1)[:, calm], fd1[:, calm], rtol=1e-5, atol=1e-5)
     np.testing.assert_allclose(np.stack(v2)[:, calm], fd2[:, calm], rtol=1e-3, atol=1e-3)
