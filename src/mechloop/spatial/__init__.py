@@ -14,30 +14,30 @@ are signed, except that a length found together with its own vector's elevation 
 ``≥ 0`` (as Pl1); an unknown angle is a full turn ``(−π, π]``, except that both angles of
 one vector are returned in the chosen ``convention``.
 
-======  ====================  ========  =====  ===============================  ==========
-module  unknowns              branches  done   method                           where
-======  ====================  ========  =====  ===============================  ==========
-Pr1     r_i α_i β_i           1         yes    inverse of the vector            one_vector
-Pr2     r_i α_i r_j           1         yes    normal of i's plane: linear      vertical_plane
-Pr3     r_i α_i α_j           2         yes    normal of i's plane: cos α_j = c vertical_plane
-Pr4     r_i α_i β_j           2         yes    normal of i's plane: sin(β_j−β_i) vertical_plane
-Pr5     r_i β_i r_j           2         yes    cone ∩ line: quadratic           cone
-Pr6     r_i β_i α_j           4         yes    cone ∩ circle: quartic (eigval)  cone
-Pr7     r_i β_i β_j           2         yes    cone ∩ horizontal circle         cone
-Pr8     α_i β_i r_j           2         yes    sphere ∩ line: quadratic         sphere
-Pr9     α_i β_i α_j           2         yes    sphere ∩ circle                  sphere
-Pr10    α_i β_i β_j           2         yes    sphere ∩ horizontal circle       sphere
-Pr11    r_i r_j r_k           1         yes    linear 3×3 (Cramer)              lengths
-Pr12    r_i r_j α_k           2         yes    normal of (u_i, u_j): trig-linear lengths
-Pr13    r_i r_j β_k           2         yes    normal of (u_i, u_j): trig-linear lengths
-Pr14    r_i α_j α_k           4         yes    two ellipses: quartic (eigval)   ellipses
-Pr15    r_i α_j β_k           4         yes    two ellipses: quartic (eigval)   ellipses
-Pr16    α_i α_j α_k           8         yes    octic (eigval) + 3-D Newton      octic
-Pr17    α_i α_j β_k           8         yes    octic (eigval) + 3-D Newton      octic
-Pr18    β_i β_j r_k           2         yes    Y row linear, then Pl4 in XZ     horizontal
-Pr19    β_i β_j α_k           4         yes    Y row sin α_k = c, then Pl4 in XZ horizontal
-Pr20    β_i β_j β_k           ∞         yes    existence of the family only     horizontal
-======  ====================  ========  =====  ===============================  ==========
+======  ============  ========  ======  =========================================  ==============
+module  unknowns      branches  done    method                                     module file
+======  ============  ========  ======  =========================================  ==============
+Pr1     r_i α_i β_i   1         yes     inverse of the vector                      one_vector
+Pr2     r_i α_i r_j   1         yes     normal of i's plane: linear                vertical_plane
+Pr3     r_i α_i α_j   2         yes     normal of i's plane: cos α_j = c           vertical_plane
+Pr4     r_i α_i β_j   2         yes     normal of i's plane: sin(β_j − β_i) = c    vertical_plane
+Pr5     r_i β_i r_j   2         yes     cone ∩ line: quadratic                     cone
+Pr6     r_i β_i α_j   4         yes     cone ∩ circle: trig. quartic (eigvals)     cone
+Pr7     r_i β_i β_j   2         yes     cone ∩ horizontal circle                   cone
+Pr8     α_i β_i r_j   2         yes     sphere ∩ line: quadratic                   sphere
+Pr9     α_i β_i α_j   2         yes     sphere ∩ circle                            sphere
+Pr10    α_i β_i β_j   2         yes     sphere ∩ horizontal circle                 sphere
+Pr11    r_i r_j r_k   1         yes     linear 3×3 (Cramer)                        lengths
+Pr12    r_i r_j α_k   2         yes     normal of (u_i, u_j): a cos + b sin = c    lengths
+Pr13    r_i r_j β_k   2         yes     normal of (u_i, u_j): a cos + b sin = c    lengths
+Pr14    r_i α_j α_k   4         yes     two ellipses: trig. quartic (eigvals)      ellipses
+Pr15    r_i α_j β_k   4         yes     two ellipses: trig. quartic (eigvals)      ellipses
+Pr16    α_i α_j α_k   8         yes     trig. octic (eigvals) + 3-D Newton         octic
+Pr17    α_i α_j β_k   8         yes     trig. octic (eigvals) + 3-D Newton         octic
+Pr18    β_i β_j r_k   2         yes     Y row linear, then Pl4 in XZ               horizontal
+Pr19    β_i β_j α_k   4         yes     Y row sin α_k = c, then Pl4 in XZ          horizontal
+Pr20    β_i β_j β_k   ∞         exist.  whether the family exists (indeterminate)  horizontal
+======  ============  ========  ======  =========================================  ==============
 
 Exact velocities and accelerations of the unknowns by the 3×3 Jacobian: :mod:`.rates`.
 
@@ -45,8 +45,11 @@ Not yet here: variant choice/continuity over positions, models with spatial cont
 (schema, solver, mixed planar/spatial, coupled blocks), dynamics, views.
 
 Shared helpers: :mod:`.roots` (``a cos θ + b sin θ = c``, quadratics), :mod:`.quartic`
-(trigonometric quartic by batched companion eigenvalues), :mod:`.parts` (the rest of
-the unknowns once a root is known).
+(real roots of a trigonometric polynomial of any degree by batched companion
+eigenvalues), :mod:`.parts` (the rest of the unknowns once a root is known).
+Verified in ``tests/test_spatial_modules.py`` (closure of every branch, the known
+configuration found, a SciPy multi-start oracle for missed roots, the planar modules for
+``β = 0``, finite differences for :mod:`.rates`).
 
 Owns the modules above; imports only NumPy; knows nothing of models or files.
 """
