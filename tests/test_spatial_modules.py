@@ -400,3 +400,14 @@ def test_rates_and_accelerations_match_finite_differences(name, seed):
     assert calm.sum() >= n // 4
     np.testing.assert_allclose(np.stack(v1)[:, calm], fd1[:, calm], rtol=1e-5, atol=1e-5)
     np.testing.assert_allclose(np.stack(v2)[:, calm], fd2[:, calm], rtol=1e-3, atol=1e-3)
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+@pytest.mark.parametrize("fill", [0.0, np.nan])
+def test_broken_or_degenerate_input_is_a_break_without_warning(name, fill):
+    """An input broken upstream (NaN) or fully degenerate (all zero) gives ``ok`` false
+    and NaN on every branch; RuntimeWarnings are errors in this suite."""
+    fn, _, knowns, branches, _ = MODULES[name]
+    *values, ok = fn(*[np.full(4, fill)] * (3 + len(knowns)))
+    assert ok.shape == (branches, 4) and not ok.any()
+    assert all(np.isnan(v).all() for v in values)

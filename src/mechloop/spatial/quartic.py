@@ -41,6 +41,8 @@ def trig_roots(a: list[ArrayLike], b: list[ArrayLike]) -> tuple[Array, NDArray[n
     with ``ok`` false for the missing ones.  A double root (tangency) appears twice."""
     arrs = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (*a, *b)))
     n = len(a) - 1
+    finite = np.logical_and.reduce([np.isfinite(v) for v in arrs])
+    arrs = [np.where(finite, v, 0.0) for v in arrs]  # a broken input is a break, silently
     a, b = list(arrs[: n + 1]), list(arrs[n + 1:])
     shape = a[0].shape
     scale = sum(np.abs(v) for v in a) + sum(np.abs(v) for v in b[1:])
@@ -66,7 +68,7 @@ def trig_roots(a: list[ArrayLike], b: list[ArrayLike]) -> tuple[Array, NDArray[n
         f, df = _eval(theta, a, b)
         theta = theta - np.where(df != 0, f / np.where(df != 0, df, 1.0), 0.0)
     theta = wrap(theta)
-    ok = near & (np.abs(_eval(theta, a, b)[0]) <= RESIDUAL_RTOL * unit) & (scale > 0)
+    ok = near & (np.abs(_eval(theta, a, b)[0]) <= RESIDUAL_RTOL * unit) & (scale > 0) & finite
     order = np.argsort(np.where(ok, theta, np.inf), axis=0)
     theta = np.take_along_axis(theta, order, axis=0)
     ok = np.take_along_axis(ok, order, axis=0)
