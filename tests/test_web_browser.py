@@ -7,6 +7,7 @@ a chain break, switch to Russian, download the report.  The screenshots of the R
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 import shutil
@@ -388,4 +389,69 @@ def test_trajectories_and_all_positions_on_the_mechanism(browser, server):
     assert browser.find_elements(By.ID, "trajectory-head-2")
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-trajectories.png"))
+    browser.find_element(By.ID, "lang-en").click()
+
+
+def test_play_modes_step_by_step_backward_and_faster(browser, server):
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml")
+    count = browser.execute_script("return state.solution.count")
+    browser.find_element(By.ID, "step-forward").click()
+    browser.find_element(By.ID, "step-forward").click()
+    assert _position(browser) == 2
+    for _ in range(3):
+        browser.find_element(By.ID, "step-back").click()
+    assert _position(browser) == count - 1  # frame by frame, round the cycle
+    Select(browser.find_element(By.ID, "play-direction")).select_by_value("-1")
+    Select(browser.find_element(By.ID, "play-speed")).select_by_value("4")
+    browser.find_element(By.ID, "play").click()
+    assert browser.execute_script("return state.timer") is not None
+    # the positions the page shows, read at every animation frame until eight differ
+    seen = browser.execute_async_script("""
+        const done = arguments[arguments.length - 1]; const seen = [];
+        function look() {
+          const k = state.position;
+          if (!seen.length || seen[seen.length - 1] !== k) seen.push(k);
+          if (seen.length >= 8) done(seen); else requestAnimationFrame(look);
+        }
+        requestAnimationFrame(look);""")
+    browser.find_element(By.ID, "step-forward").click()  # a step pauses the play
+    assert browser.execute_script("return state.timer") is None
+    steps = [(a - b) % count for a, b in itertools.pairwise(seen)]
+    assert all(0 < s < count // 2 for s in steps), (seen, count)  # backward, round
+    assert browser.find_element(By.ID, "step-back").get_attribute("title") == \
+        "one position back"
+
+
+def test_a_synthesis_shows_progress_and_its_best_is_kept_on_cancel(browser, server):
+    base, _ = server
+    _open(browser, base + "/?example=four_bar_path_synthesis")
+    browser.find_element(By.ID, "job-start").click()
+    _wait(browser, lambda d: float(d.find_element(By.ID, "job-bar").get_attribute("value"))
+          > 0 and d.find_elements(By.ID, "best-vector-1"), "no progress shown")
+    assert "generation" in browser.find_element(By.ID, "job-info").text
+    browser.find_element(By.ID, "job-cancel").click()
+    _wait(browser, lambda d: d.execute_script("return document.body.dataset.job || ''"),
+          "the job did not finish after the cancel")
+    job = browser.execute_script("return job.id")
+    with urllib.request.urlopen(f"{base}/api/jobs/{job}", timeout=WAIT) as answer:
+        status = json.loads(answer.read())
+    result = status["result"]
+    assert status["state"] == "done" and result["stopped"] == "interrupted"
+    info = browser.find_element(By.ID, "job-info").text
+    assert info.startswith("done (cancelled)")
+    if result["feasible"]:
+        shown = float(browser.find_element(By.ID, "job-bar").get_attribute("data-best"))
+        assert shown == result["best"]
+    else:
+        assert "no feasible design" in info
+    browser.find_element(By.ID, "job-open").click()
+    _wait(browser, lambda d: d.find_element(By.ID, "editor").get_attribute("value")
+          == result["text"], "the result did not open in the editor")
+    assert browser.find_element(By.ID, "save-path").get_attribute("value") == \
+        "four_bar_path_synthesis_synthesized.yaml"
+    _wait(browser, lambda d: "solved" in d.find_element(By.ID, "status").text,
+          "the synthesized model was not solved")
+    browser.find_element(By.ID, "lang-ru").click()
+    assert browser.find_element(By.ID, "job-info").text.startswith("готово (прервано)")
     browser.find_element(By.ID, "lang-en").click()

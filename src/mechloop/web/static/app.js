@@ -309,17 +309,140 @@ function setPosition(k) {
   render();
 }
 
+// KDAM's play modes: forward or backward, one cycle looped, at a chosen speed; the step
+// buttons move one position (frame by frame), pausing the play.
+const FRAME_MS = 60;  // one position per frame at speed ×1
+
+function step(direction) {
+  if (!state.solution) return;
+  const n = state.solution.count;
+  setPosition(((state.position + direction) % n + n) % n);
+}
+
+function startTimer() {
+  clearInterval(state.timer);
+  const speed = Number($("play-speed").value) || 1;
+  state.timer = setInterval(() => step(Number($("play-direction").value) || 1),
+    FRAME_MS / speed);
+}
+
 function togglePlay() {
   if (state.timer) {
     clearInterval(state.timer);
     state.timer = null;
   } else if (state.solution) {
-    state.timer = setInterval(() => {
-      setPosition((state.position + 1) % state.solution.count);  // one cycle, looped
-    }, 60);
+    startTimer();
   }
   $("play").dataset.i18n = state.timer ? "pause" : "play";
   $("play").textContent = t($("play").dataset.i18n);
+}
+
+function stepOnce(direction) {
+  if (state.timer) togglePlay();
+  step(direction);
+}
+
+// ------------------------------------------------------------------ background jobs
+const job = { id: null, poll: null, result: null, info: ["", null] };
+
+// The job's line, kept as a key of WORDS (re-said when the language changes); ``why``,
+// the library's reason the search stopped, is said in the page's language.
+function jobInfo(key, values) {
+  job.info = [key, values];
+  const shown = values && values.why !== undefined
+    ? Object.assign({ stopped: stopText(values.why) }, values) : values;
+  $("job-info").textContent = key ? t(key, shown) : "";
+}
+
+function stopText(why) {
+  if (why === "interrupted") return t("stopInterrupted");
+  if (why === "iteration limit") return t("stopLimit");
+  if (why === "good enough") return t("stopGood");
+  if (why === "time budget spent") return t("stopTime");
+  if (why.startsWith("no progress")) return t("stopPatience");
+  return t("stopOther");
+}
+
+async function jobStart() {
+  const body = Object.assign({ text: $("editor").value, kind: "synthesis" }, state.source);
+  job.result = null;
+  $("job-open").hidden = true;
+  jobInfo("jobStarting");
+  const response = await postJSON("api/jobs", body);
+  const answer = await read(response);
+  if (!response.ok) {
+    jobInfo("jobFailed", { error: answer.error });
+    return;
+  }
+  job.id = answer.id;
+  $("job-start").disabled = true;
+  $("job-cancel").disabled = false;
+  $("job-bar").value = 0;
+  job.poll = setTimeout(jobPoll, 200);
+}
+
+async function jobPoll() {
+  const response = await api("api/jobs/" + job.id);
+  const answer = await read(response);
+  if (!response.ok) {
+    jobFinished();
+    jobInfo("jobFailed", { error: answer.error });
+    return;
+  }
+  const p = answer.progress;
+  if (p.total) $("job-bar").value = p.iteration / p.total;
+  if (answer.diagram) {
+    $("job-diagram").hidden = false;
+    drawDiagram($("job-diagram"), { diagram: answer.diagram }, 0, false, [], "best-");
+  }
+  $("job-bar").dataset.best = p.best === null || p.best === undefined ? "" : p.best;
+  if (answer.state === "running" || answer.state === "stopping") {
+    if (answer.state === "stopping") jobInfo("jobStopping");
+    else if (p.total) {
+      jobInfo("jobProgress", { k: p.iteration, n: p.total,
+        q: p.feasible ? format(p.best) : t("jobNoFeasible") });
+    }
+    job.poll = setTimeout(jobPoll, 250);
+    return;
+  }
+  jobFinished();
+  if (answer.state === "failed") {
+    jobInfo("jobFailed", { error: (answer.problems[0] || {}).message });
+    return;
+  }
+  const result = answer.result;
+  job.result = result;
+  $("job-open").hidden = false;
+  $("job-bar").dataset.best = result.best === null ? "" : result.best;
+  if (result.feasible) jobInfo("jobDone", { why: result.stopped, q: format(result.best) });
+  else jobInfo("jobInfeasible", { why: result.stopped });
+}
+
+function jobFinished() {
+  clearTimeout(job.poll);
+  $("job-start").disabled = false;
+  $("job-cancel").disabled = true;
+  document.body.dataset.job = job.id || "";
+}
+
+async function jobCancel() {
+  if (!job.id) return;
+  $("job-cancel").disabled = true;
+  jobInfo("jobStopping");
+  await postJSON("api/jobs/" + job.id + "/cancel", {});
+}
+
+// The synthesized model opens in the editor, to be saved under a new name.
+function jobOpen() {
+  if (!job.result) return;
+  const name = $("save-path").value.replace(/\.(yaml|yml|json)$/i, "");
+  $("save-path").value = name + "_synthesized.yaml";
+  state.solution = null;
+  state.position = 0;
+  $("editor").value = job.result.text;
+  $("editor").scrollTop = 0;
+  edited();
+  status("jobOpened", null, "ok");
 }
 
 // ------------------------------------------------------------------ files
@@ -521,6 +644,7 @@ function setLanguage(lang) {
   renderProblems();
   $("play").textContent = t($("play").dataset.i18n);
   status(...lastStatus);
+  jobInfo(...job.info);
   if (state.solution) {
     fillPlotChoices();
     fillTraces();
@@ -543,6 +667,12 @@ window.addEventListener("DOMContentLoaded", async () => {
   });
   $("slider").addEventListener("input", () => setPosition(Number($("slider").value)));
   $("play").addEventListener("click", togglePlay);
+  $("step-back").addEventListener("click", () => stepOnce(-1));
+  $("step-forward").addEventListener("click", () => stepOnce(1));
+  $("play-speed").addEventListener("change", () => { if (state.timer) startTimer(); });
+  $("job-start").addEventListener("click", jobStart);
+  $("job-cancel").addEventListener("click", jobCancel);
+  $("job-open").addEventListener("click", jobOpen);
   $("plot-select").addEventListener("change", () => {
     state.column = $("plot-select").value;
     state.extra = state.extra.filter((name) => name !== state.column);
