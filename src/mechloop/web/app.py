@@ -20,6 +20,8 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
   six parameters, ``png`` or ``svg``;
 * ``POST /api/structure`` ``{text, path|example}`` — the structure formula, the Assur
   groups and the mobility (:func:`mechloop.web.exports.structure`);
+* ``POST /api/view`` ``{text, path|example, kind, names, joint, position, lang}`` — one
+  of the other views of ``mechloop plot`` as SVG (:mod:`mechloop.web.views`);
 * ``POST /api/jobs`` ``{text, path|example, kind: "synthesis", iterations?, time?}`` —
   a background job (:mod:`mechloop.web.jobs`), ``{id}``; ``GET /api/jobs/{id}`` — its
   state, progress, best design so far and result; ``POST /api/jobs/{id}/cancel`` — stop
@@ -51,6 +53,7 @@ from mechloop.web.documents import problems, read_model
 from mechloop.web.jobs import JOB_SECONDS, Jobs
 from mechloop.web.payload import solution
 from mechloop.web.safety import Guard, WebError, Workspace
+from mechloop.web.views import view_svg
 from mechloop.web.worker import REPORT_SECONDS, SOLVE_SECONDS, WorkFailed, run_limited
 
 STATIC = Path(__file__).parent / "static"
@@ -228,6 +231,20 @@ def create_app(folder: str | Path, *, token: str | None = None,
             raise WebError(f"{key!r} is not a positive number", f"give {key} > 0")
         return kind(value)
 
+    async def view(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        names = [str(n) for n in data.get("names") or []][:6]
+        joint = data.get("joint")
+        position = data.get("position", 0)
+        if isinstance(position, bool) or not isinstance(position, int):
+            raise WebError("'position' is not a whole number", "give a position number")
+        content = await run_in_threadpool(
+            run_limited, view_svg, data.get("text", ""), path, root,
+            str(data.get("kind", "")), names, None if joint is None else str(joint),
+            position, exports.language(data.get("lang", "en")), seconds=solve_seconds)
+        return Response(content, media_type="image/svg+xml")
+
     async def job_start(request: Request) -> Response:
         data = await body(request)
         path, root = source(data)
@@ -254,6 +271,7 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/table", guarded(table_download), methods=["POST"]),
               Route("/api/figure", guarded(figure), methods=["POST"]),
               Route("/api/structure", guarded(structure), methods=["POST"]),
+              Route("/api/view", guarded(view), methods=["POST"]),
               Route("/api/jobs", guarded(job_start), methods=["POST"]),
               Route("/api/jobs/{job}", guarded(job_status)),
               Route("/api/jobs/{job}/cancel", guarded(job_cancel), methods=["POST"]),
