@@ -455,3 +455,42 @@ def test_a_synthesis_shows_progress_and_its_best_is_kept_on_cancel(browser, serv
     browser.find_element(By.ID, "lang-ru").click()
     assert browser.find_element(By.ID, "job-info").text.startswith("готово (прервано)")
     browser.find_element(By.ID, "lang-en").click()
+
+
+def _view_svg(driver) -> str:
+    """The SVG text of the view the page shows."""
+    return driver.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        fetch(document.getElementById('view-image').src).then((r) => r.text()).then(done);""")
+
+
+def test_another_plot_kind_follows_the_position_and_the_language(browser, server):
+    base, _ = server
+    _open(browser, base + "/?example=crank_slider_dynamics")
+    Select(browser.find_element(By.ID, "view-kind")).select_by_value("reduced")
+    _wait(browser, lambda d: d.find_element(By.ID, "view-image").get_attribute(
+        "data-kind") == "reduced", "the view was not drawn")
+    slider = browser.find_element(By.ID, "slider")
+    slider.click()
+    slider.send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * 5)
+    _wait(browser, lambda d: d.find_element(By.ID, "view-image").get_attribute(
+        "data-position") == "5", "the view did not follow the position")
+    text = browser.find_element(By.ID, "editor").get_attribute("value")
+    request = urllib.request.Request(
+        base + "/api/view", headers={"content-type": "application/json"},
+        data=json.dumps({"text": text, "example": "crank_slider_dynamics",
+                         "kind": "reduced", "position": 5}).encode())
+    with urllib.request.urlopen(request, timeout=WAIT) as answer:
+        expected = answer.read().decode()
+    shown = _view_svg(browser)
+
+    def paths(svg: str) -> list[str]:
+        return re.findall(r'<path d="([^"]{40,})"', svg)
+
+    assert paths(shown) == paths(expected) and 'id="position' in shown
+    browser.find_element(By.ID, "lang-ru").click()
+    _wait(browser, lambda d: re.search("[А-Яа-я]", _view_svg(d)),
+          "the view was not drawn in Russian")
+    assert browser.find_element(By.ID, "view-kind").find_element(
+        By.CSS_SELECTOR, "option[value=reduced]").text == "приведённые характеристики"
+    browser.find_element(By.ID, "lang-en").click()

@@ -170,6 +170,7 @@ async function solve(version) {
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
   loadStructure(version);
+  loadView();
 }
 
 function fillPlotChoices() {
@@ -307,6 +308,7 @@ function setPosition(k) {
   state.position = k;
   $("slider").value = k;
   render();
+  viewLater();
 }
 
 // KDAM's play modes: forward or backward, one cycle looped, at a chosen speed; the step
@@ -335,11 +337,57 @@ function togglePlay() {
   }
   $("play").dataset.i18n = state.timer ? "pause" : "play";
   $("play").textContent = t($("play").dataset.i18n);
+  if (!state.timer) viewLater();  // paused: the view marks where it stopped
 }
 
 function stepOnce(direction) {
   if (state.timer) togglePlay();
   step(direction);
+}
+
+// ------------------------------------------------------------------ other views
+// The other plot kinds of mechloop plot, drawn by the server as SVG in the page's
+// language; asked again when the model, the language or (paused) the position changes.
+const view = { pending: null, url: null, asked: 0 };
+
+function viewLater() {
+  clearTimeout(view.pending);
+  if (state.timer) return;  // not while playing: one image per position would be too many
+  view.pending = setTimeout(loadView, 300);
+}
+
+async function loadView() {
+  const kind = $("view-kind").value;
+  const image = $("view-image");
+  const problem = $("view-problem");
+  if (!kind || !state.solution) {
+    image.hidden = true;
+    problem.hidden = true;
+    return;
+  }
+  const asked = ++view.asked;
+  const names = $("view-names").value.split(",").map((n) => n.trim()).filter(Boolean);
+  const body = Object.assign({ text: $("editor").value, kind, names,
+    joint: $("view-joint").value.trim() || null, position: state.position, lang: LANG },
+  state.source);
+  const response = await postJSON("api/view", body);
+  if (asked !== view.asked) return;
+  if (!response.ok) {
+    const answer = await read(response);
+    problem.textContent = t("viewFailed", { error: answer.error })
+      + (answer.hint ? ` (${t("fix")}: ${answer.hint})` : "");
+    problem.hidden = false;
+    image.hidden = true;
+    return;
+  }
+  const blob = await response.blob();
+  if (view.url) URL.revokeObjectURL(view.url);
+  view.url = URL.createObjectURL(blob);
+  image.dataset.kind = kind;
+  image.dataset.position = body.position;
+  image.src = view.url;
+  image.hidden = false;
+  problem.hidden = true;
 }
 
 // ------------------------------------------------------------------ background jobs
@@ -645,6 +693,7 @@ function setLanguage(lang) {
   $("play").textContent = t($("play").dataset.i18n);
   status(...lastStatus);
   jobInfo(...job.info);
+  loadView();
   if (state.solution) {
     fillPlotChoices();
     fillTraces();
@@ -670,6 +719,9 @@ window.addEventListener("DOMContentLoaded", async () => {
   $("step-back").addEventListener("click", () => stepOnce(-1));
   $("step-forward").addEventListener("click", () => stepOnce(1));
   $("play-speed").addEventListener("change", () => { if (state.timer) startTimer(); });
+  $("view-kind").addEventListener("change", loadView);
+  $("view-names").addEventListener("change", loadView);
+  $("view-joint").addEventListener("change", loadView);
   $("job-start").addEventListener("click", jobStart);
   $("job-cancel").addEventListener("click", jobCancel);
   $("job-open").addEventListener("click", jobOpen);

@@ -36,6 +36,12 @@ const WORDS = {
     jobFailed: "the synthesis failed — {error}", jobOpened: "the synthesized model is in the editor",
     stopInterrupted: "cancelled", stopLimit: "generation limit", stopGood: "good enough",
     stopTime: "time budget spent", stopPatience: "no progress", stopOther: "stopped",
+    view: "View", viewNone: "none", viewIncrement: "increment",
+    viewAngle: "angle between vectors", viewReduced: "reduced characteristics",
+    viewBalancing: "balancing load", viewReactions: "reactions", viewHodograph: "hodograph",
+    viewSummary: "energy summary", viewMotion: "machine motion",
+    viewNames: "names, comma-separated (a parameter; two vector numbers; joints)",
+    viewJoint: "joint of the hodograph", viewFailed: "the view cannot be drawn — {error}",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -74,6 +80,13 @@ const WORDS = {
     jobFailed: "синтез не удался — {error}", jobOpened: "синтезированная модель в редакторе",
     stopInterrupted: "прервано", stopLimit: "предел поколений", stopGood: "достаточно точно",
     stopTime: "время вышло", stopPatience: "нет улучшения", stopOther: "остановлено",
+    view: "Вид", viewNone: "нет", viewIncrement: "приращение",
+    viewAngle: "угол между векторами", viewReduced: "приведённые характеристики",
+    viewBalancing: "уравновешивающая нагрузка", viewReactions: "реакции",
+    viewHodograph: "годограф", viewSummary: "энергетический баланс",
+    viewMotion: "движение машины",
+    viewNames: "имена через запятую (параметр; два номера векторов; пары)",
+    viewJoint: "пара годографа", viewFailed: "вид не построен — {error}",
   },
 };
 
