@@ -429,6 +429,7 @@ def test_a_synthesis_shows_progress_and_its_best_is_kept_on_cancel(browser, serv
     browser.find_element(By.ID, "job-start").click()
     _wait(browser, lambda d: float(d.find_element(By.ID, "job-bar").get_attribute("value"))
           > 0 and d.find_elements(By.ID, "best-vector-1"), "no progress shown")
+    assert browser.find_element(By.ID, "job-diagram").is_displayed()
     assert "generation" in browser.find_element(By.ID, "job-info").text
     browser.find_element(By.ID, "job-cancel").click()
     _wait(browser, lambda d: d.execute_script("return document.body.dataset.job || ''"),
@@ -445,6 +446,9 @@ def test_a_synthesis_shows_progress_and_its_best_is_kept_on_cancel(browser, serv
         assert shown == result["best"]
     else:
         assert "no feasible design" in info
+    browser.execute_script("document.getElementById('view-kind').scrollIntoView()")
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-synthesis.png"))
     browser.find_element(By.ID, "job-open").click()
     _wait(browser, lambda d: d.find_element(By.ID, "editor").get_attribute("value")
           == result["text"], "the result did not open in the editor")

@@ -440,7 +440,7 @@ async function jobPoll() {
   const p = answer.progress;
   if (p.total) $("job-bar").value = p.iteration / p.total;
   if (answer.diagram) {
-    $("job-diagram").hidden = false;
+    $("job-diagram").removeAttribute("hidden");  // an SVG element has no .hidden
     drawDiagram($("job-diagram"), { diagram: answer.diagram }, 0, false, [], "best-");
   }
   $("job-bar").dataset.best = p.best === null || p.best === undefined ? "" : p.best;
