@@ -89,3 +89,32 @@ def test_a_job_is_refused_without_a_synthesis_task_or_for_an_unknown_id(client):
     assert bad.status_code == 400
     assert client.post("/api/jobs", json={"text": text, "example": "crank_slider",
                                           "iterations": -3}).status_code == 400
+
+
+def test_past_its_time_limit_a_job_stops_keeping_its_best(tmp_path):
+    text = (EXAMPLES / f"{EXAMPLE}.yaml").read_text(encoding="utf-8")
+    with TestClient(create_app(tmp_path, job_seconds=2.0)) as client:
+        job = client.post("/api/jobs", json={"text": text, "example": EXAMPLE,
+                                             "iterations": 100000}).json()["id"]
+        done = _wait(client, job, lambda s: s["state"] in ("done", "failed"))
+    assert not done["cancelled"]
+    if done["state"] == "done":  # stopped in the search: the best is kept
+        assert done["result"]["stopped"] == "interrupted"
+        assert done["progress"]["iteration"] < 100000
+        assert yaml.safe_load(done["result"]["text"])["synthesis"]
+    else:  # the limit came before the first generation (a loaded machine)
+        assert done["problems"][0]["message"] == \
+            "the job was stopped before the search started"
+        assert not done["progress"]
+
+
+def test_the_server_stopping_kills_a_running_job(tmp_path):
+    text = (EXAMPLES / f"{EXAMPLE}.yaml").read_text(encoding="utf-8")
+    app = create_app(tmp_path)
+    with TestClient(app) as client:
+        job = client.post("/api/jobs", json={"text": text, "example": EXAMPLE,
+                                             "iterations": 100000}).json()["id"]
+        _wait(client, job, lambda s: s["progress"].get("iteration", 0) >= 1)
+        process = app.app.state.jobs.get(job).process
+        assert process.is_alive()
+    assert not process.is_alive()  # the shutdown killed it

@@ -58,10 +58,11 @@ def _synthesis_child(connection: Any, text: str, path: str, root: str,
         try:
             connection.send(("done", _synthesize(connection, text, Path(path), Path(root),
                                                  options)))
-        except KeyboardInterrupt:  # cancelled before the search started
+        except KeyboardInterrupt:  # cancelled, or past its limit, before the search started
             connection.send(("error", [{"line": None, "path": "", "message":
-                                        "the job was cancelled before the search started",
-                                        "hint": "start it again"}]))
+                                        "the job was stopped before the search started",
+                                        "hint": "start it again (with a longer time "
+                                        "limit, if it was reached)"}]))
         except MechloopError as exc:
             connection.send(("error", problems(exc)))
         except Exception as exc:  # reported to the page, with its cause
