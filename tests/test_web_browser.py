@@ -7,6 +7,7 @@ a chain break, switch to Russian, download the report.  The screenshots of the R
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 import shutil
@@ -388,4 +389,112 @@ def test_trajectories_and_all_positions_on_the_mechanism(browser, server):
     assert browser.find_elements(By.ID, "trajectory-head-2")
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-trajectories.png"))
+    browser.find_element(By.ID, "lang-en").click()
+
+
+def test_play_modes_step_by_step_backward_and_faster(browser, server):
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml")
+    count = browser.execute_script("return state.solution.count")
+    browser.find_element(By.ID, "step-forward").click()
+    browser.find_element(By.ID, "step-forward").click()
+    assert _position(browser) == 2
+    for _ in range(3):
+        browser.find_element(By.ID, "step-back").click()
+    assert _position(browser) == count - 1  # frame by frame, round the cycle
+    Select(browser.find_element(By.ID, "play-direction")).select_by_value("-1")
+    Select(browser.find_element(By.ID, "play-speed")).select_by_value("4")
+    browser.find_element(By.ID, "play").click()
+    assert browser.execute_script("return state.timer") is not None
+    # the positions the page shows, read at every animation frame until eight differ
+    seen = browser.execute_async_script("""
+        const done = arguments[arguments.length - 1]; const seen = [];
+        function look() {
+          const k = state.position;
+          if (!seen.length || seen[seen.length - 1] !== k) seen.push(k);
+          if (seen.length >= 8) done(seen); else requestAnimationFrame(look);
+        }
+        requestAnimationFrame(look);""")
+    browser.find_element(By.ID, "step-forward").click()  # a step pauses the play
+    assert browser.execute_script("return state.timer") is None
+    steps = [(a - b) % count for a, b in itertools.pairwise(seen)]
+    assert all(0 < s < count // 2 for s in steps), (seen, count)  # backward, round
+    assert browser.find_element(By.ID, "step-back").get_attribute("title") == \
+        "one position back"
+
+
+def test_a_synthesis_shows_progress_and_its_best_is_kept_on_cancel(browser, server):
+    base, _ = server
+    _open(browser, base + "/?example=four_bar_path_synthesis")
+    browser.find_element(By.ID, "job-start").click()
+    _wait(browser, lambda d: float(d.find_element(By.ID, "job-bar").get_attribute("value"))
+          > 0 and d.find_elements(By.ID, "best-vector-1"), "no progress shown")
+    assert browser.find_element(By.ID, "job-diagram").is_displayed()
+    assert "generation" in browser.find_element(By.ID, "job-info").text
+    browser.find_element(By.ID, "job-cancel").click()
+    _wait(browser, lambda d: d.execute_script("return document.body.dataset.job || ''"),
+          "the job did not finish after the cancel")
+    job = browser.execute_script("return job.id")
+    with urllib.request.urlopen(f"{base}/api/jobs/{job}", timeout=WAIT) as answer:
+        status = json.loads(answer.read())
+    result = status["result"]
+    assert status["state"] == "done" and result["stopped"] == "interrupted"
+    info = browser.find_element(By.ID, "job-info").text
+    assert info.startswith("done (cancelled)")
+    if result["feasible"]:
+        shown = float(browser.find_element(By.ID, "job-bar").get_attribute("data-best"))
+        assert shown == result["best"]
+    else:
+        assert "no feasible design" in info
+    browser.execute_script("document.getElementById('view-kind').scrollIntoView()")
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / "web-synthesis.png"))
+    browser.find_element(By.ID, "job-open").click()
+    _wait(browser, lambda d: d.find_element(By.ID, "editor").get_attribute("value")
+          == result["text"], "the result did not open in the editor")
+    assert browser.find_element(By.ID, "save-path").get_attribute("value") == \
+        "four_bar_path_synthesis_synthesized.yaml"
+    _wait(browser, lambda d: "solved" in d.find_element(By.ID, "status").text,
+          "the synthesized model was not solved")
+    browser.find_element(By.ID, "lang-ru").click()
+    assert browser.find_element(By.ID, "job-info").text.startswith("готово (прервано)")
+    browser.find_element(By.ID, "lang-en").click()
+
+
+def _view_svg(driver) -> str:
+    """The SVG text of the view the page shows."""
+    return driver.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        fetch(document.getElementById('view-image').src).then((r) => r.text()).then(done);""")
+
+
+def test_another_plot_kind_follows_the_position_and_the_language(browser, server):
+    base, _ = server
+    _open(browser, base + "/?example=crank_slider_dynamics")
+    Select(browser.find_element(By.ID, "view-kind")).select_by_value("reduced")
+    _wait(browser, lambda d: d.find_element(By.ID, "view-image").get_attribute(
+        "data-kind") == "reduced", "the view was not drawn")
+    slider = browser.find_element(By.ID, "slider")
+    slider.click()
+    slider.send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * 5)
+    _wait(browser, lambda d: d.find_element(By.ID, "view-image").get_attribute(
+        "data-position") == "5", "the view did not follow the position")
+    text = browser.find_element(By.ID, "editor").get_attribute("value")
+    request = urllib.request.Request(
+        base + "/api/view", headers={"content-type": "application/json"},
+        data=json.dumps({"text": text, "example": "crank_slider_dynamics",
+                         "kind": "reduced", "position": 5}).encode())
+    with urllib.request.urlopen(request, timeout=WAIT) as answer:
+        expected = answer.read().decode()
+    shown = _view_svg(browser)
+
+    def paths(svg: str) -> list[str]:
+        return re.findall(r'<path d="([^"]{40,})"', svg)
+
+    assert paths(shown) == paths(expected) and 'id="position' in shown
+    browser.find_element(By.ID, "lang-ru").click()
+    _wait(browser, lambda d: re.search("[А-Яа-я]", _view_svg(d)),
+          "the view was not drawn in Russian")
+    assert browser.find_element(By.ID, "view-kind").find_element(
+        By.CSS_SELECTOR, "option[value=reduced]").text == "приведённые характеристики"
     browser.find_element(By.ID, "lang-en").click()

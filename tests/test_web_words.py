@@ -22,14 +22,14 @@ def _words(lang: str) -> dict[str, str]:
 
 
 def _asked_keys() -> set[str]:
-    """Every key the page (data-i18n, data-i18n-label) and the scripts (t(...),
-    status(...)) ask for."""
+    """Every key the page (data-i18n, data-i18n-title, data-i18n-label) and the scripts
+    (t(...), status(...), jobInfo(...)) ask for."""
     page = (STATIC / "index.html").read_text(encoding="utf-8")
-    keys = set(re.findall(r'data-i18n="(\w+)"', page))
+    keys = set(re.findall(r'data-i18n(?:-title)?="(\w+)"', page))
     for name in ("app.js", "draw.js", "i18n.js"):
         script = (STATIC / name).read_text(encoding="utf-8")
         keys |= set(re.findall(r'\bt\("(\w+)"', script))
-        keys |= set(re.findall(r'\bstatus\("(\w+)"', script))
+        keys |= set(re.findall(r'\b(?:status|jobInfo)\("(\w+)"', script))
         keys |= set(re.findall(r'i18nLabel = "(\w+)"', script))
         keys |= set(re.findall(r'\b(?:busy|done|word): "(\w+)"', script))
         for pair in re.findall(r'state\.timer \? "(\w+)" : "(\w+)"', script):

@@ -48,6 +48,8 @@ class Progress:
     best_q: float
     elapsed: float
     feasible: bool
+    #: The model with the best design so far (built when called), or None before any.
+    best_model: Callable[[], Model] | None = None
 
 
 #: Share of a time budget kept for the final polish (DE and CMA-ES with polish), and the
@@ -126,8 +128,11 @@ class _Tracker:
         self.history.append({"iteration": self.iteration, "evaluations": self.evaluations,
                              "best": self.best_total, "q": self.best_q, "time": elapsed})
         if self.progress is not None:
+            best_x = self.best_x
             self.progress(Progress(self.iteration, self.evaluations, self.best_total,
-                                   self.best_q, elapsed, math.isfinite(self.best_q)))
+                                   self.best_q, elapsed, math.isfinite(self.best_q),
+                                   None if best_x is None else
+                                   (lambda: self.problem.design_model(best_x))))
         if self.good_enough is not None and self.best_q <= self.good_enough:
             raise _Stop("good enough")
         if self.search.patience is not None and self.since_better >= self.search.patience:

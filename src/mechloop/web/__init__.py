@@ -5,8 +5,9 @@ Modules: :mod:`.safety` (the folder served, tokens, hosts, request size),
 :mod:`.documents` (YAML text → model or located problems), :mod:`.payload` (a solution as
 JSON-ready data: the vector diagram of every position and the results table in display
 units), :mod:`.worker` (work in a child process with a time limit; :mod:`.preload`, what
-its fork server loads once), :mod:`.app` (the routes), :mod:`.serve` (the server started
-by the CLI), ``static/`` (the page; no CDN).
+its fork server loads once), :mod:`.jobs` (a synthesis in the background, its progress
+and cancel), :mod:`.views` (the other plot kinds as SVG), :mod:`.app` (the routes),
+:mod:`.serve` (the server started by the CLI), ``static/`` (the page; no CDN).
 
 It may import everything of mechloop; nothing of mechloop imports it (only the CLI, and
 only inside ``mechloop serve``).  Starlette and uvicorn come with the ``web`` extra.

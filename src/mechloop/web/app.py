@@ -19,7 +19,13 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
 * ``POST /api/figure`` ``{text, path|example, names, format, lang}`` — a plot of up to
   six parameters, ``png`` or ``svg``;
 * ``POST /api/structure`` ``{text, path|example}`` — the structure formula, the Assur
-  groups and the mobility (:func:`mechloop.web.exports.structure`).
+  groups and the mobility (:func:`mechloop.web.exports.structure`);
+* ``POST /api/view`` ``{text, path|example, kind, names, joint, position, lang}`` — one
+  of the other views of ``mechloop plot`` as SVG (:mod:`mechloop.web.views`);
+* ``POST /api/jobs`` ``{text, path|example, kind: "synthesis", iterations?, time?}`` —
+  a background job (:mod:`mechloop.web.jobs`), ``{id}``; ``GET /api/jobs/{id}`` — its
+  state, progress, best design so far and result; ``POST /api/jobs/{id}/cancel`` — stop
+  it, keeping the best.
 
 Every refusal is JSON ``{"error", "hint", "problems"}`` with a 4xx/5xx status; a model
 error is 422 with every problem located by line.
@@ -27,6 +33,7 @@ error is 422 with every problem located by line.
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 from typing import Any
 
@@ -43,8 +50,10 @@ from mechloop.errors import HintedError, MechloopError, ModelError
 from mechloop.output.atomic import atomic_write_text
 from mechloop.web import exports
 from mechloop.web.documents import problems, read_model
+from mechloop.web.jobs import JOB_SECONDS, Jobs
 from mechloop.web.payload import solution
 from mechloop.web.safety import Guard, WebError, Workspace
+from mechloop.web.views import view_svg
 from mechloop.web.worker import REPORT_SECONDS, SOLVE_SECONDS, WorkFailed, run_limited
 
 STATIC = Path(__file__).parent / "static"
@@ -78,12 +87,14 @@ def _solve_text(text: str, path: Path, root: Path) -> bytes:
 
 def create_app(folder: str | Path, *, token: str | None = None,
                hosts: list[str] | None = None, solve_seconds: float = SOLVE_SECONDS,
-               report_seconds: float = REPORT_SECONDS, start: str | None = None) -> Any:
+               report_seconds: float = REPORT_SECONDS, start: str | None = None,
+               job_seconds: float = JOB_SECONDS) -> Any:
     """The application serving ``folder``: ``token`` required in every request when given,
     only the ``hosts`` named (None: any; the CLI names the loopback ones), the time limits
     of a solve and a report (s); ``start``: the model (a path in the folder) the page opens
     first."""
     workspace = Workspace.at(folder)
+    jobs = Jobs(seconds=job_seconds)
 
     def source(data: dict[str, Any]) -> tuple[Path, Path]:
         """(the file a request's model belongs to, the folder its tables may come from)."""
@@ -212,6 +223,44 @@ def create_app(folder: str | Path, *, token: str | None = None,
                                          seconds=solve_seconds)
         return JSONResponse(answer)
 
+    def _number(data: dict[str, Any], key: str, kind: type) -> Any:
+        value = data.get(key)
+        if value is None:
+            return None
+        if isinstance(value, bool) or not isinstance(value, int | float) or value <= 0:
+            raise WebError(f"{key!r} is not a positive number", f"give {key} > 0")
+        return kind(value)
+
+    async def view(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        names = [str(n) for n in data.get("names") or []][:6]
+        joint = data.get("joint")
+        position = data.get("position", 0)
+        if isinstance(position, bool) or not isinstance(position, int):
+            raise WebError("'position' is not a whole number", "give a position number")
+        content = await run_in_threadpool(
+            run_limited, view_svg, data.get("text", ""), path, root,
+            str(data.get("kind", "")), names, None if joint is None else str(joint),
+            position, exports.language(data.get("lang", "en")), seconds=solve_seconds)
+        return Response(content, media_type="image/svg+xml")
+
+    async def job_start(request: Request) -> Response:
+        data = await body(request)
+        path, root = source(data)
+        options = {"iterations": _number(data, "iterations", int),
+                   "time": _number(data, "time", float)}
+        job = await run_in_threadpool(jobs.start, str(data.get("kind", "synthesis")),
+                                      data.get("text", ""), path, root, options)
+        return JSONResponse({"id": job.id})
+
+    async def job_status(request: Request) -> Response:
+        return _JSON(jobs.get(request.path_params["job"]).status())
+
+    async def job_cancel(request: Request) -> Response:
+        job = await run_in_threadpool(jobs.cancel, request.path_params["job"])
+        return _JSON(job.status())
+
     routes = [Route("/", index),
               Route("/api/models", guarded(models)),
               Route("/api/model", guarded(model)),
@@ -222,6 +271,18 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/table", guarded(table_download), methods=["POST"]),
               Route("/api/figure", guarded(figure), methods=["POST"]),
               Route("/api/structure", guarded(structure), methods=["POST"]),
+              Route("/api/view", guarded(view), methods=["POST"]),
+              Route("/api/jobs", guarded(job_start), methods=["POST"]),
+              Route("/api/jobs/{job}", guarded(job_status)),
+              Route("/api/jobs/{job}/cancel", guarded(job_cancel), methods=["POST"]),
               Mount("/static", StaticFiles(directory=STATIC), name="static")]
-    app = Starlette(routes=routes)
+    @contextlib.asynccontextmanager
+    async def lifespan(app: Any) -> Any:
+        try:
+            yield
+        finally:
+            jobs.stop_all()  # no synthesis outlives the server
+
+    app = Starlette(routes=routes, lifespan=lifespan)
+    app.state.jobs = jobs
     return Guard(app, token=token, hosts=hosts)

@@ -170,6 +170,7 @@ async function solve(version) {
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
   loadStructure(version);
+  loadView();
 }
 
 function fillPlotChoices() {
@@ -307,6 +308,24 @@ function setPosition(k) {
   state.position = k;
   $("slider").value = k;
   render();
+  viewLater();
+}
+
+// KDAM's play modes: forward or backward, one cycle looped, at a chosen speed; the step
+// buttons move one position (frame by frame), pausing the play.
+const FRAME_MS = 60;  // one position per frame at speed ×1
+
+function step(direction) {
+  if (!state.solution) return;
+  const n = state.solution.count;
+  setPosition(((state.position + direction) % n + n) % n);
+}
+
+function startTimer() {
+  clearInterval(state.timer);
+  const speed = Number($("play-speed").value) || 1;
+  state.timer = setInterval(() => step(Number($("play-direction").value) || 1),
+    FRAME_MS / speed);
 }
 
 function togglePlay() {
@@ -314,12 +333,164 @@ function togglePlay() {
     clearInterval(state.timer);
     state.timer = null;
   } else if (state.solution) {
-    state.timer = setInterval(() => {
-      setPosition((state.position + 1) % state.solution.count);  // one cycle, looped
-    }, 60);
+    startTimer();
   }
   $("play").dataset.i18n = state.timer ? "pause" : "play";
   $("play").textContent = t($("play").dataset.i18n);
+  if (!state.timer) viewLater();  // paused: the view marks where it stopped
+}
+
+function stepOnce(direction) {
+  if (state.timer) togglePlay();
+  step(direction);
+}
+
+// ------------------------------------------------------------------ other views
+// The other plot kinds of mechloop plot, drawn by the server as SVG in the page's
+// language; asked again when the model, the language or (paused) the position changes.
+const view = { pending: null, url: null, asked: 0 };
+
+function viewLater() {
+  clearTimeout(view.pending);
+  if (state.timer) return;  // not while playing: one image per position would be too many
+  view.pending = setTimeout(loadView, 300);
+}
+
+async function loadView() {
+  const kind = $("view-kind").value;
+  const image = $("view-image");
+  const problem = $("view-problem");
+  if (!kind || !state.solution) {
+    image.hidden = true;
+    problem.hidden = true;
+    return;
+  }
+  const asked = ++view.asked;
+  const names = $("view-names").value.split(",").map((n) => n.trim()).filter(Boolean);
+  const body = Object.assign({ text: $("editor").value, kind, names,
+    joint: $("view-joint").value.trim() || null, position: state.position, lang: LANG },
+  state.source);
+  const response = await postJSON("api/view", body);
+  if (asked !== view.asked) return;
+  if (!response.ok) {
+    const answer = await read(response);
+    problem.textContent = t("viewFailed", { error: answer.error })
+      + (answer.hint ? ` (${t("fix")}: ${answer.hint})` : "");
+    problem.hidden = false;
+    image.hidden = true;
+    return;
+  }
+  const blob = await response.blob();
+  if (view.url) URL.revokeObjectURL(view.url);
+  view.url = URL.createObjectURL(blob);
+  image.dataset.kind = kind;
+  image.dataset.position = body.position;
+  image.src = view.url;
+  image.hidden = false;
+  problem.hidden = true;
+}
+
+// ------------------------------------------------------------------ background jobs
+const job = { id: null, poll: null, result: null, info: ["", null] };
+
+// The job's line, kept as a key of WORDS (re-said when the language changes); ``why``,
+// the library's reason the search stopped, is said in the page's language.
+function jobInfo(key, values) {
+  job.info = [key, values];
+  const shown = values && values.why !== undefined
+    ? Object.assign({ stopped: stopText(values.why) }, values) : values;
+  $("job-info").textContent = key ? t(key, shown) : "";
+}
+
+function stopText(why) {
+  if (why === "interrupted") return t("stopInterrupted");
+  if (why === "iteration limit") return t("stopLimit");
+  if (why === "good enough") return t("stopGood");
+  if (why === "time budget spent") return t("stopTime");
+  if (why.startsWith("no progress")) return t("stopPatience");
+  return t("stopOther");
+}
+
+async function jobStart() {
+  const body = Object.assign({ text: $("editor").value, kind: "synthesis" }, state.source);
+  job.result = null;
+  $("job-open").hidden = true;
+  jobInfo("jobStarting");
+  const response = await postJSON("api/jobs", body);
+  const answer = await read(response);
+  if (!response.ok) {
+    jobInfo("jobFailed", { error: answer.error });
+    return;
+  }
+  job.id = answer.id;
+  $("job-start").disabled = true;
+  $("job-cancel").disabled = false;
+  $("job-bar").value = 0;
+  job.poll = setTimeout(jobPoll, 200);
+}
+
+async function jobPoll() {
+  const response = await api("api/jobs/" + job.id);
+  const answer = await read(response);
+  if (!response.ok) {
+    jobFinished();
+    jobInfo("jobFailed", { error: answer.error });
+    return;
+  }
+  const p = answer.progress;
+  if (p.total) $("job-bar").value = p.iteration / p.total;
+  if (answer.diagram) {
+    $("job-diagram").removeAttribute("hidden");  // an SVG element has no .hidden
+    drawDiagram($("job-diagram"), { diagram: answer.diagram }, 0, false, [], "best-");
+  }
+  $("job-bar").dataset.best = p.best === null || p.best === undefined ? "" : p.best;
+  if (answer.state === "running" || answer.state === "stopping") {
+    if (answer.state === "stopping") jobInfo("jobStopping");
+    else if (p.total) {
+      jobInfo("jobProgress", { k: p.iteration, n: p.total,
+        q: p.feasible ? format(p.best) : t("jobNoFeasible") });
+    }
+    job.poll = setTimeout(jobPoll, 250);
+    return;
+  }
+  jobFinished();
+  if (answer.state === "failed") {
+    jobInfo("jobFailed", { error: (answer.problems[0] || {}).message });
+    return;
+  }
+  const result = answer.result;
+  job.result = result;
+  $("job-open").hidden = false;
+  $("job-bar").dataset.best = result.best === null ? "" : result.best;
+  if (result.feasible) jobInfo("jobDone", { why: result.stopped, q: format(result.best) });
+  else jobInfo("jobInfeasible", { why: result.stopped });
+}
+
+function jobFinished() {
+  clearTimeout(job.poll);
+  $("job-start").disabled = false;
+  $("job-cancel").disabled = true;
+  document.body.dataset.job = job.id || "";
+}
+
+async function jobCancel() {
+  if (!job.id) return;
+  $("job-cancel").disabled = true;
+  jobInfo("jobStopping");
+  await postJSON("api/jobs/" + job.id + "/cancel", {});
+}
+
+// The synthesized model opens in the editor, to be saved under a new name.
+function jobOpen() {
+  if (!job.result) return;
+  const name = $("save-path").value.replace(/\.(yaml|yml|json)$/i, "");
+  $("save-path").value = name + "_synthesized.yaml";
+  state.solution = null;
+  state.position = 0;
+  $("editor").value = job.result.text;
+  $("editor").scrollTop = 0;
+  edited();
+  status("jobOpened", null, "ok");
 }
 
 // ------------------------------------------------------------------ files
@@ -521,6 +692,8 @@ function setLanguage(lang) {
   renderProblems();
   $("play").textContent = t($("play").dataset.i18n);
   status(...lastStatus);
+  jobInfo(...job.info);
+  loadView();
   if (state.solution) {
     fillPlotChoices();
     fillTraces();
@@ -543,6 +716,15 @@ window.addEventListener("DOMContentLoaded", async () => {
   });
   $("slider").addEventListener("input", () => setPosition(Number($("slider").value)));
   $("play").addEventListener("click", togglePlay);
+  $("step-back").addEventListener("click", () => stepOnce(-1));
+  $("step-forward").addEventListener("click", () => stepOnce(1));
+  $("play-speed").addEventListener("change", () => { if (state.timer) startTimer(); });
+  $("view-kind").addEventListener("change", loadView);
+  $("view-names").addEventListener("change", loadView);
+  $("view-joint").addEventListener("change", loadView);
+  $("job-start").addEventListener("click", jobStart);
+  $("job-cancel").addEventListener("click", jobCancel);
+  $("job-open").addEventListener("click", jobOpen);
   $("plot-select").addEventListener("change", () => {
     state.column = $("plot-select").value;
     state.extra = state.extra.filter((name) => name !== state.column);

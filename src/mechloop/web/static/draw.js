@@ -87,7 +87,7 @@ function drawHistory(svg, diagram, map, overlay, traces) {
   });
 }
 
-function drawDiagram(svg, solution, k, overlay = false, traces = []) {
+function drawDiagram(svg, solution, k, overlay = false, traces = [], prefix = "") {
   clear(svg);
   const width = Number(svg.getAttribute("width"));
   const height = Number(svg.getAttribute("height"));
@@ -97,7 +97,7 @@ function drawDiagram(svg, solution, k, overlay = false, traces = []) {
   const size = 10;
   for (const vector of diagram.vectors) {
     const marker = el("marker", {
-      id: "arrow-" + vector.number, viewBox: "0 0 10 10", refX: "10", refY: "5",
+      id: prefix + "arrow-" + vector.number, viewBox: "0 0 10 10", refX: "10", refY: "5",
       markerWidth: size, markerHeight: size, markerUnits: "userSpaceOnUse",
       orient: "auto-start-reverse",
     }, defs);
@@ -123,9 +123,9 @@ function drawDiagram(svg, solution, k, overlay = false, traces = []) {
     if (!known(x1, y1, x2, y2)) continue;
     const a = [map.x(x1), map.y(y1)], b = [map.x(x2), map.y(y2)];
     el("line", {
-      id: "vector-" + vector.number, class: "vector", x1: a[0], y1: a[1], x2: b[0],
+      id: prefix + "vector-" + vector.number, class: "vector", x1: a[0], y1: a[1], x2: b[0],
       y2: b[1], stroke: vector.color, "stroke-width": 2.2,
-      "marker-end": "url(#arrow-" + vector.number + ")",
+      "marker-end": "url(#" + prefix + "arrow-" + vector.number + ")",
       "data-x1": x1, "data-y1": y1, "data-x2": x2, "data-y2": y2,
     }, vectors);
     for (const [letter, role] of Object.entries(vector.marks)) {

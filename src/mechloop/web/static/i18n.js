@@ -26,6 +26,22 @@ const WORDS = {
     invalid: "the model has problems", broken: "chain break at position {k}",
     breakReason: "contour {contour} ({module}): {reason}", failed: "failed: {error}",
     axisPosition: "position", ok: "no problems", unsaved: "give a file name to save to",
+    stepBack: "one position back", stepForward: "one position forward",
+    forward: "forward", backward: "backward",
+    synthesis: "Synthesis", jobStart: "Synthesize", jobCancel: "Cancel",
+    jobOpen: "Open the result", jobStarting: "starting…",
+    jobProgress: "generation {k} of {n}, best Q = {q}", jobNoFeasible: "no feasible design yet",
+    jobStopping: "stopping, keeping the best…",
+    jobDone: "done ({stopped}): best Q = {q}", jobInfeasible: "done ({stopped}): no feasible design",
+    jobFailed: "the synthesis failed — {error}", jobOpened: "the synthesized model is in the editor",
+    stopInterrupted: "cancelled", stopLimit: "generation limit", stopGood: "good enough",
+    stopTime: "time budget spent", stopPatience: "no progress", stopOther: "stopped",
+    view: "View", viewNone: "none", viewIncrement: "increment",
+    viewAngle: "angle between vectors", viewReduced: "reduced characteristics",
+    viewBalancing: "balancing load", viewReactions: "reactions", viewHodograph: "hodograph",
+    viewSummary: "energy summary", viewMotion: "machine motion",
+    viewNames: "names, comma-separated (a parameter; two vector numbers; joints)",
+    viewJoint: "joint of the hodograph", viewFailed: "the view cannot be drawn — {error}",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -52,6 +68,25 @@ const WORDS = {
     broken: "разрыв цепи в положении {k}",
     breakReason: "контур {contour} ({module}): {reason}", failed: "ошибка: {error}",
     axisPosition: "положение", ok: "ошибок нет", unsaved: "укажите имя файла для сохранения",
+    stepBack: "на положение назад", stepForward: "на положение вперёд",
+    forward: "вперёд", backward: "назад",
+    synthesis: "Синтез", jobStart: "Синтезировать", jobCancel: "Прервать",
+    jobOpen: "Открыть результат", jobStarting: "запуск…",
+    jobProgress: "поколение {k} из {n}, лучшее Q = {q}",
+    jobNoFeasible: "допустимого решения пока нет",
+    jobStopping: "остановка с сохранением лучшего…",
+    jobDone: "готово ({stopped}): лучшее Q = {q}",
+    jobInfeasible: "готово ({stopped}): допустимого решения нет",
+    jobFailed: "синтез не удался — {error}", jobOpened: "синтезированная модель в редакторе",
+    stopInterrupted: "прервано", stopLimit: "предел поколений", stopGood: "достаточно точно",
+    stopTime: "время вышло", stopPatience: "нет улучшения", stopOther: "остановлено",
+    view: "Вид", viewNone: "нет", viewIncrement: "приращение",
+    viewAngle: "угол между векторами", viewReduced: "приведённые характеристики",
+    viewBalancing: "уравновешивающая нагрузка", viewReactions: "реакции",
+    viewHodograph: "годограф", viewSummary: "энергетический баланс",
+    viewMotion: "движение машины",
+    viewNames: "имена через запятую (параметр; два номера векторов; пары)",
+    viewJoint: "пара годографа", viewFailed: "вид не построен — {error}",
   },
 };
 
@@ -91,6 +126,9 @@ function applyWords() {
   document.documentElement.lang = LANG;
   for (const element of document.querySelectorAll("[data-i18n]")) {
     element.textContent = t(element.dataset.i18n);
+  }
+  for (const element of document.querySelectorAll("[data-i18n-title]")) {
+    element.title = t(element.dataset.i18nTitle);
   }
   for (const button of document.querySelectorAll("button.lang")) {
     button.classList.toggle("active", button.dataset.lang === LANG);
