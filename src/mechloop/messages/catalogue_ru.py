@@ -129,6 +129,8 @@ ENTRIES: list[Entry] = [
     (r"Input should be (?P<vals_or>(?:'[^']*'|-?[\d.]+)(?:, (?:'[^']*'|-?[\d.]+))* or "
      r"(?:'[^']*'|-?[\d.]+))", "допустимые значения: {vals_or}"),
     (r"Input should be (?P<val>'[^']*'|-?[\d.]+)", "допустимое значение: {val}"),
+    (r"Unable to parse input string as an integer, exceeded maximum size",
+     "не удаётся прочитать строку как целое число: слишком много цифр"),
     (r"Input should be a valid number, unable to parse string as a number",
      "нужно число, а строку не удаётся прочитать как число"),
     (r"Input should be a valid number", "нужно число"),
@@ -312,6 +314,65 @@ ENTRIES: list[Entry] = [
     # output files
     (r"unknown output format '(?P<s>[^']*)'", "неизвестный формат вывода '{s}'"),
     (r"use a file name ending in (?P<list_or>.*)", "укажите имя файла с окончанием {list_or}"),
+    # numbers out of range, CSV tables
+    (r"(?P<v>\S+) is outside the range of a model value \(a finite number between "
+     r"(?P<a>\S+) and (?P<b>\S+)\)", "{v} вне диапазона значений модели (конечное число "
+     "от {a} до {b})"),
+    (r"(?P<file>.+?), line (?P<line>\d+): (?P<k>.*) is outside the range of a position and "
+     r"a model value \(a finite number between (?P<a>\S+) and (?P<b>\S+)\)",
+     "{file}, строка {line}: {k} вне диапазона номера положения и значения модели "
+     "(конечное число от {a} до {b})"),
+    (r"write a whole position number and a finite value of a physical size \(model units\)",
+     "запишите целый номер положения и конечное значение физически разумной величины (в "
+     "единицах модели)"),
+    (r"(?P<file>.+?), line (?P<line>\d+): not a position number and a value",
+     "{file}, строка {line}: это не номер положения и значение"),
+    (r"every row is an integer position and a number",
+     "каждая строка — целый номер положения и число"),
+    (r"(?P<path>.+?) is not a CSV file", "{path} — не CSV-файл"),
+    (r"give the path of a CSV file, relative to the model file",
+     "укажите путь к CSV-файлу относительно файла модели"),
+    (r"CSV file (?P<path>.+?) not found", "CSV-файл {path} не найден"),
+    (r"give the path relative to the model file", "укажите путь относительно файла модели"),
+    (r"cannot read (?P<path>.+?) as CSV \((?P<why>.*)\)",
+     "не удаётся прочитать {path} как CSV ({why})"),
+    (r"write a header line, then position,value rows",
+     "запишите строку заголовка, затем строки положение,значение"),
+    (r"(?P<path>\S+) is (?P<v>\S+); a length here must be positive",
+     "{path} равно {v}; длина здесь должна быть положительной"),
+    (r"give a positive length", "задайте положительную длину"),
+    (r"contour (?P<c>\d+) lists vector (?P<v>\d+) twice",
+     "контур {c} содержит вектор {v} дважды"),
+    (r"list each vector once", "перечислите каждый вектор один раз"),
+    (r"unacceptable character (?P<c>#x[0-9a-fA-F]+): special characters are not allowed"
+     r"(?P<rest>.*)", lambda m: f"недопустимый символ {m['c']}: специальные символы не "
+     "допускаются"),
+    (r"for the next token", "следующий элемент"),
+    # group files (mechloop.model.groups): points and links by name
+    (r"unknown point '(?P<n>[^']*)'", "неизвестная точка '{n}'"),
+    (r"no link named '(?P<n>[^']*)'", "нет звена с именем '{n}'"),
+    (r"no moving link named '(?P<n>[^']*)'", "нет подвижного звена с именем '{n}'"),
+    (r"no point named '(?P<n>[^']*)'", "нет точки с именем '{n}'"),
+    (r"point '(?P<n>[^']*)' is not defined yet", "точка '{n}' ещё не задана"),
+    (r"point '(?P<n>[^']*)' is not on link '(?P<k>[^']*)'",
+     "точка '{n}' не лежит на звене '{k}'"),
+    (r"(?P<what>point|link) '(?P<n>[^']*)' is already defined at (?P<at>\S+)",
+     lambda m: ("точка" if m["what"] == "point" else "звено") + f" '{m['n']}' уже задан"
+     + ("а" if m["what"] == "point" else "о") + f" в {m['at']}"),
+    (r"give every (?P<what>point|link) its own name",
+     lambda m: "дайте каждой точке своё имя" if m["what"] == "point" else
+     "дайте каждому звену своё имя"),
+    (r"did you mean '(?P<v>[^']*)'\? (?P<rest_tr>.*)", "возможно, имелось в виду '{v}'? "
+     "{rest_tr}"),
+    (r"use one of: none yet(?: \((?P<what_tr>[^)]*)\))?", "допустимых пока нет"),
+    (r"use one of: (?P<items>[\w, ]+) \((?P<what_tr>[^)]*)\)",
+     lambda m: f"допустимо: {_quoted(m['items'])} ({translate(m['what_tr'])})"),
+    (r"the ground points, the input's joint, joints of earlier groups and points on links",
+     "неподвижные точки, шарнир входного звена, шарниры предыдущих групп и точки на "
+     "звеньях"),
+    # synthesis
+    (r"give a task \(path, function or motion\) or a criterion to minimize",
+     "задайте задачу ('path', 'function' или 'motion') или критерий для минимизации"),
     # the plot and report commands' refusals
     (r"unknown view '(?P<v>[^']*)'", "неизвестный вид '{v}'"),
     (r"use one of vectors (?P<items>[\d, ]+)", "допустимые векторы: {items}"),
