@@ -373,6 +373,27 @@ ENTRIES: list[Entry] = [
     # synthesis
     (r"give a task \(path, function or motion\) or a criterion to minimize",
      "задайте задачу ('path', 'function' или 'motion') или критерий для минимизации"),
+    (r"(?P<n>[\d,]+) more values of this table cannot be read",
+     "не удаётся прочитать ещё значений этой таблицы: {n}"),
+    (r"fix the values above the same way", "исправьте значения выше так же"),
+    (r"the table is empty", "таблица пуста"),
+    (r"give at least one 'position: value' pair",
+     "задайте хотя бы одну пару 'положение: значение'"),
+    (r"argument (?P<n>\d+) drives both lengths and angles",
+     "аргумент {n} задаёт и длины, и углы"),
+    (r"give lengths and angles separate arguments", "задайте длинам и углам разные аргументы"),
+    (r"use a position between (?P<a>\d+) and (?P<b>\d+)", "укажите положение от {a} до {b}"),
+    (r"vector number (?P<n>-?\d+) is not positive", "номер вектора {n} не положителен"),
+    (r"number vectors 1, 2, 3, \.\.\.", "нумеруйте векторы 1, 2, 3, ..."),
+    (r"(?P<p>[ra]\d+) links to (?P<q>[ra]\d+), a function that no contour solves",
+     "{p} ссылается на {q} — искомый параметр, который не решает ни один контур"),
+    (r"add vector (?P<v>\d+) to a contour", "добавьте вектор {v} в какой-либо контур"),
+    (r"contour (?P<c>\d+) is solved in closed form \(module (?P<m>\w+)\); a guess applies "
+     r"only to a coupled block", "контур {c} решается в замкнутом виде (модуль {m}); "
+     "начальное приближение ('guess') применяется только к связанному блоку"),
+    (r"remove 'guess' and choose the assembly with 'variant'",
+     "удалите 'guess' и выберите сборку ключом 'variant'"),
+    (r"unknown law '(?P<v>[^']*)'", "неизвестный закон '{v}'"),
     # the plot and report commands' refusals
     (r"unknown view '(?P<v>[^']*)'", "неизвестный вид '{v}'"),
     (r"use one of vectors (?P<items>[\d, ]+)", "допустимые векторы: {items}"),
