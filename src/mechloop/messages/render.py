@@ -59,6 +59,6 @@ def _model_error(exc: ModelError) -> str:
     lines = [_problem(p, exc.file) for p in exc.problems]
     if len(lines) == 1:
         return lines[0]
-    head = f"проблем в {exc.file}: {len(lines)}" if exc.file else \
+    head = f"проблем в файле {exc.file}: {len(lines)}" if exc.file else \
         f"проблем в модели: {len(lines)}"
     return "\n".join([head, *("- " + line.replace("\n", "\n  ") for line in lines)])
