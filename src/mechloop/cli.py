@@ -26,6 +26,7 @@ from rich.text import Text
 from typer.core import TyperCommand, TyperGroup
 
 from mechloop.errors import MechloopError, ModelError, Problem
+from mechloop.messages import error_label, message_language, render_error
 
 if TYPE_CHECKING:
     from mechloop.dynamics.analysis import DynamicResults
@@ -79,11 +80,18 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
                 from mechloop.model.load import locate
 
                 exc = locate(exc, kwargs["model"])
-            err.print(f"[bold red]error:[/] {escape(str(exc))}", markup=True,
-                      soft_wrap=True)  # escaped: '[m]' in a message is a unit, not markup
+            lang = _message_lang(kwargs)
+            err.print(f"[bold red]{error_label(lang)}[/] {escape(render_error(exc, lang))}",
+                      markup=True, soft_wrap=True)  # escaped: '[m]' is a unit, not markup
             raise typer.Exit(code=2) from None
 
     return wrapper
+
+
+def _message_lang(kwargs: dict[str, Any]) -> str:
+    """The language of a command's error: Russian when its ``--lang ru`` is given, else
+    ``MECHLOOP_LANG`` (:func:`mechloop.messages.message_language`)."""
+    return message_language("ru" if kwargs.get("lang") == "ru" else None)
 
 
 @app.command(cls=_Command)
