@@ -138,7 +138,11 @@ def programs(draw) -> MotionProgram:
         segs.append(Segment(kind, angle, lift, law(draw(LAWS))))
         level += lift if kind == "rise" else -lift
     last = 2 * math.pi * weights[-1] / total
-    if abs(level) < 1e-4:
+    if abs(level) < 1e-4:  # back where it started but for a sliver: the last motion takes it
+        k = max(i for i, seg in enumerate(segs) if seg.kind != "dwell")
+        seg = segs[k]
+        lift = seg.lift - level if seg.kind == "rise" else seg.lift + level
+        segs[k] = Segment(seg.kind, seg.angle, lift, seg.law)
         segs.append(Segment("dwell", last))
     else:
         kind = "return" if level > 0 else "rise"
