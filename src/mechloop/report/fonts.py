@@ -37,11 +37,11 @@ def _font(name: str):
     """(character map, advance widths in em) of the font file ``name``."""
     from fontTools.ttLib import TTFont
 
-    font = TTFont(FONT_DIR / name, lazy=True)
-    cmap = font.getBestCmap()
-    em = font["head"].unitsPerEm
-    metrics = font["hmtx"].metrics
-    return cmap, {code: metrics[glyph][0] / em for code, glyph in cmap.items()}
+    with TTFont(FONT_DIR / name, lazy=True) as font:  # closed: read what is kept first
+        cmap = dict(font.getBestCmap())
+        em = font["head"].unitsPerEm
+        metrics = font["hmtx"].metrics
+        return cmap, {code: metrics[glyph][0] / em for code, glyph in cmap.items()}
 
 
 def _fonts(role: str, bold: bool):
