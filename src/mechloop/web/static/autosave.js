@@ -68,6 +68,7 @@ const autosave = {
     const offer = this.offer;
     this.hide();
     if (offer) mechloopEditor.setText(offer.text);  // one undo goes back to the file
+    $("editor").focus();
     status("restored", null, "ok");
   },
 

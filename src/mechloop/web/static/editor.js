@@ -156,8 +156,12 @@
     e.addEventListener("keyup", () => { if (e.value === last.text) last = snapshot(); });
     e.addEventListener("mouseup", () => { if (e.value === last.text) last = snapshot(); });
     const u = document.getElementById("undo"), r = document.getElementById("redo");
-    if (u) u.addEventListener("click", undo);
-    if (r) r.addEventListener("click", redo);
+    for (const [button, action] of [[u, undo], [r, redo]]) {
+      if (!button) continue;
+      button.addEventListener("click", action);
+      // the editor keeps the focus (and its keys) when a button is pressed
+      button.addEventListener("mousedown", (event) => event.preventDefault());
+    }
     buttons();
   });
 })();
