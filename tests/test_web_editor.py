@@ -56,7 +56,7 @@ def test_a_working_copy_is_kept_offered_and_cleared_by_save(client, folder):
     assert not copy.exists()
     client.post("/api/autosave", json={"path": "crank_slider.yaml", "text": edited})
     saved = client.post("/api/save", json={"path": "crank_slider.yaml", "text": edited})
-    assert saved.json() == {"saved": "crank_slider.yaml", "copied": []}
+    assert saved.json() == {"saved": "crank_slider.yaml"}
     assert not copy.exists()
     assert (folder / "crank_slider.yaml").read_text(encoding="utf-8") == edited
 
@@ -133,9 +133,13 @@ def test_the_templates_are_every_bundled_model_course_tasks_first(client):
 
 @pytest.mark.parametrize("name", ["", "no_such_model", "../crank_slider", "python_api",
                                   "/etc/passwd"])
-def test_an_unknown_template_is_refused(client, name):
+def test_an_unknown_template_is_refused(client, folder, name):
     answer = client.get("/api/template", params={"name": name})
     assert answer.status_code == 404 and answer.json()["hint"]
+    if name:  # nothing saved from it either
+        saved = client.post("/api/save", json={"path": "x.yaml", "text": "x: 1\n",
+                                               "template": name})
+        assert saved.status_code == 404 and not (folder / "x.yaml").exists()
 
 
 def test_a_new_model_saved_from_a_course_template_brings_its_documents(client, folder):

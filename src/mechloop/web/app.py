@@ -190,14 +190,15 @@ def create_app(folder: str | Path, *, token: str | None = None,
         if not path.parent.is_dir():
             raise WebError(f"no folder {workspace.relative(path.parent)!r}",
                            "save into an existing folder", 404)
+        template = templates.template(str(data["template"])) if data.get("template") \
+            else None
         await run_in_threadpool(atomic_write_text, path, data.get("text", ""))
-        copied = []
-        if data.get("template"):
-            copied = await run_in_threadpool(
-                templates.copy_companions, data.get("text", ""),
-                templates.template(str(data["template"])), path, workspace)
+        answer: dict[str, Any] = {"saved": workspace.relative(path)}
+        if template is not None:  # a new model: the files it names, copied beside it
+            answer["copied"] = await run_in_threadpool(
+                templates.copy_companions, data.get("text", ""), template, path, workspace)
         working_copy(workspace, path=workspace.relative(path)).clear()
-        return JSONResponse({"saved": workspace.relative(path), "copied": copied})
+        return JSONResponse(answer)
 
     def copy_of(data: Any) -> Any:
         """The working copy of the model a request names (``path`` or ``example``)."""
