@@ -143,6 +143,22 @@ def test_a_commands_lang_ru_reaches_its_errors(tmp_path, command):
     assert english_left(russian) == []
 
 
+@pytest.mark.parametrize("command", ["report", "plot"])
+def test_a_commands_lang_overrides_the_environment(tmp_path, command):
+    """``--lang en`` under ``MECHLOOP_LANG=ru`` prints English; with no ``--lang`` the
+    environment's language is the command's (its messages and, for plot, its figure)."""
+    args = ([command, DYN, "-o", str(tmp_path / "r.txt")] if command == "report" else
+            [command, SLIDER, "spline", "-o", str(tmp_path / "a.png")])
+    _, english = _run([*args, "--lang", "en"], "ru")
+    _, russian = _run(args, "ru")
+    assert english.startswith("error: ") and russian.startswith("ошибка: ")
+    if command == "plot":
+        code, text = _run([command, SLIDER, "plan", "-o", str(tmp_path / "p.svg")], "ru")
+        assert code == 0 and "записан файл" in text
+        assert "Положение" in (tmp_path / "p.svg").read_text() or \
+            "положение" in (tmp_path / "p.svg").read_text()
+
+
 def test_english_is_the_errors_own_text_byte_for_byte():
     errors = [ModelError([Problem(("vectors", 2, "r"), "'20 kg' is not a length",
                                   "use a length unit: m, cm, mm", 7)], "m.yaml"),
