@@ -103,6 +103,10 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
     ("report_format", "report", None, [DYN, "-o", "{tmp}/r.txt"]),
     ("report_parameter", "report", None, [DYN, "-o", "{tmp}/r.pdf", "--parameter", "q7"]),
     ("report_position", "report", None, [DYN, "-o", "{tmp}/r.pdf", "--position", "999"]),
+    ("new_unknown_example", "new", None, ["nosuch_example_zz"]),
+    ("new_missing_folder", "new", None, ["crank_slider", "{tmp}/no/such/x.yaml"]),
+    ("sweep_bad_range", "sweep", None, [SLIDER, "--vary", "time.rpm=1000:4000", "--collect",
+                                        "r3:max"]),
 ]
 
 

@@ -31,7 +31,6 @@ AREAS = {
 UNFINISHED = {
     "model",
     "dynamics",
-    "synthesis",
     "gears",
     "views",
     "web",
