@@ -125,7 +125,8 @@ ENTRIES: list[Entry] = [
      "значения 'q' должны быть конечными и строго возрастающими"),
     (_p("sort q, drop repeats"), "отсортируйте 'q' и уберите повторы"),
     (_p("{name} must have shape (..., {n}) like q, got {s}"),
-     "'{name}' должен иметь форму (..., {n}), как 'q', а получена {s}"),
+     "массив '{name}' должен иметь форму (..., {n}), как 'q', а получена {s}"),
+    (r"check (?P<name>d?[jm]_red|m)", "проверьте '{name}'"),
     (_p("put the positions on the last axis"), "расположите положения по последней оси"),
     (_p("{name} has non-finite values"), "в '{name}' есть неконечные значения"),
     (_p("q, J and M must be one cycle of at least 4 positions of the same shape (P,); got "
@@ -157,6 +158,7 @@ ENTRIES: list[Entry] = [
     (_p("bodies {b} are not two different bodies of the mechanism"),
      "звенья {b} — не два разных звена механизма"),
     (_p("use two of {b} (0: the ground)"), "укажите два из {b} (0 — стойка)"),
+    (_p("add time: {{rpm: ...}}"), "добавьте 'time: {{rpm: ...}}'"),
     (_p("a damper needs the model's time (its force follows the speed)"),
      "демпферу нужно время модели (его сила зависит от скорости)"),
     (_p("this point is not fixed in body {b}: it moves relative to it"),
@@ -174,6 +176,17 @@ ENTRIES: list[Entry] = [
     (_p("give a force a value {{piston: rK, bore: ..., crankcase: ..., engine: {{...}}}} "
         "(examples/engine_indicator.yaml)"), "задайте силе значение {{piston: rK, bore: "
      "..., crankcase: ..., engine: {{...}}}} (examples/engine_indicator.yaml)"),
+    (_p("the model has no drive to take the crank's angle from"),
+     "в модели нет привода, от которого взять угол кривошипа"),
+    (_p("give argument: K (the crank's argument)"),
+     "задайте 'argument: K' (аргумент кривошипа)"),
+    (_p("no vector's angle is driven by argument {k}"),
+     "аргумент {k} не задаёт угол ни одного вектора"),
+    (_p("give the argument that turns the crank"),
+     "укажите аргумент, который поворачивает кривошип"),
+    (_p("name the length rK of an existing vector K that places the piston"),
+     "укажите длину rK существующего вектора K, задающего положение поршня"),
+    (_p("argument {k} is not an angle"), "аргумент {k} — не угол"),
     # the force analysis (mechloop.dynamics.kinetostatics, mechanism)
     (_p("force analysis has {a} unknowns for {b} equations"),
      "в силовом расчёте неизвестных: {a}, а уравнений: {b}"),
@@ -206,6 +219,8 @@ ENTRIES: list[Entry] = [
         "to one"), "перечислите кинематические пары в 'joints:' (вращательная — в точке "
      "'at', поступательная — вдоль вектора 'along') или проверьте, что каждое подвижное "
      "звено задано в 'bodies:' и каждый ведомый вектор принадлежит звену"),
+    (_p("add bodies: {{1: {{vectors: [1], mass: ..., center: ...}}}}"),
+     "добавьте 'bodies: {{1: {{vectors: [1], mass: ..., center: ...}}}}'"),
     (_p("the ground (body 0) cannot have a mass"), "у стойки (звено 0) не может быть массы"),
     (_p("remove mass and parts from body 0"), "удалите 'mass' и 'parts' у звена 0"),
     (_p("vectors {a} and {b} of body {c} turn relative to each other (by up to {n} deg)"),
@@ -216,10 +231,10 @@ ENTRIES: list[Entry] = [
      "к разным звеньям"),
     (_p("the {end} of vector {v} is not fixed in body {b}: it moves relative to the body's "
         "other points"), lambda m: (
-         f"{_ru(m['end']).capitalize()} вектора {m['v']} не закреплён на звене {m['b']}: он "
-         "движется относительно других точек звена" if m["end"] in ("tail", "head") else
-         f"точка '{m['end']}' вектора {m['v']} не закреплена на звене {m['b']}: она "
-         "движется относительно других точек звена")),
+         f"начало вектора {m['v']} не закреплено на звене {m['b']}: оно" if m["end"] == "tail"
+         else f"конец вектора {m['v']} не закреплён на звене {m['b']}: он"
+         if m["end"] == "head" else f"точка '{m['end']}' вектора {m['v']} не закреплена на "
+         f"звене {m['b']}: она") + " движется относительно других точек звена"),
     (_p("a vector of varying length has only one end in a body: name it in ends (ends: "
         "{{{v}: tail}} or head)"), "у вектора переменной длины на звене лежит лишь один "
      "конец: укажите его в 'ends' ('ends: {{{v}: tail}}' или 'head')"),
@@ -293,6 +308,8 @@ ENTRIES: list[Entry] = [
     (_p("make each end of the driven vector a point of exactly one body"),
      "сделайте каждый конец ведомого вектора точкой ровно одного звена"),
     # masses and moments of inertia of bodies
+    (_p("add center: {{vector: K, share: 0.5}}"),
+     "добавьте 'center: {{vector: K, share: 0.5}}'"),
     (_p("a mass cannot be negative"), "масса не может быть отрицательной"),
     (_p("give a mass ≥ 0"), "задайте массу ≥ 0"),
     (_p("body {b} has a mass but no centre of mass"),
@@ -327,6 +344,8 @@ ENTRIES: list[Entry] = [
     (_p("gear mesh {mesh} needs two different bodies of the model"),
      "зацеплению {mesh} нужны два разных звена модели"),
     (_p("use two of {b}"), "укажите два из {b}"),
+    # the choices listed as a Python list (the common "use one of" reads words only)
+    (r"use one of (?P<items>\[[^\]]*\])", "укажите одно из {items}"),
     (_p("ring {r} is not one of the mesh's bodies {b}"),
      "'ring' {r} не входит в звенья зацепления {b}"),
     (_p("name the body with internal teeth, or leave ring out"),
@@ -366,7 +385,8 @@ ENTRIES: list[Entry] = [
     (_p("cannot evaluate {expr}: {why}"), "не удаётся вычислить {expr}: {why}"),
     (_p("call functions as sin(x); use numbers and the state's names"),
      "вызывайте функции как sin(x); используйте числа и имена величин состояния"),
-    (_p("{expr} is not finite at position {n}"), "{expr} не конечно в положении {n}"),
+    (_p("{expr} is not finite at position {n}"),
+     "значение {expr} не конечно в положении {n}"),
     (_p("keep divisions and logarithms away from zero"),
      "не допускайте деления на ноль и логарифма нуля"),
     (_p("an expression of the rates or time cannot also have when:"),
@@ -449,6 +469,9 @@ ENTRIES: list[Entry] = [
     (_p("argument {k} is not an input"), "аргумент {k} — не вход"),
     (_p("{key} of several inputs is given per input"),
      "'{key}' при нескольких входах задаётся для каждого входа"),
+    (_p("write {key}: {{{k}: ...}}"), "пишите '{key}: {{{k}: ...}}'"),
+    (_p("write start: {{{k}: {{angle: ..., rpm: ...}}}}"),
+     "пишите 'start: {{{k}: {{angle: ..., rpm: ...}}}}'"),
     (_p("the start of several inputs is given per input"),
      "начало ('start') при нескольких входах задаётся для каждого входа"),
     (_p("a load over the positions has no value at the states of several inputs"),
