@@ -92,6 +92,17 @@ ENTRIES: list[Entry] = [
         "time instead"), "демпферы или односторонние нагрузки слишком сильно меняются со "
      "скоростью за цикл: повысьте среднюю скорость, добавьте инерции (маховик: 'delta' "
      "меньше) или рассчитайте движение машины во времени ('simulate:')"),
+    # the fixes of mechloop.dynamics.analysis._MACHINE_FIXES (a table: the reader of the
+    # coverage test does not follow it)
+    (_p("check the loads over the cycle: positions 0..N must be one whole cycle of the "
+        "input"), "проверьте нагрузки за цикл: положения 0..N должны составлять один полный "
+     "цикл входного звена"),
+    (_p("the dampers or one-way loads change too much with the speed over the cycle: raise "
+        "the speed (time: {{rpm: ...}}), give a smaller delta (a larger flywheel), or "
+        "simulate the machine in time (simulate:)"), "демпферы или односторонние нагрузки "
+     "слишком сильно меняются со скоростью за цикл: повысьте скорость (time: {{rpm: ...}}), "
+     "задайте меньший 'delta' (больший маховик) или рассчитайте движение машины во "
+     "времени ('simulate:')"),
     (_p("no flywheel reaches delta = {n}"),
      "ни один маховик не даёт коэффициент неравномерности хода 'delta' = {n}"),
     (_p("check the reduced characteristics"),
