@@ -477,7 +477,7 @@ ENTRIES: list[Entry] = [
     (_p("the run of several inputs needs a duration"),
      "расчёту с несколькими входами нужна длительность ('duration')"),
     (_p("give duration: seconds"), "задайте 'duration:' в секундах"),
-    (_p("argument {k} is not an input"), "аргумент {k} — не вход"),
+    (_p("argument {k} is not an input"), "аргумент {k} — не один из входов"),
     (_p("{key} of several inputs is given per input"),
      "'{key}' при нескольких входах задаётся для каждого входа"),
     (_p("write {key}: {{{k}: ...}}"), "пишите '{key}: {{{k}: ...}}'"),
@@ -496,8 +496,8 @@ ENTRIES: list[Entry] = [
      "входами (для него нужны реакции в каждом состоянии)"),
     (_p("set friction: false to run without it"),
      "задайте 'friction: false', чтобы считать без него"),
-    (_p("argument {k} is not the input"), "аргумент {k} — не входной"),
-    (_p("the input is argument {k}"), "входной — аргумент {k}"),
+    (_p("argument {k} is not the input"), "аргумент {k} — не вход машины"),
+    (_p("the input is argument {k}"), "вход машины — аргумент {k}"),
     (_p("rest_rpm applies to several inputs; one input ends its run where its speed falls "
         "to zero"), "'rest_rpm' применяется к нескольким входам; с одним входом расчёт "
      "заканчивается там, где его скорость падает до нуля"),
