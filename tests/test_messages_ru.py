@@ -30,6 +30,7 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 CRANK = (EXAMPLES / "crank_slider.yaml").read_text()
 DYN = str(EXAMPLES / "crank_slider_dynamics.yaml")
 SLIDER = str(EXAMPLES / "crank_slider.yaml")
+DYN_TEXT = (EXAMPLES / "crank_slider_dynamics.yaml").read_text()
 
 #: The user's own text in a message: quoted values and names, key paths and YAML keys
 #: (before a colon), file paths, command-line options, and the names of file formats.
@@ -107,6 +108,13 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
     ("new_missing_folder", "new", None, ["crank_slider", "{tmp}/no/such/x.yaml"]),
     ("sweep_bad_range", "sweep", None, [SLIDER, "--vary", "time.rpm=1000:4000", "--collect",
                                         "r3:max"]),
+    # the force analysis's model (mechloop.dynamics): bodies, joints, friction
+    ("joint_one_body", "solve", DYN_TEXT.replace("bodies: [0, 3], along", "bodies: [3, 3], along"),
+     []),
+    ("body_unknown_vector", "solve", DYN_TEXT.replace(
+        "center: {tail: 3}}", "center: {tail: 3}}\n  4: {vectors: [9], mass: 1}"), []),
+    ("friction_no_radius", "solve", DYN_TEXT.replace("at: {tail: 1}}",
+                                                     "at: {tail: 1}, friction: 0.1}"), []),
 ]
 
 

@@ -30,7 +30,6 @@ AREAS = {
 #: is finished must leave this set).
 UNFINISHED = {
     "model",
-    "dynamics",
     "gears",
     "views",
     "web",
