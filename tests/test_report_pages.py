@@ -42,6 +42,8 @@ def _dynamic(path: Path) -> bool:
 
 DYNAMIC = [p for p in sorted((ROOT / "examples").glob("*.yaml")) if _dynamic(p)]
 COURSE = sorted((ROOT / "examples" / "course").glob("[0-9][0-9]_*.yaml"))
+#: A number with a decimal point (not a dotted run: a date, a section number, a name).
+DECIMAL_POINT = re.compile(r"(?<![\w.])\d+\.\d+(?![\w.])")
 CASES = [pytest.param(p, lang, id=f"{p.parent.name}/{p.stem}-{lang}")
          for p in [*DYNAMIC, *COURSE] for lang in ("en", "ru")
          if lang == "ru" or p in COURSE]
@@ -74,6 +76,11 @@ def test_every_page_of_the_report(path, lang, tmp_path):
             for k, name in enumerate(block.header):
                 assert any(row[k].strip() for row in block.rows), (block.caption, name)
     _check_language(" ".join(pages), lang, _names(model, project))
+    if lang == "ru":  # the decimal comma (GOST 2.105) in every text but the user's names
+        names = [n for n in _names(model, project) if n]
+        spoken = [re.sub("|".join(map(re.escape, names)), "", t) for t in texts(document)]
+        points = [t for t in spoken if DECIMAL_POINT.search(t)]
+        assert not points, points[:3]
 
 
 def _names(model, project) -> list[str]:
