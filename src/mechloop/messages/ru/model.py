@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 
-from mechloop.messages.ru.base import KIND, KINDS, Entry, accusative
+from mechloop.messages.ru.base import KIND, KINDS, Entry, accusative, quoted
 
 #: A user's name as a message shows it: quoted by ``repr`` ('AB', "it's") or bare (AB).
 NAME = r"'[^']*'|\"[^\"]*\"|[^\s,:;()]+"
@@ -46,6 +46,14 @@ def _on_links(match: re.Match[str]) -> str:
     """"P is on AB, BC": the point and the link (or links) it lies on."""
     links = match["links"]
     return f"{_q(match['n'])} лежит на " + ("звеньях " if "," in links else "звене ") + _q(links)
+
+
+def _choose(match: re.Match[str]) -> str:
+    """"use one of: A, groups[0].at[1] (what they are)": the names to choose from (key
+    paths of a group file too), in quotes."""
+    from mechloop.messages.catalogue_ru import translate  # the catalogue holds this module
+
+    return f"допустимо: {quoted(match['items'])} ({translate(match['what'])})"
 
 
 ENTRIES: list[Entry] = [
@@ -201,6 +209,7 @@ ENTRIES: list[Entry] = [
     (r"both attachments are (?P<n>\S+)", _quoting("обе точки присоединения — {n}", "n")),
     (r"attach the group's links at two different points",
      "присоедините звенья группы в двух разных точках"),
+    (r"use one of: (?P<items>[\w.\[\], ]+) \((?P<what>[^()]*)\)", _choose),
     (r"dimensions as the file spells them", "размеры так, как они записаны в файле"),
     (r"named points", "именованные точки"),
     (r"the model was not built from this mechanism: its vectors or contours differ",
