@@ -56,6 +56,16 @@ def _choose(match: re.Match[str]) -> str:
     return f"допустимо: {quoted(match['items'])} ({translate(match['what'])})"
 
 
+def _engine_keys(match: re.Match[str]) -> str:
+    """"a 4-stroke engine takes exhaust, firing, intake; missing intake; not scavenge"."""
+    text = f"{match['n']}-тактному двигателю нужны ключи {quoted(match['own'])}"
+    if match["miss"]:
+        text += f"; не хватает: {quoted(match['miss'])}"
+    if match["extra"]:
+        text += f"; лишние: {quoted(match['extra'])}"
+    return text
+
+
 ENTRIES: list[Entry] = [
     # the vector model's checks (model/check.py, model/display.py, model/limits.py)
     (rf"(?P<v>{NAME}) is not a role", "{v} — не роль параметра"),
@@ -416,4 +426,107 @@ ENTRIES: list[Entry] = [
     (r"a point's coordinate depends on the placement, which frame leaves free",
      "координата точки зависит от размещения, которое 'frame' оставляет свободным"),
     (r"remove the criterion or the frame", "удалите критерий или 'frame'"),
+    # checks of the model's sections by its schema (pydantic's "Value error, …"): loads,
+    # elements, expressions, tables, motors, group legs, engines
+    (r"give either 'share' \(a fraction of the length\) or 'along' \(a distance from the "
+     r"tail\)", "задайте либо 'share' (долю длины), либо 'along' (расстояние от начала "
+     "вектора)"),
+    (r"the (?P<what>\w+) of the table must increase",
+     lambda m: {"lengths": "длины", "speeds": "скорости"}.get(m["what"], f"'{m['what']}'")
+     + " в таблице должны возрастать"),
+    (r"give either stiffness and free_length \(a linear spring\) or a table of \[length, "
+     r"tension\]", "задайте либо 'stiffness' и 'free_length' (линейная пружина), либо "
+     "таблицу пар [длина, усилие]"),
+    (r"give either a coefficient or a table of \[speed, tension\]",
+     "задайте либо коэффициент ('coefficient'), либо таблицу пар [скорость, усилие]"),
+    (r"the speeds of a damper's table start at 0 or above \(the table is mirrored for "
+     r"negative speeds\)", "скорости в таблице демпфера начинаются с 0 или больше (для "
+     "отрицательных скоростей таблица отражается симметрично)"),
+    (r"an expression of at most (?P<n>\S+) characters",
+     "выражение должно быть не длиннее {n} символов"),
+    (rf"cannot read (?P<v>{NAME}): (?P<why_tr>.*)", "не удаётся прочитать выражение {v}: "
+     "{why_tr}"),
+    (r"invalid syntax(?: \(<unknown>, line \d+\))?", "синтаксическая ошибка"),
+    (r"'(?P<c>.)' was never closed(?: \(<unknown>, line \d+\))?", "скобка '{c}' не закрыта"),
+    (r"unmatched '(?P<c>.)'(?: \(<unknown>, line \d+\))?", "лишняя скобка '{c}'"),
+    (r"(?:invalid decimal literal|invalid character '.*?' \(U\+\w+\))"
+     r"(?: \(<unknown>, line \d+\))?", "неверная запись числа или символа"),
+    (r"(?:unexpected EOF while parsing|incomplete input|invalid syntax\. Perhaps you forgot "
+     r"a comma\?)(?: \(<unknown>, line \d+\))?", "выражение записано не полностью"),
+    (r"operator (?P<op>\w+) is not allowed", "операция '{op}' не допускается"),
+    (r"comparison (?P<op>\w+) is not allowed", "сравнение '{op}' не допускается"),
+    (rf"(?P<v>{NAME}) is not a number", "{v} — не число"),
+    (rf"unknown name (?P<n>{NAME}): use t, rK, aK, drK, daK, pi and the functions ?"
+     r"(?P<f>.*)", lambda m: f"неизвестное имя {m['n']}: используйте t, rK, aK, drK, daK, "
+     f"pi и функции {quoted(m['f'])}".rstrip()),
+    (r"only calls like sin\(x\) of ?(?P<f>.*)",
+     lambda m: f"допускаются только вызовы вида sin(x) функций {quoted(m['f'])}".rstrip()),
+    (r"(?P<k>\w+) is not allowed in an expression",
+     "конструкция '{k}' в выражении не допускается"),
+    (r"a leg is pinned \(\{at: A, length: l\}\) or slides \(\{guide: \{through: O, angle: "
+     r"φ\}\}\): give at and length, or guide", "поводок либо присоединён шарниром "
+     "({{at: A, length: l}}), либо скользит ({{guide: {{through: O, angle: φ}}}}): задайте "
+     "'at' и 'length' или 'guide'"),
+    (r"a leg is pinned \(at, length\) or slides \(guide\), not both", "поводок либо "
+     "присоединён шарниром ('at', 'length'), либо скользит ('guide'), но не то и другое "
+     "сразу"),
+    (r"a driven leg is a drive between its two points, not a link: remove its link",
+     "ведущий поводок — это привод между двумя его точками, а не звено: удалите его 'link'"),
+    (r"a leg needs link: its name", "поводку нужен link: его имя"),
+    (r"the mechanism needs one input: give input: \(a crank or a slider\), or drive one leg "
+     r"of a triad \(length: \{argument: 1\}\)", "механизму нужен один вход: задайте input: "
+     "(кривошип или ползун) или сделайте ведущим один поводок триады (length: "
+     "{{argument: 1}})"),
+    (r"a triad's leg is driven and there is an input: drive the mechanism once \(remove "
+     r"input:, or give the leg a length\)", "поводок триады ведущий, а вход тоже задан: "
+     "механизм приводится в движение один раз (удалите input: или задайте поводку "
+     "постоянную длину)"),
+    (r"an? (?P<n>\S+)-stroke engine takes (?P<own>[^;]+)(?:; missing (?P<miss>[^;]+))?"
+     r"(?:; not (?P<extra>[^;]+))?", _engine_keys),
+    (r"give either engine: \{\.\.\.\} or compressor: \{\.\.\.\}",
+     "задайте либо engine: {{...}}, либо compressor: {{...}}"),
+    (rf"unknown law (?P<v>{NAME})", "неизвестный закон {v}"),
+    (r"(?P<path>.+?) is larger than (?P<n>\S+) MiB, the limit for a table",
+     "{path} больше {n} МиБ — предела для таблицы"),
+    (r"give fewer rows \(one per calculation position at most\)",
+     "сократите число строк (не больше одной на расчётное положение)"),
+    (r"cannot read (?P<path>\S+) \((?P<why_tr>[^()]*)\)", "не удаётся прочитать {path} "
+     "({why_tr})"),
+    (r"cannot read (?P<path>.+?) as CSV \((?P<why_tr>.*)\)",
+     "не удаётся прочитать {path} как CSV ({why_tr})"),
+    (r"No columns to parse from file", "в файле нет столбцов"),
+    (r"Error tokenizing data\. C error: Expected (?P<a>\d+) fields in line (?P<n>\d+), saw "
+     r"(?P<b>\d+)\s*", "в строке {n} полей {b}, а ожидалось {a}"),
+    (r"Permission denied", "нет прав доступа"),
+    (r"Is a directory", "это папка, а не файл"),
+    (r"No such file or directory", "нет такого файла или папки"),
+    (r"(?P<path>\S+) has no value column (?P<c>\S+)", "в {path} нет столбца значений {c}"),
+    (r"use 1\.\.(?P<n>\S+) or a header name",
+     "укажите номер столбца от 1 до {n} или имя из заголовка"),
+    (rf"(?P<path>\S+) has no column (?P<c>{NAME})", "в {path} нет столбца {c}"),
+    (r"(?P<file>.+?), line (?P<line>\S+): (?P<k>.*) is outside the range of a position and "
+     r"a model value \((?P<range_tr>[^()]*)\)", "{file}, строка {line}: {k} вне диапазона "
+     "номера положения и значения модели ({range_tr})"),
+    (r"table has (?P<n>\S+) values, expected (?P<m>\S+)",
+     "в таблице значений: {n}, а ожидалось {m}"),
+    (r"rated_rpm must be below synchronous_rpm \(a motor has a positive slip at its rated "
+     r"load\)", "'rated_rpm' должна быть меньше 'synchronous_rpm' (при номинальной нагрузке "
+     "скольжение двигателя положительно)"),
+    (r"give exactly one characteristic: kloss, linear, table or constant \(got "
+     r"(?P<got>[^()]*)\)", lambda m: "задайте ровно одну характеристику: 'kloss', "
+     "'linear', 'table' или 'constant' (задано: "
+     + ("ни одной" if m["got"] == "none" else quoted(m["got"])) + ")"),
+    (r"the speeds of the motor table must increase",
+     "скорости в таблице двигателя должны возрастать"),
+    (r"give duration \(s\) or cycles: the run needs an end",
+     "задайте 'duration' (с) или 'cycles': у расчёта должен быть конец"),
+    (r"give motor \(one input\) or motors \(one per input\), not both",
+     "задайте 'motor' (один вход) или 'motors' (по одному на вход), но не оба"),
+    (r"give either box or polygon", "задайте либо 'box', либо 'polygon'"),
+    (r"give either column or point \(with coordinate\)",
+     "задайте либо 'column', либо 'point' (с 'coordinate')"),
+    (r"a point criterion needs coordinate: x or y", "критерию по точке нужен coordinate: x "
+     "или y"),
+    (r"give one task: path, function or motion",
+     "задайте одну задачу: 'path', 'function' или 'motion'"),
 ]
