@@ -91,8 +91,8 @@ ENTRIES: list[Entry] = [
     (r"a quantity of (?P<n>\S+) characters", "величина из {n} символов"),
     (r"the ratio '(?P<v>[^']*)' divides by 0", "в отношении '{v}' деление на 0"),
     (rf"(?P<u>{NAME}) is not a unit of a length of at most (?P<n>\S+) characters with "
-     r"small powers", "{u} — не единица длиной не больше {n} символов с небольшими "
-     "степенями"),
+     r"small powers", "{u} — не единица: запись единицы не длиннее {n} символов, а степени "
+     "в ней небольшие"),
     (rf"unknown unit (?P<u>{NAME})", "неизвестная единица {u}"),
     (rf"(?P<u>{NAME}) is not (?:an? )?(?P<k_kind>{KIND}) unit",
      lambda m: f"{m['u']} — не единица {_gen(m)}"),
