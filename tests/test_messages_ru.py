@@ -115,6 +115,14 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
         "center: {tail: 3}}", "center: {tail: 3}}\n  4: {vectors: [9], mass: 1}"), []),
     ("friction_no_radius", "solve", DYN_TEXT.replace("at: {tail: 1}}",
                                                      "at: {tail: 1}, friction: 0.1}"), []),
+    # the model's area: a group file, its synthesis task, a vector model's synthesis task
+    ("groups_unit_and_order", "check", (EXAMPLES / "four_bar_groups.yaml").read_text()
+     .replace("at: [A, C]", "at: [A, P]").replace("length: 100,", "length: 100 kg,"), []),
+    ("groups_unknown_dimension", "check", (EXAMPLES / "four_bar_groups_synthesis.yaml")
+     .read_text().replace("points.P.distance:", "points.P.distanse:"), []),
+    ("synthesis_vary", "check", (EXAMPLES / "four_bar_path_synthesis.yaml").read_text()
+     .replace("r1: [50, 150]", "r1: [150, 50]\n    q7: [1, 2]\n    r2.ratio: [1, 2]")
+     .replace("r4: [200, 400]", "r4: periodic").replace("{head: 6}", "{head: 9}"), []),
 ]
 
 
