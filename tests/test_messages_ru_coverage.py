@@ -33,8 +33,6 @@ UNFINISHED = {
     "dynamics",
     "synthesis",
     "gears",
-    "views",
-    "web",
 }
 
 
