@@ -103,6 +103,16 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
     ("report_format", "report", None, [DYN, "-o", "{tmp}/r.txt"]),
     ("report_parameter", "report", None, [DYN, "-o", "{tmp}/r.pdf", "--parameter", "q7"]),
     ("report_position", "report", None, [DYN, "-o", "{tmp}/r.pdf", "--position", "999"]),
+    # views, output files and the command line (mechloop.messages.ru.views, .web)
+    ("plot_combination_one_name", "plot", None, [SLIDER, "combination", "-n", "r3", "-o",
+                                                 "{tmp}/a.png"]),
+    ("plot_hodograph_no_joint", "plot", None, [DYN, "hodograph", "-o", "{tmp}/h.png"]),
+    ("plot_trace_no_vector", "plot", None, [SLIDER, "trajectories", "--points", "head:99",
+                                            "-o", "{tmp}/a.png"]),
+    ("output_no_folder", "plot", None, [SLIDER, "plan", "-o", "{tmp}/no folder/a.png"]),
+    ("output_no_suffix", "solve", None, [SLIDER, "-o", "{tmp}/a"]),
+    ("energy_no_bodies", "energy", None, [SLIDER]),
+    ("serve_port", "serve", None, [SLIDER, "--port", "70000"]),
 ]
 
 

@@ -44,15 +44,29 @@ def _point_signs(match: re.Match[str]) -> str:
 
 
 def _overwrite(match: re.Match[str]) -> str:
-    what = {"the input model": "входной файл модели",
-            "a table the model reads,": "таблица, которую читает модель,"}.get(
-        match["what"], match["what"])
-    return (f"{match['t']} — это {what} {match['src']}: запись затёрла бы этот файл")
+    what = {"the input model": "входной файл модели {src}",
+            "a table the model reads,": "таблица {src}, которую читает модель"}.get(
+        match["what"], match["what"] + " {src}").format(src=match["src"])
+    return f"{match['t']} — это {what}: запись затёрла бы этот файл"
+
+
+def _suffix(suffix: str) -> str:
+    """A file's suffix as a message shows it (``''`` or ``no suffix``: none)."""
+    return "файл без расширения" if suffix in ("", "no suffix") else f"'{suffix}'"
 
 
 def _animation(match: re.Match[str]) -> str:
-    suffix = ("файл без расширения" if match["s"] == "no suffix" else f"'{match['s']}'")
-    return f"{match['t']}: анимацию нельзя сохранить как {suffix}"
+    return f"{match['t']}: анимацию нельзя сохранить как {_suffix(match['s'])}"
+
+
+def _figure(match: re.Match[str]) -> str:
+    return f"{match['t']}: рисунок нельзя сохранить как {_suffix(match['s'])}"
+
+
+def _unknown_format(match: re.Match[str]) -> str:
+    if not match["s"]:
+        return f"{match['t']}: у имени файла нет расширения, по которому выбирается формат"
+    return f"{match['t']}: неизвестный формат вывода '{match['s']}'"
 
 
 ENTRIES: list[Entry] = [
@@ -105,6 +119,8 @@ ENTRIES: list[Entry] = [
     (r"digits=(?P<v>.+?) is not a number of significant digits",
      "digits: {v} — не число значащих цифр"),
     # output files (output/paths.py, output/tables.py)
+    (r"(?P<t>.+?): unknown output format '(?P<s>[^']*)'", _unknown_format),
+    (r"(?P<t>.+?): cannot save a figure as '(?P<s>[^']*)'", _figure),
     (r"(?P<t>.+?) is a folder, not a file", "{t} — папка, а не файл"),
     (r"give a file name inside it, e\.g\. (?P<ex>.+)",
      "укажите имя файла в этой папке, например {ex}"),

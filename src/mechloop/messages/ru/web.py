@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from mechloop.messages.ru.base import Entry, or_words, quoted
+from mechloop.messages.ru.base import Entry, quoted
 
 #: The formats a request names (``no report format 'odt'``).
 _FORMATS = {"report": "отчёта", "table": "таблицы", "figure": "рисунка"}
@@ -21,6 +21,12 @@ def _request(match: re.Match[str]) -> str:
     if kind == "untyped":
         return "у запроса не указан тип содержимого, а нужен application/json"
     return f"запрос имеет тип {kind}, а не application/json"
+
+
+def _or_list(items: str) -> str:
+    """``.yaml, .yml, .json`` → ``.yaml, .yml или .json``."""
+    head, sep, last = items.rpartition(", ")
+    return f"{head} или {last}" if sep else items
 
 
 def _format(match: re.Match[str]) -> str:
@@ -99,8 +105,9 @@ ENTRIES: list[Entry] = [
      "{p} ведёт за пределы папки (по символической ссылке)"),
     (r"(?P<p>.+?) is not a model file", "{p} — не файл модели"),
     (r"give a file ending in (?P<list>.+)",
-     lambda m: "укажите файл с окончанием " + or_words(m["list"])),
-    (r"give an? (?P<list>.+?) file or a folder", "укажите файл {list} или папку"),
+     lambda m: "укажите файл с окончанием " + _or_list(m["list"])),
+    (r"give an? (?P<list>.+?) file or a folder",
+     lambda m: f"укажите файл {_or_list(m['list'])} либо папку"),
     (r"port (?P<p>\S+) is out of range", "порт {p} вне допустимого диапазона"),
     (r"use 1 to 65535, or leave it out",
      "укажите число от 1 до 65535 или не задавайте порт"),
