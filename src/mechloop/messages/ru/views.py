@@ -72,6 +72,7 @@ def _unknown_format(match: re.Match[str]) -> str:
 ENTRIES: list[Entry] = [
     # the operating system's reasons (inside "cannot write …: <reason>")
     *((re.escape(english), russian) for english, russian in OS_REASONS.items()),
+    (r"copied (?P<a>\d+) of (?P<b>\d+) bytes", "скопировано байт: {a} из {b}"),
     # the command line (cli.py)
     (r"the model has no bodies, so no loads",
      "в модели нет звеньев ('bodies:'), а значит, и нагрузок"),
