@@ -123,6 +123,16 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
     ("synthesis_vary", "check", (EXAMPLES / "four_bar_path_synthesis.yaml").read_text()
      .replace("r1: [50, 150]", "r1: [150, 50]\n    q7: [1, 2]\n    r2.ratio: [1, 2]")
      .replace("r4: [200, 400]", "r4: periodic").replace("{head: 6}", "{head: 9}"), []),
+    # views, output files and the command line (mechloop.messages.ru.views, .web)
+    ("plot_combination_one_name", "plot", None, [SLIDER, "combination", "-n", "r3", "-o",
+                                                 "{tmp}/a.png"]),
+    ("plot_hodograph_no_joint", "plot", None, [DYN, "hodograph", "-o", "{tmp}/h.png"]),
+    ("plot_trace_no_vector", "plot", None, [SLIDER, "trajectories", "--points", "head:99",
+                                            "-o", "{tmp}/a.png"]),
+    ("output_no_folder", "plot", None, [SLIDER, "plan", "-o", "{tmp}/no folder/a.png"]),
+    ("output_no_suffix", "solve", None, [SLIDER, "-o", "{tmp}/a"]),
+    ("energy_no_bodies", "energy", None, [SLIDER]),
+    ("serve_port", "serve", None, [SLIDER, "--port", "70000"]),
 ]
 
 

@@ -30,8 +30,6 @@ AREAS = {
 #: is finished must leave this set).
 UNFINISHED = {
     "gears",
-    "views",
-    "web",
 }
 
 
