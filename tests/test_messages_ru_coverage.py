@@ -32,7 +32,6 @@ UNFINISHED = {
     "model",
     "dynamics",
     "synthesis",
-    "gears",
     "views",
     "web",
 }
