@@ -177,7 +177,7 @@ ENTRIES: list[Entry] = [
      "возьмите межосевое расстояние больше a0·cos α = {v}"),
     (r"the involute function is defined for angles 0 to 90°: a negative or non-finite "
      r"value has no angle", "эвольвентная функция определена для углов от 0 до 90°: "
-     "отрицательному или бесконечному значению угол не соответствует"),
+     "отрицательному или не конечному значению угол не соответствует"),
     (r"check the shifts and the centre distance",
      "проверьте коэффициенты смещения и межосевое расстояние"),
     (r"a circle inside the base circle has no involute",
