@@ -31,6 +31,18 @@ CRANK = (EXAMPLES / "crank_slider.yaml").read_text()
 DYN = str(EXAMPLES / "crank_slider_dynamics.yaml")
 SLIDER = str(EXAMPLES / "crank_slider.yaml")
 DYN_TEXT = (EXAMPLES / "crank_slider_dynamics.yaml").read_text()
+ROCKER = (EXAMPLES / "cams" / "rocker.yaml").read_text()
+CAM_BAD = """\
+cam:
+  follower: {type: oscillating_roller, roller_radius: -1, arm: 0}
+  base_radius: -3
+  segments:
+    - {rise: -20, angle: 0, law: cycloidal}
+    - {dwell: 0}
+    - {table: [[0, 1], [10, 0]]}
+    - {table: [[0, 0], [10, 3], [5, 4]]}
+    - {table: [[0, 0], [10, 0]]}
+"""
 
 #: The user's own text in a message: quoted values and names, key paths and YAML keys
 #: (before a colon), file paths, command-line options, and the names of file formats.
@@ -133,6 +145,18 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
     ("output_no_suffix", "solve", None, [SLIDER, "-o", "{tmp}/a"]),
     ("energy_no_bodies", "energy", None, [SLIDER]),
     ("serve_port", "serve", None, [SLIDER, "--port", "70000"]),
+    ("cam_document", "cam", CAM_BAD, []),
+    ("cam_segment_kinds", "cam", CAM_BAD.replace("{dwell: 0}", "{dwell: 60, law: harmonic}")
+     .replace("{rise: -20, angle: 0, law: cycloidal}", "{rise: 20, return: 3}"), []),
+    ("cam_span", "cam", ROCKER.replace("pressure_angle: 40", "pressure_angle: 100")
+     .replace("{dwell: 60}", "{dwell: 50}"), []),
+    ("cam_rocker_no_base_radius", "cam", ROCKER.replace("pressure_angle: 40",
+                                                        "pressure_angle: 2"), []),
+    ("gear_centre_distance", "gear", None, ["pair", "-m", "2", "-z", "10", "20", "-a", "20"]),
+    ("gear_file_and_options", "gear", None, ["pair", str(EXAMPLES / "gears" / "gear_pair.yaml"),
+                                             "-m", "2"]),
+    ("gear_wolfrom_model", "gear", None, ["planetary", str(EXAMPLES / "gears" / "wolfrom.yaml"),
+                                          "--model", "{tmp}/m.yaml"]),
 ]
 
 
