@@ -26,9 +26,11 @@ AREAS = {
     "views": {"views", "output", "report", "cli"},
     "web": {"web"},
 }
-#: Areas whose Russian is still being written: expected to fail (strictly, so an area that
-#: is finished must leave this set).
-UNFINISHED = {
+#: Texts whose one hole takes a few words the reader cannot see (a validator's own
+#: names): the words it takes.
+CLOSED = {
+    "a {…} needs its angle and law": ("rise", "return"),
+    "a {…} takes no angle or law": ("dwell", "table"),
 }
 
 
@@ -40,6 +42,12 @@ def _texts() -> tuple[MessageText, ...]:
 def english_of(text: MessageText) -> str | None:
     """None when some sample of ``text`` comes out of the catalogue with no English word
     but its sample values; else the Russian of its first sample with what is left."""
+    if text.template() in CLOSED:  # every word it takes
+        for word in CLOSED[text.template()]:
+            russian = translate(text.template().replace("{…}", word))
+            if left := english_left(russian):
+                return f"{russian!r} (English: {', '.join(left)})"
+        return None
     first = None
     for sample, values in text.samples():
         russian = translate(sample)
@@ -57,9 +65,7 @@ def test_every_module_of_the_library_is_in_an_area():
     assert len(_texts()) > 900  # the reader still finds the library's messages
 
 
-@pytest.mark.parametrize("area", [
-    pytest.param(area, marks=pytest.mark.xfail(strict=True, reason="being written"))
-    if area in UNFINISHED else area for area in AREAS])
+@pytest.mark.parametrize("area", AREAS)
 def test_every_message_of_an_area_has_russian(area):
     left = []
     for text in _texts():

@@ -15,6 +15,7 @@ from __future__ import annotations
 import ast
 import builtins
 import itertools
+import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -23,9 +24,11 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "mechloop"
 
 #: Calls whose text arguments are messages: names ending so, and the helpers named here.
 SUFFIXES = ("Error", "Problem")
-HELPERS = {"fail", "_fail", "problem", "_problem", "at", "refuse", "_refuse"}
+HELPERS = {"fail", "_fail", "problem", "_problem", "at", "refuse", "_refuse", "_located",
+           "located"}
 #: Python's own errors: a program's mistake, not the user's (the command line never prints
-#: them as messages).
+#: them as messages) — but a ``ValueError`` in a module of pydantic models is a validator's
+#: message, which the user reads as a schema problem.
 BUILTIN = {name for name in dir(builtins) if name.endswith("Error")}
 #: Keyword arguments that hold a message or a fix.
 KEYWORDS = {"message", "hint", "fix", "why", "reason"}
@@ -33,9 +36,13 @@ KEYWORDS = {"message", "hint", "fix", "why", "reason"}
 SKIP = {"messages", "errors.py"}
 
 #: Sample values tried for a ``{value}``: a name, a number, a key path, a sentence.
-SAMPLES = ("x", "1", "r1", "1.5", "a.b", "x y", "length", "mm")
+SAMPLES = ("x", "1", "r1", "1.5", "a.b", "x y", "length", "mm", "m", "a.b or c.b")
 #: At most this many combinations of samples are tried for one text.
 MAX_TRIES = 64
+
+
+#: A hole of a ``{value!r}``: the value in quotes, as ``repr`` writes a name.
+REPR = "\x00!r"
 
 
 @dataclass(frozen=True)
@@ -55,10 +62,11 @@ class MessageText:
 
     @property
     def holes(self) -> int:
-        return sum(part is None for part in self.parts)
+        return sum(_is_hole(part) for part in self.parts)
 
     def template(self) -> str:
-        return "".join("{…}" if part is None else part for part in self.parts)
+        return "".join("{…!r}" if part == REPR else "{…}" if part is None else part
+                       for part in self.parts)
 
     def samples(self) -> Iterator[tuple[str, tuple[str, ...]]]:
         """The text with sample values in its holes, and the values used: first the same
@@ -74,7 +82,20 @@ class MessageText:
                 continue
             seen.add(values)
             it = iter(values)
-            yield "".join(next(it) if part is None else part for part in self.parts), values
+            yield "".join(_repr(next(it)) if part == REPR else next(it) if part is None
+                          else part for part in self.parts), values
+
+
+def _repr(sample: str) -> str:
+    """A sample as ``{value!r}`` prints it: a number bare, a name in quotes."""
+    try:
+        return repr(float(sample)) if "." in sample else repr(int(sample))
+    except ValueError:
+        return repr(sample)
+
+
+def _is_hole(part: str | None) -> bool:
+    return part is None or part == REPR
 
 
 def _name(func: ast.expr) -> str:
@@ -85,9 +106,10 @@ def _name(func: ast.expr) -> str:
     return ""
 
 
-def _is_message_call(node: ast.Call) -> bool:
+def _is_message_call(node: ast.Call, validators: bool) -> bool:
     name = _name(node.func)
-    return (name.endswith(SUFFIXES) or name in HELPERS) and name not in BUILTIN
+    builtin = name in BUILTIN and not (validators and name == "ValueError")
+    return (name.endswith(SUFFIXES) or name in HELPERS) and not builtin
 
 
 def _texts(node: ast.expr, scope: ast.AST | None, depth: int = 0
@@ -109,7 +131,8 @@ def _texts(node: ast.expr, scope: ast.AST | None, depth: int = 0
                 if nested and len(nested) * len(parts) <= 16:
                     parts = [p + n for p in parts for n in nested]
                 else:
-                    parts = [(*p, None) for p in parts]
+                    hole = REPR if value.conversion == ord("r") else None
+                    parts = [(*p, hole) for p in parts]
         return parts
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
         left, right = _texts(node.left, scope, depth + 1), _texts(node.right, scope, depth + 1)
@@ -134,26 +157,30 @@ def _texts(node: ast.expr, scope: ast.AST | None, depth: int = 0
 def _merged(parts: tuple[str | None, ...]) -> tuple[str | None, ...]:
     out: list[str | None] = []
     for part in parts:
-        if part is not None and out and out[-1] is not None:
+        if not _is_hole(part) and out and not _is_hole(out[-1]):
             out[-1] += part
-        elif part != "":
+        elif _is_hole(part) or part != "":
             out.append(part)
     return tuple(out)
 
 
 def _is_message(parts: tuple[str | None, ...]) -> bool:
     """A sentence a user reads: some words of letters, not a bare name or format."""
-    text = "".join(p for p in parts if p is not None)
-    return sum(w.isalpha() for w in text.split()) >= 2
+    text = "".join(p for p in parts if not _is_hole(p))
+    if len(parts) == 1 and re.fullmatch(r"\w+", text):  # a key or an error's type name
+        return False
+    return any(len(w) >= 3 for w in re.findall(r"[A-Za-z]+", text))
 
 
-def _calls(node: ast.AST, scope: ast.AST | None) -> Iterator[tuple[ast.Call, ast.AST | None]]:
-    """The message calls under ``node`` with the innermost function around each."""
+def _calls(node: ast.AST, scope: ast.AST | None, validators: bool
+           ) -> Iterator[tuple[ast.Call, ast.AST | None]]:
+    """The message calls under ``node`` with the innermost function around each
+    (``validators``: the module defines pydantic models)."""
     for child in ast.iter_child_nodes(node):
         inner = child if isinstance(child, ast.FunctionDef | ast.AsyncFunctionDef) else scope
-        if isinstance(child, ast.Call) and _is_message_call(child):
+        if isinstance(child, ast.Call) and _is_message_call(child, validators):
             yield child, scope
-        yield from _calls(child, inner)
+        yield from _calls(child, inner, validators)
 
 
 def message_texts(root: Path = SOURCE) -> list[MessageText]:
@@ -163,8 +190,9 @@ def message_texts(root: Path = SOURCE) -> list[MessageText]:
         relative = path.relative_to(root).as_posix()
         if relative.split("/")[0] in SKIP:
             continue
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        for node, scope in _calls(tree, None):
+        source = path.read_text(encoding="utf-8")
+        tree = ast.parse(source)
+        for node, scope in _calls(tree, None, "pydantic" in source):
             args = [*node.args, *(k.value for k in node.keywords if k.arg in KEYWORDS)]
             for arg in args:
                 for parts in _texts(arg, scope):
