@@ -213,6 +213,26 @@ def test_a_commands_lang_overrides_the_environment(tmp_path, command):
             "положение" in (tmp_path / "p.svg").read_text()
 
 
+USAGE = [["solve", "--nosuch", "x"], ["solve"], ["nosuchcmd"],
+         ["solve", SLIDER, "--digits", "abc"], ["solve", SLIDER, "-o"],
+         ["solve", SLIDER, "extra1", "extra2"], ["report", DYN],
+         ["solve", SLIDER, "--force=3"], ["synthesize", SLIDER, "--method", "zz"],
+         ["plot", SLIDER, "plan", "-p", "x", "-o", "a.png"]]
+
+
+@pytest.mark.parametrize("args", USAGE, ids=lambda a: "-".join(a[:1] + a[2:3]))
+def test_usage_errors_in_russian(args):
+    """Click's own usage errors (printed by Typer before a command runs): Russian under
+    ``MECHLOOP_LANG=ru``, as before without it."""
+    code, english = _run(args, None)
+    code_ru, russian = _run(args, "ru")
+    assert code == code_ru == 2
+    assert "Error" in english and ("Usage:" in english or "Option" in english)
+    assert "Ошибка" in russian and "Error" not in russian
+    panel = " ".join(line.strip("│ ") for line in russian.splitlines() if "│" in line)
+    assert panel and english_left(panel) == [], panel
+
+
 def test_english_is_the_errors_own_text_byte_for_byte():
     errors = [ModelError([Problem(("vectors", 2, "r"), "'20 kg' is not a length",
                                   "use a length unit: m, cm, mm", 7)], "m.yaml"),

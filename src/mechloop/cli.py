@@ -48,7 +48,13 @@ class _Command(_NoFlagType, TyperCommand):
 
 
 class _Group(_NoFlagType, TyperGroup):
-    pass
+    def main(self, *args: Any, **kwargs: Any) -> Any:
+        """Run the command line, its usage errors in the language of the messages."""
+        if message_language() == "ru":  # Typer's printer is imported only then
+            from mechloop.messages.usage import install
+
+            install()
+        return super().main(*args, **kwargs)
 
 
 app = typer.Typer(

@@ -25,7 +25,7 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "mechloop"
 #: Calls whose text arguments are messages: names ending so, and the helpers named here.
 SUFFIXES = ("Error", "Problem")
 HELPERS = {"fail", "_fail", "problem", "_problem", "at", "refuse", "_refuse", "_located",
-           "located"}
+           "located", "BadParameter"}
 #: Python's own errors: a program's mistake, not the user's (the command line never prints
 #: them as messages) — but a ``ValueError`` in a module of pydantic models is a validator's
 #: message, which the user reads as a schema problem.
