@@ -206,6 +206,12 @@ def test_an_alias_a_syntax_error_and_the_size_limits(client, monkeypatch):
     bad = client.post("/api/edit", json={"text": "a: [1,\nb: 2\n", "keys": ["a"],
                                          "value": 1})
     assert bad.status_code == 422 and bad.json()["problems"][0]["line"] is not None
+    twice = client.post("/api/edit", json={"text": "a: 1\nb: 2\na: 3\n", "keys": ["b"],
+                                           "value": 1})
+    assert twice.status_code == 422 and twice.json()["problems"][0]["line"] == 3
+    for text in ("", "- 1\n- 2\n"):
+        top = client.post("/api/edit", json={"text": text, "keys": ["a"], "value": 1})
+        assert top.status_code == 422 and "model mapping" in top.json()["error"]
     big = client.post("/api/edit", content=b"x" * (MAX_BODY_BYTES + 1),
                       headers={"content-type": "application/json"})
     assert big.status_code == 413
@@ -244,7 +250,7 @@ _VALUES = st.recursive(_SCALARS, lambda inner: st.lists(inner, max_size=3)
                                          inner, max_size=3), max_leaves=6)
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(leaf=st.sampled_from(_LEAVES), value=_VALUES)
 def test_round_trip_edit_parse_read_back(leaf, value):
     name, path = leaf
@@ -254,3 +260,64 @@ def test_round_trip_edit_parse_read_back(leaf, value):
     _get(expected, path[:-1])[path[-1]] = value
     assert yaml.safe_load(changed) == expected
     _other_lines_kept(text, changed, _line_of(text, path))
+
+
+def _collections(data, path=()):
+    """Every key path of a mapping or a list in ``data`` (the top level included)."""
+    if isinstance(data, dict | list):
+        yield path
+        items = data.items() if isinstance(data, dict) else enumerate(data)
+        for key, value in items:
+            yield from _collections(value, (*path, key))
+
+
+_COLLECTIONS = [(name, path) for name, text in _MODELS.items()
+                for path in _collections(yaml.safe_load(text))]
+_ENTRIES = [(name, path) for name, text in _MODELS.items()
+            for path in _collections(yaml.safe_load(text)) if path] + _LEAVES
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(place=st.sampled_from(_COLLECTIONS), value=_VALUES)
+def test_round_trip_a_new_entry_is_added_and_nothing_else_changes(place, value):
+    name, path = place
+    text = _MODELS[name]
+    expected = copy.deepcopy(yaml.safe_load(text))
+    target = _get(expected, path)
+    key = "zz_new" if isinstance(target, dict) else len(target)
+    changed = edit_text(text, [*path, key], value=value, file=name)
+    if isinstance(target, dict):
+        target[key] = value
+    else:
+        target.append(value)
+    assert yaml.safe_load(changed) == expected
+    kept = [line for line in changed.splitlines() if line not in text.splitlines()]
+    assert len(kept) <= 1  # one new line, or the one line of a flow collection changed
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(place=st.sampled_from(_ENTRIES))
+def test_round_trip_an_entry_is_deleted_and_nothing_else_changes(place):
+    name, path = place
+    text = _MODELS[name]
+    expected = copy.deepcopy(yaml.safe_load(text))
+    del _get(expected, path[:-1])[path[-1]]
+    changed = edit_text(text, list(path), delete=True, file=name)
+    assert yaml.safe_load(changed) == expected
+    lines = _line_of(text, path)
+    if not isinstance(path[-1], int):  # a mapping's entry starts at its key
+        lines |= set(range(_key_line(text, path), max(lines) + 1))
+    comments = [line for i, line in enumerate(text.splitlines())
+                if line.lstrip().startswith("#") and i not in lines]
+    assert [line for line in changed.splitlines() if line.lstrip().startswith("#")] \
+        == comments  # every comment line outside the entry kept, in order
+
+
+def _key_line(text: str, path) -> int:
+    node = yaml.compose(text)
+    for key in path[:-1]:
+        node = next(v for k, v in node.value if yaml.safe_load(k.value) == key
+                    or k.value == str(key)) if isinstance(node, yaml.MappingNode) \
+            else node.value[key]
+    return next(k for k, _ in node.value if yaml.safe_load(k.value) == path[-1]
+                or k.value == str(path[-1])).start_mark.line

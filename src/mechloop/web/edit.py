@@ -33,7 +33,7 @@ import yaml
 
 from mechloop.errors import ModelError, format_path
 from mechloop.model.document import _Loader, parse_document
-from mechloop.model.limits import MAX_DEPTH, MAX_DOCUMENT_BYTES
+from mechloop.model.limits import MAX_DEPTH, MAX_DOCUMENT_BYTES, check_events
 from mechloop.web.safety import WebError
 
 #: Longest key path of one edit.
@@ -148,12 +148,17 @@ class _Edit:
     def __init__(self, text: str, file: str):
         self.text = text
         self.file = file
-        parse_document(text, file)  # the limits and the located syntax errors
+        check_events(text, file)  # the limits, before anything is composed
         self.loader = _Loader(text)
         try:
             self.root = self.loader.get_single_node()
+        except yaml.YAMLError:
+            parse_document(text, file)  # raises the syntax error located at its line
+            raise
         finally:
             self.loader.dispose()
+        if not isinstance(self.root, yaml.MappingNode):
+            parse_document(text, file)  # raises: the text holds no model mapping
         self.as_json = file.lower().endswith(".json") or text.lstrip().startswith("{")
 
     def walk(self, path: list[Key]) -> tuple[yaml.Node, _Step | None]:
@@ -258,10 +263,13 @@ class _Edit:
         return splice(self.text, start, end, render(key, as_json=self.as_json))
 
 
-def _read_back(text: str, file: str, path: list[Key]) -> tuple[bool, Any]:
+def _read_back(text: str, file: str, path: list[Key], original: str) -> tuple[bool, Any]:
+    """(whether ``path`` is in the changed ``text``, the value there); an ``original`` text
+    that does not read (a key twice) raises its own located error."""
     try:
         data, _ = parse_document(text, file)
     except ModelError:
+        parse_document(original, file)
         return False, None
     for key in path:
         if isinstance(data, dict):
@@ -318,8 +326,6 @@ def edit_text(text: str, path: Any, *, value: Any = None, delete: bool = False,
     value = plain(value)
     _check_value(value)
     document = _Edit(text, file)
-    if document.root is None:
-        raise WebError("the text is empty", "open a model first", 404)
     node, step = document.walk(path)
     where = format_path(tuple(path))
     if key is not None:
@@ -333,7 +339,7 @@ def edit_text(text: str, path: Any, *, value: Any = None, delete: bool = False,
                if k is not step.key_node):
             raise WebError(f"the key {key!r} is there already", "pick another key", 409)
         changed, path = document.rename(step, key), [*path[:-1], key]
-        found, _ = _read_back(changed, file, path)
+        found, _ = _read_back(changed, file, path, text)
         if not found:
             raise WebError(f"renaming {where} would not read back", "rename it in the text",
                            409)
@@ -341,14 +347,14 @@ def edit_text(text: str, path: Any, *, value: Any = None, delete: bool = False,
         if node is None:
             raise WebError(f"no key {where!r} to delete", "delete an existing entry", 404)
         changed = document.delete(node, step)
-        found, _ = _read_back(changed, file, path[:-1])
+        found, _ = _read_back(changed, file, path[:-1], text)
         if not found:
             raise WebError(f"deleting {where} would not read back", "delete it in the text",
                            409)
     else:
         changed = document.replace(node, value) if node is not None \
             else document.add(step, path[-1], value)
-        found, back = _read_back(changed, file, path)
+        found, back = _read_back(changed, file, path, text)
         if not found or not _same(back, value):
             raise WebError(f"the value at {where} would read back as {back!r}, not "
                            f"{value!r}", "change it in the text", 409)

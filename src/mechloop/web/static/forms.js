@@ -94,13 +94,7 @@
     if (asked !== forms.asked) return;
     forms.stale = !response.ok;
     if (response.ok) forms.data = answer.data;
-    if (formFocused()) return;  // not under the user's typing: drawn when it leaves
     draw();
-  }
-
-  function formFocused() {
-    const active = document.activeElement;
-    return active && $("forms").contains(active) && active.tagName !== "BUTTON";
   }
 
   // ---------------------------------------------------------------- small builders
@@ -147,6 +141,7 @@
       spellcheck: "false", size: opts.size || 8,
       dataset: { keys: JSON.stringify(keys) } }, parent);
     input.value = shown(value);
+    input.dataset.shown = input.value;
     if (opts.title) input.title = t(opts.title);
     input.addEventListener("change", () => {
       const text = input.value;
@@ -533,11 +528,23 @@
     panel.hidden = yaml;
     if (yaml) return;
     const scroll = panel.scrollTop;
+    // the field that has the focus (the user tabbed on after a change) keeps it
+    const active = document.activeElement;
+    const focused = active && panel.contains(active) && active.dataset.keys
+      ? [active.tagName, active.className, active.dataset.keys] : null;
+    const typed = focused && active.tagName === "INPUT" && active.dataset.shown !== undefined
+      && active.value !== active.dataset.shown ? active.value : null;  // not yet changed
     panel.textContent = "";
     if (forms.stale) node("p", { class: "form-note break" }, panel, t("formStale"));
     if (!forms.data) return;
     DRAW[forms.tab](panel);
     panel.scrollTop = scroll;
+    if (focused) {
+      const again = [...panel.querySelectorAll("[data-keys]")].find((e) =>
+        e.tagName === focused[0] && e.className === focused[1] && e.dataset.keys === focused[2]);
+      if (again && typed !== null) again.value = typed;
+      if (again) again.focus();
+    }
     panel.dataset.drawn = String(Number(panel.dataset.drawn || 0) + 1);
   }
 
@@ -553,9 +560,6 @@
         "data-i18n": word }, tabs, t(word));
       b.addEventListener("click", () => showTab(tab));
     }
-    $("forms").addEventListener("focusout", () => setTimeout(() => {
-      if (!formFocused() && !forms.busy) draw();
-    }, 0));
     draw();
   });
 
