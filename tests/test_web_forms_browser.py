@@ -52,6 +52,13 @@ def _type(driver, keys: str, value: str) -> None:
     box.send_keys(value, Keys.TAB)
 
 
+def _settled(driver) -> None:
+    """Wait for the page to have solved its current text (before a screenshot)."""
+    _wait(driver, lambda d: d.execute_script(
+        "return document.body.dataset.solved === String(state.version)"
+        " && document.getElementById('status').className === 'ok'"), "not solved")
+
+
 def _changed(driver, old: str) -> str:
     _wait(driver, lambda d: _text(d) != old, "the form did not change the text")
     return _text(driver)
@@ -97,6 +104,7 @@ def test_a_length_in_the_form_moves_the_diagram_and_the_plot(browser, server):  
     _tab(browser, "vectors")
     _wait(browser, lambda d: _field(d, '["vectors",1,"name"]').get_property("value")
           == "handle", "the form did not follow the YAML")
+    _settled(browser)
     browser.save_screenshot(str(SHOTS / "web-forms-vectors.png"))
 
 
@@ -122,6 +130,7 @@ def test_an_argument_row_and_a_csv_import(browser, server, tmp_path):  # noqa: F
     browser.find_element(By.ID, "lang-ru").click()
     _wait(browser, lambda d: "Время модели" in d.find_element(By.ID, "forms").text,
           "the form is not in Russian")
+    _settled(browser)
     browser.save_screenshot(str(SHOTS / "web-forms-ru.png"))
     browser.find_element(By.ID, "lang-en").click()
 
@@ -155,6 +164,7 @@ def test_dragging_a_handle_changes_a_length(browser, server):  # noqa: F811
     assert text == SLIDER.replace("  1: {r: 0.05,", f"  1: {{r: {r1:g},")
     _wait(browser, lambda d: _solved(d) != solved and math.isclose(
         _vector(d, 1)[2] - _vector(d, 1)[0], r1, rel_tol=1e-12), "the diagram did not follow")
+    _settled(browser)
     browser.save_screenshot(str(SHOTS / "web-drag.png"))
     if browser.execute_script("return !!window.mechloopEditor"):  # one undo: the whole drag
         browser.execute_script("mechloopEditor.undo()")

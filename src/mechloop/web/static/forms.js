@@ -25,7 +25,8 @@
   const VARIANTS = { 1: "formVariant_1", 2: "formVariant_2", auto: "formVariant_auto" };
   const LOADS = { body: "formLoad_body", at: "formLoad_at", value: "formLoad_value",
     angle: "formLoad_angle", along: "formLoad_along", name: "formLoad_name" };
-  const forms = { data: null, tab: "yaml", pending: null, asked: 0, busy: 0, stale: false };
+  const forms = { data: null, tab: "yaml", pending: null, asked: 0, stale: false,
+    queue: Promise.resolve(null) };
 
   // ---------------------------------------------------------------- the text
   function modelText() {
@@ -62,16 +63,18 @@
     return answer.text;
   }
 
-  async function edit(keys, change) {
-    forms.busy += 1;
-    try {
+  // Edits one after another: each starts from the text the one before it left.
+  function edit(keys, change) {
+    forms.queue = forms.queue.then(async () => {
       const text = await editText(keys, change);
       if (text !== null) setModelText(text, true);
-      return text;
-    } finally {
-      forms.busy -= 1;
       document.body.dataset.formEdits = String(Number(document.body.dataset.formEdits || 0) + 1);
-    }
+      return text;
+    }).catch((error) => {  // said, and the next edit still runs
+      showProblem(t("editFailed", { error: String(error) }));
+      return null;
+    });
+    return forms.queue;
   }
 
   function showProblem(text) {
@@ -468,9 +471,11 @@
       edit(["bodies", used.length ? used[used.length - 1] + 1 : 1],
         { value: { vectors: [vector] } });
     });
-    if (data.gravity !== undefined) {
-      const g = section(panel, "formGravity");
-      tree(g, ["gravity"], data.gravity || {});
+    // the other sections of the masses panel, as they are written
+    for (const [name, word] of [["joints", "formJoints"], ["gravity", "formGravity"],
+      ["friction", "formFriction"]]) {
+      if (data[name] && typeof data[name] === "object") tree(section(panel, word), [name],
+        data[name]);
     }
   }
 
@@ -501,6 +506,10 @@
           : { body: first, value: 0 };
         edit([name, (data[name] || []).length], { value });
       });
+    }
+    for (const [name, word] of [["springs", "formSprings"], ["dampers", "formDampers"]]) {
+      if (Array.isArray(data[name]) && data[name].length) tree(section(panel, word), [name],
+        data[name]);
     }
   }
 
