@@ -3,7 +3,8 @@ fixtures of ``test_web_browser.py``: one server and one browser for this module)
 changed in the vectors form changes the YAML text in place (its comments kept), the
 diagram and a plotted value to the numbers the API gives; an argument table row and a
 CSV import; a YAML edit shows in the forms; a drag of a handle on the diagram writes a
-rounded length into the text and the diagram follows; one undo step takes it back."""
+rounded length (a ground point: length and angle) into the text and the diagram
+follows; one undo step takes it back."""
 
 from __future__ import annotations
 
@@ -169,3 +170,30 @@ def test_dragging_a_handle_changes_a_length(browser, server):  # noqa: F811
     if browser.execute_script("return !!window.mechloopEditor"):  # one undo: the whole drag
         browser.execute_script("mechloopEditor.undo()")
         _wait(browser, lambda d: _text(d) == SLIDER, "one undo did not take the drag back")
+
+
+def test_dragging_a_ground_point_sets_its_length_and_angle(browser, server):  # noqa: F811
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml")
+    _tab(browser, "vectors")
+    handle = _wait(browser, lambda d: d.find_elements(
+        By.CSS_SELECTOR, "#diagram circle.drag-handle.ground[data-vector='4']"),
+        "no ground handle")[0]
+    tail_x, tail_y, head_x, head_y = _vector(browser, 4)  # the offset B -> O, 0.01 m up
+    scale = browser.execute_script(
+        "const s = state.solution.diagram; const svg = document.getElementById('diagram');"
+        "return planeMap(s.limits, Number(svg.getAttribute('width')),"
+        " Number(svg.getAttribute('height')), 16).scale"
+        " * svg.getBoundingClientRect().width / 560;")
+    solved = _solved(browser)
+    ActionChains(browser, duration=50).click_and_hold(handle).move_by_offset(
+        0, -round(0.01 * scale)).pause(0.5).release().perform()  # 1 cm higher
+    _wait(browser, lambda d: d.execute_script("return document.body.dataset.dragged || ''")
+          .startswith("4:"), "the drag wrote nothing")
+    data = _post(base, "/api/data", {"text": _text(browser)})["data"]["vectors"]["4"]
+    dx, dy = head_x - tail_x, head_y + 0.01 - tail_y  # the pointer's place, m
+    assert data["r"] == pytest.approx(math.hypot(dx, dy), abs=0.002)
+    assert data["a"] == pytest.approx(math.degrees(math.atan2(dy, dx)), abs=5)
+    assert data["r"] == float(f"{data['r']:.3g}") and data["a"] == round(data["a"], 1)
+    assert _text(browser).count("\n") == SLIDER.count("\n")  # in place
+    _wait(browser, lambda d: _solved(d) != solved, "the diagram did not follow")
