@@ -119,6 +119,7 @@ function renderProblems() {
 let pending = null;
 function edited() {
   state.version += 1;
+  if (window.mechloopForms) window.mechloopForms.changed();  // forms.js
   renderGutter();
   clearTimeout(pending);
   pending = setTimeout(check, 350);
@@ -277,6 +278,7 @@ function render() {
   if (!solution) return;
   const k = state.position;
   drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
+  if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
   drawPlot($("plot"), solution,
     plotted().map((name) => solution.columns.find((c) => c.name === name)), k);
   let label = t("position", { k, n: solution.count - 1 });
@@ -700,6 +702,7 @@ function setLanguage(lang) {
     render();
   }
   renderStructure();
+  if (window.mechloopForms) window.mechloopForms.draw();
 }
 
 // ------------------------------------------------------------------ start
