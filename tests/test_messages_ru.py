@@ -30,6 +30,19 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 CRANK = (EXAMPLES / "crank_slider.yaml").read_text()
 DYN = str(EXAMPLES / "crank_slider_dynamics.yaml")
 SLIDER = str(EXAMPLES / "crank_slider.yaml")
+DYN_TEXT = (EXAMPLES / "crank_slider_dynamics.yaml").read_text()
+ROCKER = (EXAMPLES / "cams" / "rocker.yaml").read_text()
+CAM_BAD = """\
+cam:
+  follower: {type: oscillating_roller, roller_radius: -1, arm: 0}
+  base_radius: -3
+  segments:
+    - {rise: -20, angle: 0, law: cycloidal}
+    - {dwell: 0}
+    - {table: [[0, 1], [10, 0]]}
+    - {table: [[0, 0], [10, 3], [5, 4]]}
+    - {table: [[0, 0], [10, 0]]}
+"""
 
 #: The user's own text in a message: quoted values and names, key paths and YAML keys
 #: (before a colon), file paths, command-line options, and the names of file formats.
@@ -103,6 +116,47 @@ CORPUS: list[tuple[str, str, str | bytes | None, list[str]]] = [
     ("report_format", "report", None, [DYN, "-o", "{tmp}/r.txt"]),
     ("report_parameter", "report", None, [DYN, "-o", "{tmp}/r.pdf", "--parameter", "q7"]),
     ("report_position", "report", None, [DYN, "-o", "{tmp}/r.pdf", "--position", "999"]),
+    ("new_unknown_example", "new", None, ["nosuch_example_zz"]),
+    ("new_missing_folder", "new", None, ["crank_slider", "{tmp}/no/such/x.yaml"]),
+    ("sweep_bad_range", "sweep", None, [SLIDER, "--vary", "time.rpm=1000:4000", "--collect",
+                                        "r3:max"]),
+    # the force analysis's model (mechloop.dynamics): bodies, joints, friction
+    ("joint_one_body", "solve", DYN_TEXT.replace("bodies: [0, 3], along", "bodies: [3, 3], along"),
+     []),
+    ("body_unknown_vector", "solve", DYN_TEXT.replace(
+        "center: {tail: 3}}", "center: {tail: 3}}\n  4: {vectors: [9], mass: 1}"), []),
+    ("friction_no_radius", "solve", DYN_TEXT.replace("at: {tail: 1}}",
+                                                     "at: {tail: 1}, friction: 0.1}"), []),
+    # the model's area: a group file, its synthesis task, a vector model's synthesis task
+    ("groups_unit_and_order", "check", (EXAMPLES / "four_bar_groups.yaml").read_text()
+     .replace("at: [A, C]", "at: [A, P]").replace("length: 100,", "length: 100 kg,"), []),
+    ("groups_unknown_dimension", "check", (EXAMPLES / "four_bar_groups_synthesis.yaml")
+     .read_text().replace("points.P.distance:", "points.P.distanse:"), []),
+    ("synthesis_vary", "check", (EXAMPLES / "four_bar_path_synthesis.yaml").read_text()
+     .replace("r1: [50, 150]", "r1: [150, 50]\n    q7: [1, 2]\n    r2.ratio: [1, 2]")
+     .replace("r4: [200, 400]", "r4: periodic").replace("{head: 6}", "{head: 9}"), []),
+    # views, output files and the command line (mechloop.messages.ru.views, .web)
+    ("plot_combination_one_name", "plot", None, [SLIDER, "combination", "-n", "r3", "-o",
+                                                 "{tmp}/a.png"]),
+    ("plot_hodograph_no_joint", "plot", None, [DYN, "hodograph", "-o", "{tmp}/h.png"]),
+    ("plot_trace_no_vector", "plot", None, [SLIDER, "trajectories", "--points", "head:99",
+                                            "-o", "{tmp}/a.png"]),
+    ("output_no_folder", "plot", None, [SLIDER, "plan", "-o", "{tmp}/no folder/a.png"]),
+    ("output_no_suffix", "solve", None, [SLIDER, "-o", "{tmp}/a"]),
+    ("energy_no_bodies", "energy", None, [SLIDER]),
+    ("serve_port", "serve", None, [SLIDER, "--port", "70000"]),
+    ("cam_document", "cam", CAM_BAD, []),
+    ("cam_segment_kinds", "cam", CAM_BAD.replace("{dwell: 0}", "{dwell: 60, law: harmonic}")
+     .replace("{rise: -20, angle: 0, law: cycloidal}", "{rise: 20, return: 3}"), []),
+    ("cam_span", "cam", ROCKER.replace("pressure_angle: 40", "pressure_angle: 100")
+     .replace("{dwell: 60}", "{dwell: 50}"), []),
+    ("cam_rocker_no_base_radius", "cam", ROCKER.replace("pressure_angle: 40",
+                                                        "pressure_angle: 2"), []),
+    ("gear_centre_distance", "gear", None, ["pair", "-m", "2", "-z", "10", "20", "-a", "20"]),
+    ("gear_file_and_options", "gear", None, ["pair", str(EXAMPLES / "gears" / "gear_pair.yaml"),
+                                             "-m", "2"]),
+    ("gear_wolfrom_model", "gear", None, ["planetary", str(EXAMPLES / "gears" / "wolfrom.yaml"),
+                                          "--model", "{tmp}/m.yaml"]),
 ]
 
 
@@ -141,6 +195,42 @@ def test_a_commands_lang_ru_reaches_its_errors(tmp_path, command):
     _, russian = _run([*args, "--lang", "ru"], None)
     assert english.startswith("error: ") and russian.startswith("ошибка: ")
     assert english_left(russian) == []
+
+
+@pytest.mark.parametrize("command", ["report", "plot"])
+def test_a_commands_lang_overrides_the_environment(tmp_path, command):
+    """``--lang en`` under ``MECHLOOP_LANG=ru`` prints English; with no ``--lang`` the
+    environment's language is the command's (its messages and, for plot, its figure)."""
+    args = ([command, DYN, "-o", str(tmp_path / "r.txt")] if command == "report" else
+            [command, SLIDER, "spline", "-o", str(tmp_path / "a.png")])
+    _, english = _run([*args, "--lang", "en"], "ru")
+    _, russian = _run(args, "ru")
+    assert english.startswith("error: ") and russian.startswith("ошибка: ")
+    if command == "plot":
+        code, text = _run([command, SLIDER, "plan", "-o", str(tmp_path / "p.svg")], "ru")
+        assert code == 0 and "записан файл" in text
+        assert "Положение" in (tmp_path / "p.svg").read_text() or \
+            "положение" in (tmp_path / "p.svg").read_text()
+
+
+USAGE = [["solve", "--nosuch", "x"], ["solve"], ["nosuchcmd"],
+         ["solve", SLIDER, "--digits", "abc"], ["solve", SLIDER, "-o"],
+         ["solve", SLIDER, "extra1", "extra2"], ["report", DYN],
+         ["solve", SLIDER, "--force=3"], ["synthesize", SLIDER, "--method", "zz"],
+         ["plot", SLIDER, "plan", "-p", "x", "-o", "a.png"]]
+
+
+@pytest.mark.parametrize("args", USAGE, ids=lambda a: "-".join(a[:1] + a[2:3]))
+def test_usage_errors_in_russian(args):
+    """Click's own usage errors (printed by Typer before a command runs): Russian under
+    ``MECHLOOP_LANG=ru``, as before without it."""
+    code, english = _run(args, None)
+    code_ru, russian = _run(args, "ru")
+    assert code == code_ru == 2
+    assert "Error" in english and ("Usage:" in english or "Option" in english)
+    assert "Ошибка" in russian and "Error" not in russian
+    panel = " ".join(line.strip("│ ") for line in russian.splitlines() if "│" in line)
+    assert panel and english_left(panel) == [], panel
 
 
 def test_english_is_the_errors_own_text_byte_for_byte():

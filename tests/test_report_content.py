@@ -35,7 +35,15 @@ SHEETS = EXAMPLES / "course_project_sheets.yaml"
 
 KINEMATIC_KEYS = ["s_parameters", "s_formula", "s_increment", "s_angles", "s_dependence"]
 DYNAMIC_KEYS = ["s_masses", "s_reduced", "s_reactions", "s_centres"]
-NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e-?\d+)?")
+#: A printed number: English ``-1.5e-05``, Russian ``-1,5·10⁻⁵`` (the decimal comma).
+NUMBER = re.compile(r"-?\d+(?:[.,]\d+)?(?:e-?\d+|·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?")
+_DIGITS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+
+
+def plain(text: str) -> str:
+    """A printed number as Python writes it (``1,5·10⁻⁵`` -> ``1.5e-5``)."""
+    mantissa, _, power = text.partition("·10")
+    return mantissa.replace(",", ".") + (f"e{power.translate(_DIGITS)}" if power else "")
 
 
 def _title(lang: str, key: str) -> str:
@@ -103,6 +111,7 @@ def _close(text: str, expected: float, digits: int | None = None) -> None:
     """``text`` (a printed number) equals ``expected`` within half a unit of its last
     printed digit (plus a relative 1e-12); with ``digits``, of its last significant
     digit too (-10270 to 4 digits)."""
+    text = plain(text)
     value = float(text)
     mantissa = text.split("e")[0]
     decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
@@ -428,7 +437,7 @@ def test_a_break_between_two_positions_is_explained_with_its_angles(lang):
     [text] = [p.text for p in document.sections[-1].blocks
               if p.text.startswith(("Contour 1 (Pl4)", "Контур 1 (Пл4)"))]
     assert f"{found.after} {'and' if lang == 'en' else 'и'} {found.after + 1}" in text
-    numbers = re.findall(r"(-?\d+(?:\.\d+)?)°", text)
+    numbers = re.findall(r"(-?\d+(?:[.,]\d+)?)°", text)
     expected = np.degrees([*found.at, found.start, found.stop])
     assert len(numbers) == 4
     for printed, value in zip(numbers, expected, strict=True):

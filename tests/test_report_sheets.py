@@ -22,6 +22,7 @@ from mechloop.model.project import project_documents
 from mechloop.report.document import Document, FigureItem, Table, TitlePage, caption, numbered
 from mechloop.report.sheets import sheet_section
 from mechloop.views.cam_sheet import cam_sheet
+from mechloop.views.decimal_mark import localized
 from mechloop.views.gear_sheet import gear_sheet, load_gears
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -121,8 +122,10 @@ def test_russian_sheet_has_no_english_words(name):
     found = set().union(*(latin_words(t) for t in sheet_texts(sheet, skip=design.name)))
     assert not found, f"English in the Russian sheet: {sorted(found)}"
     english = cam_sheet(design, "en")  # the same symbols and numbers in both languages
-    assert [r[1:3] for r in english.tables[0].rows if r[1]] == \
+    assert [(r[1], localized(r[2], "ru")) for r in english.tables[0].rows if r[1]] == \
         [r[1:3] for r in sheet.tables[0].rows if r[1]]
+    decimals = [c for r in sheet.tables[0].rows for c in r if re.fullmatch(r"\d+[.,]\d+", c)]
+    assert decimals and all("," in c for c in decimals)  # the decimal comma (GOST 2.105)
     assert [r[0] for r in english.tables[0].rows] != [r[0] for r in sheet.tables[0].rows]
 
 
@@ -141,7 +144,7 @@ def test_a_sheet_is_a_report_section_with_numbered_captions(roller):
     assert "Таблица 4.2 — Фазы закона движения" in captions
     assert any(c.startswith("Рисунок 4.2 — Профиль кулачка") for c in captions)
     cells = [cell for table in tables for row in table.rows for cell in row]
-    assert "37" in cells and "26.073" in cells and "синусоидальный (циклоидальный)" in cells
+    assert "37" in cells and "26,073" in cells and "синусоидальный (циклоидальный)" in cells
     assert [p.text for p in section.blocks if hasattr(p, "text")] == sheet.paragraphs
 
 
@@ -220,7 +223,7 @@ def test_report_with_cam_and_gears_options_has_both_sheets(tmp_path, monkeypatch
     cam_text = " ".join([*(c for b in cam.blocks if isinstance(b, Table)
                            for row in b.rows for c in row),
                          *(b.text for b in cam.blocks if hasattr(b, "text"))])
-    assert "26.073" in cam_text and "Подрезания нет" in cam_text
+    assert "26,073" in cam_text and "Подрезания нет" in cam_text
 
 
 def test_gear_pair_sheet_holds_the_gear_packages_geometry_and_checks():

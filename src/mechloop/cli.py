@@ -48,7 +48,13 @@ class _Command(_NoFlagType, TyperCommand):
 
 
 class _Group(_NoFlagType, TyperGroup):
-    pass
+    def main(self, *args: Any, **kwargs: Any) -> Any:
+        """Run the command line, its usage errors in the language of the messages."""
+        if message_language() == "ru":  # Typer's printer is imported only then
+            from mechloop.messages.usage import install
+
+            install()
+        return super().main(*args, **kwargs)
 
 
 app = typer.Typer(
@@ -89,9 +95,9 @@ def user_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 
 
 def _message_lang(kwargs: dict[str, Any]) -> str:
-    """The language of a command's error: Russian when its ``--lang ru`` is given, else
+    """The language of a command's error: its ``--lang`` when given (en or ru), else
     ``MECHLOOP_LANG`` (:func:`mechloop.messages.message_language`)."""
-    return message_language("ru" if kwargs.get("lang") == "ru" else None)
+    return message_language(kwargs.get("lang"))
 
 
 @app.command(cls=_Command)
@@ -568,8 +574,8 @@ def plot(
     panels: Annotated[bool, typer.Option(help="parameters: one stacked panel per unit "
                       "(default: a y-axis per unit up to 3 units, panels for more)")
                       ] = False,
-    lang: Annotated[str, typer.Option(help="language of the figure's texts: en or ru "
-                                      "(default: en)")] = "en",
+    lang: Annotated[str | None, typer.Option(help="language of the figure's texts and the "
+                    "messages: en or ru (default: MECHLOOP_LANG, else en)")] = None,
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -597,6 +603,7 @@ def plot(
 
     if kind not in PLOTS:
         raise ViewError(f"unknown view {kind!r}", f"use one of {', '.join(PLOTS)}")
+    lang = message_language() if lang is None else lang
     if lang not in ("en", "ru"):
         raise ViewError(f"no figure language {lang!r}", "use --lang en or --lang ru")
     wrote = "записан файл" if lang == "ru" else "wrote"
@@ -729,7 +736,8 @@ def report(
     output: Annotated[list[Path], typer.Option("-o", "--output", help="the report: .pdf "
                                                "or .docx; repeat for both (-o r.pdf -o "
                                                "r.docx)")],
-    lang: Annotated[str, typer.Option(help="language: en or ru")] = "en",
+    lang: Annotated[str | None, typer.Option(help="language of the report and the "
+                    "messages: en or ru (default: MECHLOOP_LANG, else en)")] = None,
     parameter: Annotated[str | None, typer.Option(help="output parameter (r3, a3; default: "
                          "the first contour's length function, else its last angle)")
                          ] = None,
@@ -773,6 +781,7 @@ def report(
     from mechloop.model.project import project_documents
     from mechloop.report.cli import run_report
 
+    lang = message_language() if lang is None else lang
     _outputs(model, force, *((path, (".pdf", ".docx")) for path in output))
     m = load_model(model)
     project = project_documents(m, model, cam=cam, gears=gears)

@@ -14,28 +14,13 @@ a wrong type, a value out of range, a value not among the allowed ones) are entr
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
 
-#: Kinds of quantity: English word -> (nominative, genitive) in Russian.
-KINDS = {
-    "length": ("длина", "длины"), "angle": ("угол", "угла"), "time": ("время", "времени"),
-    "mass": ("масса", "массы"), "force": ("сила", "силы"), "moment": ("момент", "момента"),
-    "inertia": ("момент инерции", "момента инерции"),
-    "moment of inertia": ("момент инерции", "момента инерции"),
-    "acceleration": ("ускорение", "ускорения"), "velocity": ("скорость", "скорости"),
-    "speed": ("скорость", "скорости"), "energy": ("энергия", "энергии"),
-    "power": ("мощность", "мощности"), "pressure": ("давление", "давления"),
-    "stiffness": ("жёсткость", "жёсткости"), "damping": ("демпфирование", "демпфирования"),
-    "angular velocity": ("угловая скорость", "угловой скорости"),
-    "angular acceleration": ("угловое ускорение", "углового ускорения"),
-    "frequency": ("частота", "частоты"), "area": ("площадь", "площади"),
-    "volume": ("объём", "объёма"),
-}
-_KIND = "|".join(sorted(map(re.escape, KINDS), key=len, reverse=True))
-
-#: (pattern, Russian template): the template is ``str.format`` over the named groups, or a
-#: function of the match.
-Entry = tuple[str, str | Callable[[re.Match[str]], str]]
+from mechloop.messages.ru import AREAS
+from mechloop.messages.ru.base import KIND as _KIND
+from mechloop.messages.ru.base import KINDS, Entry
+from mechloop.messages.ru.base import accusative as _as
+from mechloop.messages.ru.base import or_words as _or
+from mechloop.messages.ru.base import quoted as _quoted
 
 ENTRIES: list[Entry] = [
     # reading the file
@@ -211,13 +196,6 @@ ENTRIES: list[Entry] = [
     # vectors, contours, links, arguments
     (r"'(?P<v>[^']*)' is not a role", "'{v}' — не роль параметра"),
     (r"did you mean '(?P<v>[^']*)'\?", "возможно, имелось в виду '{v}'?"),
-    (r"contour (?P<c>\d+) has (?P<n>\d+) function parameters? \((?P<list>[^)]*)\); a planar "
-     r"contour needs exactly 2 \(contours solved together as a coupled block: 2 per "
-     r"contour in all, each contour linking to the others' functions\)",
-     lambda m: (f"в контуре {m['c']} искомых параметров ('function'): {m['n']} ("
-                f"{'нет' if m['list'] == 'none' else m['list']}); плоскому контуру нужно ровно 2 "
-                "(для контуров, решаемых вместе связанным блоком, — по 2 на контур, и "
-                "каждый контур ссылается на искомые параметры других)")),
     (r"make all but two of them constants, arguments or links to earlier contours",
      "сделайте все, кроме двух, постоянными, аргументами или ссылками на предыдущие контуры"),
     (r"mark two of its parameters 'function' \(the unknowns of this loop\)",
@@ -492,13 +470,6 @@ ENTRIES: list[Entry] = [
 ]
 
 
-def _as(nominative: str) -> str:
-    """The accusative after «как» (feminine -а → -у; the others read as nominative)."""
-    words = nominative.split(" ")
-    return " ".join(w[:-1] + "у" if w.endswith("а") else
-                    w[:-2] + "ую" if w.endswith("ая") else w for w in words)
-
-
 def _report_entries() -> list[Entry]:
     """The report command's refusals (``e_…`` of :data:`mechloop.report.words.TEXT`), whose
     Russian the report already has: the English template as the pattern, its ``{field}``
@@ -513,19 +484,12 @@ def _report_entries() -> list[Entry]:
     return entries
 
 
+# the entries of each area of the library (mechloop.messages.ru) first: each matches its own
+# messages only, and wins over a common entry that would leave part of one in English
+ENTRIES[:0] = [entry for area in AREAS for entry in area.ENTRIES]
 ENTRIES[-1:-1] = _report_entries()  # before the last entry (a file's path, then a message)
 
 _COMPILED = [(re.compile(pattern, re.DOTALL), template) for pattern, template in ENTRIES]
-
-
-def _quoted(items: str) -> str:
-    """A list of the words a user types (views, quantities), each in quotes."""
-    return ", ".join(f"'{item.strip()}'" for item in items.split(",") if item.strip())
-
-
-def _or(text: str) -> str:
-    return re.sub(r"(?<=\S) (or|and) (?=\S)", lambda m: " или " if m[1] == "or" else " и ",
-                  text)
 
 
 def lookup(text: str) -> str | None:

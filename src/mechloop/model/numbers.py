@@ -45,8 +45,8 @@ def flush(value: float) -> float:
 
 def _number(value: float) -> float:
     if not usable(value):
-        raise PydanticCustomError("number_range", "{value} is outside the range of a model "
-                                  "value (" + RANGE + ")", {"value": value})
+        raise PydanticCustomError("number_range", f"{value} is outside the range of a "
+                                  f"model value ({RANGE})")
     return flush(value)
 
 
@@ -54,8 +54,8 @@ def _scalar(value: float | str) -> float | str:
     if isinstance(value, str):
         if len(value) > MAX_QUANTITY_CHARS:
             raise PydanticCustomError(
-                "quantity_length", "a quantity of {length} characters (a number and a unit "
-                "are at most " + str(MAX_QUANTITY_CHARS) + ")", {"length": len(value)})
+                "quantity_length", f"a quantity of {len(value)} characters (a number and a "
+                f"unit are at most {MAX_QUANTITY_CHARS})")
         return value
     return _number(value)
 

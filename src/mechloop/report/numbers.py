@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mechloop.output.display import TableDisplay, unit_factor
+from mechloop.views.decimal_mark import localized
 
 #: Significant digits of a number when the model's display: section gives none.
 DEFAULT_DIGITS = 5
@@ -100,9 +101,13 @@ class Shown:
         return unit_text(self.unit(unit), self.lang)
 
     def number(self, value: float, scale: float | None = None) -> str:
-        """``value`` (already in its display unit) to the display's precision; a value
-        that is zero to the precision of a number of size ``scale`` (default its own)
-        is '0'.  Not finite: '—'."""
+        """``value`` (already in its display unit) to the display's precision, written as
+        the language writes numbers (Russian: ``1,5``, ``1,5·10⁻⁵``); a value that is zero
+        to the precision of a number of size ``scale`` (default its own) is '0'.  Not
+        finite: '—'."""
+        return localized(self._number(value, scale), self.lang)
+
+    def _number(self, value: float, scale: float | None = None) -> str:
         if value is None or not np.isfinite(value):
             return "—"
         value = float(value)

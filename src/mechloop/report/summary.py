@@ -11,6 +11,7 @@ import re
 from mechloop.dynamics.analysis import DynamicResults
 from mechloop.report.document import Table
 from mechloop.report.numbers import unit_text
+from mechloop.views.decimal_mark import localized
 from mechloop.views.display import Display
 from mechloop.views.dynamics import summary_rows
 from mechloop.views.russian import model_names, russian
@@ -33,11 +34,11 @@ def summary_tables(dyn: DynamicResults, display: Display, lang: str,
     def value(text: str) -> str:
         match = _TRAILING_UNIT.match(text)
         if match:
-            return f"{match.group(1)} {unit_text(match.group(2), lang)}"
+            return f"{localized(match.group(1), lang)} {unit_text(match.group(2), lang)}"
         return words(text)
 
     loads = Table(w["t_summary_loads"], tuple(words(h) for h in header),
-                  [(words(r[0]), *r[1:]) for r in rows])
+                  [(words(r[0]), *(localized(c, lang) for c in r[1:])) for r in rows])
     figures = Table(w["t_summary_totals"], (w["h_quantity"], w["h_value"]),
                     [(words(name), value(text)) for name, text in totals])
     return [loads, figures]

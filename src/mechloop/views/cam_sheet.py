@@ -23,7 +23,14 @@ from mechloop.cams.followers import (
 )
 from mechloop.cams.plots import plot_curvature, plot_pressure, plot_profile, plot_program
 from mechloop.model.units import unit_factor
-from mechloop.views.sheet import FigureItem, Sheet, Table, number_text, translate_figure
+from mechloop.views.sheet import (
+    FigureItem,
+    Sheet,
+    Table,
+    localized_sheet,
+    number_text,
+    translate_figure,
+)
 
 TEXT: dict[str, dict[str, str]] = {
     "en": {
@@ -259,8 +266,9 @@ def cam_sheet(design: CamDesign, lang: str = "en") -> Sheet:
     segment_table = Table(text["segments"], (text["segment"], text["angle"],
                                              f"{text['lift']}, {lift_shown[0]}",
                                              text["law"], "C_v", "C_a", "C_j"), segments)
-    return Sheet(4, text["title"], lang, _figures(design, lang), [table, segment_table],
-                 _verdicts(design, summary, text, length, to))
+    return localized_sheet(Sheet(4, text["title"], lang, _figures(design, lang),
+                                 [table, segment_table],
+                                 _verdicts(design, summary, text, length, to)))
 
 
 def _verdicts(design: CamDesign, s: Summary, text: dict[str, str], length: str, to: float

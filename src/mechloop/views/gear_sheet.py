@@ -31,7 +31,14 @@ from mechloop.gears.planetary import PlanetaryTrain
 from mechloop.gears.tables import pair_table
 from mechloop.gears.velocity_plan import plot_velocity_plan
 from mechloop.model.document import located_error
-from mechloop.views.sheet import FigureItem, Sheet, Table, number_text, translate_figure
+from mechloop.views.sheet import (
+    FigureItem,
+    Sheet,
+    Table,
+    localized_sheet,
+    number_text,
+    translate_figure,
+)
 
 
 @dataclass(frozen=True)
@@ -244,7 +251,7 @@ def gear_sheet(task: GearTask, lang: str = "en") -> Sheet:
         figures.append(_figure(lambda: _velocity_plan(task, text), text["fig_plan"], lang))
     title = text["both" if task.pair is not None and task.train is not None else
                  "pair" if task.pair is not None else "train"]
-    return Sheet(3, title, lang, figures, tables, paragraphs)
+    return localized_sheet(Sheet(3, title, lang, figures, tables, paragraphs))
 
 
 def _figure(draw, caption: str, lang: str) -> FigureItem:

@@ -24,6 +24,7 @@ from matplotlib.text import Text
 
 from mechloop.modules.coupled import DEAD, JUMP, NO_CONVERGENCE, REASONS
 from mechloop.solve.kinematics import BREAK_REASONS, DEAD_POINT, OVERFLOW
+from mechloop.views.decimal_mark import localize_ticks, localized
 
 #: Why the chain breaks (the solver's sentences) in Russian.
 BREAK_WORDS: dict[str, str] = {
@@ -209,7 +210,8 @@ def keep_names(figure: Figure, names: Iterable[str]) -> Figure:
 
 def russian(text: str, names: Iterable[str] = ()) -> str:
     """``text`` with every phrase of :data:`RUSSIAN_WORDS` put in Russian, the user's
-    ``names`` (of two characters or more) in it left as they are.
+    ``names`` (of two characters or more) in it left as they are, and its numbers
+    written with the decimal comma.
 
     >>> russian("increment of r3 from position 0")
     'приращение r3 от положения 0'
@@ -217,6 +219,8 @@ def russian(text: str, names: Iterable[str] = ()) -> str:
     'положения 0..72, положение 5'
     >>> russian("Run up to the break, position 5", ["Run up to the break"])
     'Run up to the break, положение 5'
+    >>> russian("t = 0.25 s, position 3")
+    't = 0,25 s, положение 3'
     """
     kept: list[str] = []
 
@@ -230,7 +234,7 @@ def russian(text: str, names: Iterable[str] = ()) -> str:
     spelled = [rf"(?<!\w){n}(?!\w)" for n in spelled if n]
     if spelled:
         text = re.sub("|".join(spelled), hide, text)
-    text = _pattern().sub(lambda match: RUSSIAN_WORDS[match.group(0)], text)
+    text = localized(_pattern().sub(lambda match: RUSSIAN_WORDS[match.group(0)], text), "ru")
     return re.sub("\x00(\\d+)\x00", lambda match: kept[int(match.group(1))], text)
 
 
@@ -245,7 +249,7 @@ def figure_texts(figure: Figure) -> list[Text]:
 
 def translate(figure: Figure, lang: str) -> Figure:
     """Put the words of a figure's texts (:func:`figure_texts`) in ``lang`` ('en': as
-    drawn; 'ru': :func:`russian`)."""
+    drawn; 'ru': :func:`russian`, and the tick labels with the decimal comma)."""
     if lang != "ru":
         return figure
     names = getattr(figure, NAMES_ATTRIBUTE, set())
@@ -255,4 +259,4 @@ def translate(figure: Figure, lang: str) -> Figure:
             translated = russian(content, names)
             if translated != content:
                 text.set_text(translated)
-    return figure
+    return localize_ticks(figure, lang)

@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 
 from matplotlib.figure import Figure
 
+from mechloop.views.decimal_mark import localize_ticks, localized
+
 
 @dataclass(frozen=True)
 class Table:
@@ -51,7 +53,8 @@ class Sheet:
 
 
 def translate_figure(figure: Figure, words: dict[str, str]) -> Figure:
-    """Replace the phrases of ``words`` (longest first) in every text of ``figure``."""
+    """Put ``figure`` in Russian: replace the phrases of ``words`` (longest first) in every
+    text and write its numbers, tick labels included, with the decimal comma."""
     from matplotlib.text import Text
 
     ordered = sorted(words.items(), key=lambda item: -len(item[0]))
@@ -61,8 +64,20 @@ def translate_figure(figure: Figure, words: dict[str, str]) -> Figure:
             continue
         for english, other in ordered:
             content = content.replace(english, other)
-        text.set_text(content)
-    return figure
+        text.set_text(localized(content, "ru"))
+    return localize_ticks(figure, "ru")
+
+
+def localized_sheet(sheet: Sheet) -> Sheet:
+    """``sheet`` with the numbers of its tables and paragraphs written as its language
+    writes them (Russian: decimal comma; the figures do it when drawn)."""
+    if sheet.lang != "ru":
+        return sheet
+    tables = [Table(localized(t.caption, "ru"), t.header,
+                    [tuple(localized(cell, "ru") for cell in row) for row in t.rows],
+                    t.values) for t in sheet.tables]
+    paragraphs = [localized(p, "ru") for p in sheet.paragraphs]
+    return Sheet(sheet.number, sheet.title, sheet.lang, sheet.figures, tables, paragraphs)
 
 
 def number_text(value: float) -> str:

@@ -26,6 +26,12 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
   a background job (:mod:`mechloop.web.jobs`), ``{id}``; ``GET /api/jobs/{id}`` — its
   state, progress, best design so far and result; ``POST /api/jobs/{id}/cancel`` — stop
   it, keeping the best;
+* ``POST /api/edit`` ``{text, path|example, keys, value | delete: true | key}`` —
+  ``{text, data}``: the text with one value set, one entry deleted or one key renamed at
+  the key path ``keys`` (``["vectors", 1, "r"]``), every other byte kept
+  (:mod:`mechloop.web.edit`), and the plain data of the new text;
+  ``POST /api/data`` ``{text}`` — ``{data}``: the text's plain data, as the page's forms
+  read it;
 * ``GET /api/autosave?path=...|example=...`` — the working copy of a model
   (:mod:`mechloop.web.autosave`): ``{text, time, differs}`` (``text`` null when there is
   none); ``POST /api/autosave`` ``{text, path|example}`` — keep it (removed when it equals
@@ -60,6 +66,7 @@ from mechloop.output.atomic import atomic_write_text
 from mechloop.web import exports, templates
 from mechloop.web.autosave import working_copy
 from mechloop.web.documents import problems, read_model
+from mechloop.web.edit import edit_text, json_data
 from mechloop.web.jobs import JOB_SECONDS, Jobs
 from mechloop.web.language import problems_in, request_language
 from mechloop.web.payload import solution
@@ -321,6 +328,28 @@ def create_app(folder: str | Path, *, token: str | None = None,
         job = await run_in_threadpool(jobs.cancel, request.path_params["job"])
         return _JSON(job.status())
 
+    def file_name(data: dict[str, Any]) -> str:
+        """The name of the file a text belongs to (its errors carry it; ``.json``: the
+        edits write JSON)."""
+        return source(data)[0].name if data.get("path") or data.get("example") \
+            else "model.yaml"
+
+    async def edit(request: Request) -> Response:
+        data = await body(request)
+        name = file_name(data)
+
+        def change() -> dict[str, Any]:
+            text = edit_text(data.get("text", ""), data.get("keys"), value=data.get("value"),
+                             delete=data.get("delete") is True, key=data.get("key"),
+                             file=name)
+            return {"text": text, "data": json_data(text, name)}
+        return JSONResponse(await run_in_threadpool(change))
+
+    async def plain_data(request: Request) -> Response:
+        data = await body(request)
+        return JSONResponse({"data": await run_in_threadpool(
+            json_data, data.get("text", ""), file_name(data))})
+
     routes = [Route("/", index),
               Route("/api/models", guarded(models)),
               Route("/api/model", guarded(model)),
@@ -338,6 +367,8 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/structure", guarded(structure), methods=["POST"]),
               Route("/api/view", guarded(view), methods=["POST"]),
               Route("/api/jobs", guarded(job_start), methods=["POST"]),
+              Route("/api/edit", guarded(edit), methods=["POST"]),
+              Route("/api/data", guarded(plain_data), methods=["POST"]),
               Route("/api/jobs/{job}", guarded(job_status)),
               Route("/api/jobs/{job}/cancel", guarded(job_cancel), methods=["POST"]),
               Mount("/static", StaticFiles(directory=STATIC), name="static")]

@@ -54,7 +54,7 @@ class TriadSteps(PlaceSteps):
                                                  f"argument {drive.argument} is not defined",
                                                  f"add it under arguments: (e.g. "
                                                  f"{drive.argument}: {{table: {{0: 1.0, N: "
-                                                 "1.6}}}) or use one that exists"))
+                                                 "1.6}}) or use one that exists"))
                 at = self.resolve(leg.at, (*where, "at"))
                 legs.append(("D", at, drive.argument, shift) if at is not None else None)
                 continue

@@ -122,6 +122,7 @@ function renderProblems() {
 let pending = null;
 function edited() {
   state.version += 1;
+  if (window.mechloopForms) window.mechloopForms.changed();  // forms.js
   renderGutter();
   clearTimeout(pending);
   pending = setTimeout(check, 350);
@@ -280,6 +281,7 @@ function render() {
   if (!solution) return;
   const k = state.position;
   drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
+  if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
   drawPlot($("plot"), solution,
     plotted().map((name) => solution.columns.find((c) => c.name === name)), k,
     plotZoom.rangeFor(solution.count - 1, k));
@@ -716,6 +718,7 @@ function setLanguage(lang) {
   renderStructure();
   newModel.fill();
   autosave.show();
+  if (window.mechloopForms) window.mechloopForms.draw();
   if (state.problems.length) recheck();
 }
 
