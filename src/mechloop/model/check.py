@@ -21,7 +21,7 @@ from mechloop.model.structure import Structure, analyze
 from mechloop.model.synthesis import check_synthesis
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
-KIND_OF = {"r": "length", "a": "angle"}
+KIND_OF = {"r": "length", "a": "angle", "b": "angle"}
 #: Values of one table reported one by one; the rest are counted.
 MAX_TABLE_PROBLEMS = 5
 
@@ -30,8 +30,8 @@ def argument_kinds(model: Model) -> dict[int, set[str]]:
     """For each argument, the kinds ('length', 'angle') of the parameters it drives."""
     kinds: dict[int, set[str]] = {k: set() for k in model.arguments}
     for vector in model.vectors.values():
-        for letter in "ra":
-            role = vector.r if letter == "r" else vector.a
+        for letter in "rab":  # b: β of a spatial vector (None when absent)
+            role = getattr(vector, letter)
             if isinstance(role, ArgumentRole) and role.argument in kinds:
                 kinds[role.argument].add(KIND_OF[letter])
     return kinds
@@ -79,8 +79,10 @@ def _check_units(model: Model) -> list[Problem]:
     if problems:
         return problems  # every number below would repeat the same complaint
     for number, vector in model.vectors.items():
-        for letter in "ra":
-            role = vector.r if letter == "r" else vector.a
+        for letter in "rab":  # b: β of a spatial vector (None when absent)
+            role = getattr(vector, letter)
+            if role is None:
+                continue
             kind = KIND_OF[letter]
             default = getattr(model.units, kind)
             path = ("vectors", number, letter)
