@@ -52,7 +52,8 @@ Triple = tuple[Array, Array, Array]  # value, rate, acceleration, each (P,)
 class SpatialResults(Results):
     """:class:`~mechloop.solve.results.Results` of a model with spatial contours: the
     parameters include ``b<n>`` (β, rad) of the spatial vectors, and the table adds the
-    components of every vector of a spatial contour with their derivatives."""
+    components of every vector of a spatial contour that is not constant, with their
+    derivatives (``x3 [m]``, ``dx3 [m/s]``, ``ddx3 [m/s^2]``, then y, z)."""
 
     spatial_vectors: tuple[int, ...] = ()
 
@@ -75,6 +76,8 @@ class SpatialResults(Results):
         d1, d2 = self.derivative_units()
         flag = frame.pop("chain_break")
         for number in self.spatial_vectors:
+            if all(f"{k}{number}" in self.constant for k in "rab"):
+                continue  # a constant vector (as constant parameters, not tabulated)
             for axis, (v, dv, ddv) in zip("xyz", self.components(number), strict=True):
                 name = f"{axis}{number}"
                 frame[f"{name} [m]"] = v

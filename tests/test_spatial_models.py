@@ -1,0 +1,414 @@
+"""Models with spatial contours end to end (issue 17): the model file, the solver, the CLI.
+
+Checked against independent references: the planar solver (a planar model written as
+spatial), the RSSR and spherical four-bar input–output equations in closed form over the
+whole cycle, finite differences of the solver's own positions for the exact rates, the
+3-D closure of every contour, and located errors for bad input.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+import mechloop
+from mechloop.cli import app
+from mechloop.errors import ModelError
+from mechloop.model.load import model_from_data
+from mechloop.spatial.contour import classify, follow_branch
+
+ROOT = Path(__file__).resolve().parents[1]
+SPATIAL = ROOT / "examples" / "spatial"
+EXAMPLES = sorted(SPATIAL.glob("*.yaml"))
+
+
+def _data(path: Path) -> dict:
+    return yaml.safe_load(path.read_text(encoding="utf-8"))
+
+
+def _solve(data: dict, **kwargs):
+    return mechloop.solve(model_from_data(copy.deepcopy(data)), **kwargs)
+
+
+# ------------------------------------------------------------ planar models as spatial
+def _as_spatial(data: dict, extra: dict[int, int]) -> dict:
+    """``data`` with the contours ``extra`` (index: vector) spatial, that vector's β the
+    contour's third unknown."""
+    out = copy.deepcopy(data)
+    for ci, vector in extra.items():
+        out["contours"][ci]["spatial"] = True
+        out["vectors"][vector]["b"] = "function"
+    return out
+
+
+def _assert_same(spatial, planar, rtol: float = 1e-12) -> None:
+    for name in planar.varying():
+        for what in ("values", "rates", "accels"):
+            got, want = getattr(spatial, what)[name], getattr(planar, what)[name]
+            scale = np.abs(want).max()
+            assert np.abs(got - want).max() <= rtol * scale, (name, what)
+
+
+@pytest.mark.parametrize("variant", [1, 2])
+def test_planar_four_bar_written_as_spatial_gives_the_planar_results(variant):
+    data = _data(ROOT / "examples" / "four_bar.yaml")
+    data["contours"][0]["variant"] = variant
+    planar = _solve(data)
+    both = _solve(_as_spatial(data, {0: 2, 1: 7}))  # Pr9 (a2, b2, a3) and Pr1 (r7 a7 b7)
+    assert [c.module for c in both.structure.contours] == ["Pr9", "Pr1"]
+    _assert_same(both, planar)
+    assert np.abs(both.values["b2"]).max() == 0 and np.abs(both.rates["b2"]).max() == 0
+    # mixed: contour 1 spatial, contour 2 planar (Pl1) reading the spatial a2 by a link
+    mixed = _solve(_as_spatial(data, {0: 2}))
+    assert [c.module for c in mixed.structure.contours] == ["Pr9", "Pl1"]
+    _assert_same(mixed, planar)
+
+
+def test_planar_slider_crank_written_as_spatial_gives_the_planar_results():
+    data = _data(ROOT / "examples" / "crank_slider.yaml")
+    planar = _solve(data)
+    unknowns = [(n, k) for n, v in data["vectors"].items() for k in "ra"
+                if v[k] == "function"]
+    rod = next(n for n, k in unknowns if k == "a")
+    matched = []
+    for variant in (1, 2):  # Pr8's branches are numbered by the module, not as Pl3's
+        data["contours"][0]["variant"] = variant
+        spatial = _solve(_as_spatial(data, {0: rod}))
+        assert spatial.structure.contours[0].module == "Pr8"  # α β of the rod, r slider
+        try:
+            _assert_same(spatial, planar)
+            matched.append(variant)
+        except AssertionError:
+            pass
+    assert len(matched) == 1
+
+
+# --------------------------------------------------------------------- RSSR four-bar
+def _rssr_data(a, L, c, r4, al4, be4, positions=72, variant=1) -> dict:
+    return {"units": {"length": "m", "angle": "deg"}, "positions": positions,
+            "arguments": {1: {"table": {0: 0, positions: 360}}},
+            "vectors": {1: {"r": a, "a": {"argument": 1}, "b": 0},
+                        2: {"r": L, "a": "function", "b": "function"},
+                        3: {"r": c, "a": 0, "b": "function"},
+                        4: {"r": r4, "a": al4, "b": be4}},
+            "contours": [{"vectors": [1, 2, -3, -4], "spatial": True, "variant": variant}]}
+
+
+def _rssr_roots(a, L, c, d, theta):
+    """Both roots φ of the RSSR input–output equation
+    ``2c (x_D − a cos θ) cos φ + 2c z_D sin φ = L² − c² − |D − A|²``."""
+    dx, dy, dz = d[0] - a * np.cos(theta), d[1] - a * np.sin(theta), d[2]
+    p, q = 2 * c * dx, 2 * c * dz * np.ones_like(theta)
+    rhs = L**2 - c**2 - (dx**2 + dy**2 + dz**2)
+    h = np.hypot(p, q)
+    mid, half = np.arctan2(q, p), np.arccos(np.clip(rhs / h, -1, 1))
+    return np.stack([mid + half, mid - half]), np.abs(rhs) <= h
+
+
+def _frame(r4, al4, be4):
+    al4, be4 = math.radians(al4), math.radians(be4)
+    return r4 * np.array([math.cos(al4) * math.cos(be4), math.sin(al4),
+                          math.cos(al4) * math.sin(be4)])
+
+
+def _wrapped_distance(x, y):
+    return np.abs(np.angle(np.exp(1j * (x - y))))
+
+
+def test_rssr_example_follows_its_input_output_equation_over_the_cycle():
+    model = mechloop.load_model(SPATIAL / "rssr.yaml")
+    data = _data(SPATIAL / "rssr.yaml")
+    v = data["vectors"]
+    a, L, c = (v[n]["r"] / 1000 for n in (1, 2, 3))
+    d = _frame(v[4]["r"] / 1000, v[4]["a"], v[4]["b"])
+    for variant in (1, 2):
+        data["contours"][0]["variant"] = variant
+        res = _solve(data)
+        assert not res.broken.any() and res.breaks == ()
+        theta = res.arguments[1]
+        roots, exists = _rssr_roots(a, L, c, d, theta)
+        assert exists.all()
+        miss = _wrapped_distance(res.values["b3"][None], roots).min(axis=0)
+        assert miss.max() < 1e-12
+        # the coupler keeps its length: |D + c(cos φ, 0, sin φ) − A| = L, as closed
+        phi = res.values["b3"]
+        b = d[:, None] + c * np.stack([np.cos(phi), 0 * phi, np.sin(phi)])
+        assert np.abs(np.linalg.norm(b - a * np.stack(
+            [np.cos(theta), np.sin(theta), 0 * theta]), axis=0) - L).max() < 1e-14
+    assert model.contours[0].spatial
+
+
+def test_rssr_variants_are_the_two_assemblies_throughout():
+    data = _data(SPATIAL / "rssr.yaml")
+    one = _solve(data).values["b3"]
+    data["contours"][0]["variant"] = 2
+    two = _solve(data).values["b3"]
+    assert _wrapped_distance(one, two).min() > 0.1  # never meet over the cycle
+    data["contours"][0]["variant"] = "auto"  # variant 1 followed by continuity
+    auto = _solve(data).values["b3"]
+    assert np.abs(auto - one).max() < 1e-12
+
+
+def _finite_differences(data: dict, names: list[str], h_deg: float = 1e-3):
+    """Analog rates and accelerations by central differences in argument 1's offset."""
+    runs = []
+    for step in (-h_deg, 0.0, h_deg):
+        moved = copy.deepcopy(data)
+        for vec in moved["vectors"].values():
+            for k in "rab":
+                if isinstance(vec.get(k), dict) and vec[k].get("argument") == 1:
+                    vec[k]["offset"] = step
+        runs.append(_solve(moved))
+    h = math.radians(h_deg)
+    out = {}
+    for name in names:
+        lo, mid, hi = (r.values[name] for r in runs)
+        out[name] = ((hi - lo) / (2 * h), (hi - 2 * mid + lo) / h**2)
+    return out
+
+
+@pytest.mark.parametrize("example", ["rssr.yaml", "spherical_four_bar.yaml"])
+def test_rates_and_accelerations_match_finite_differences(example):
+    data = _data(SPATIAL / example)
+    data.pop("time", None)  # analogs with respect to argument 1 (per rad)
+    res = _solve(data)
+    names = res.varying()
+    fd = _finite_differences(data, names)
+    for name in names:
+        d1, d2 = fd[name]
+        scale1, scale2 = np.abs(res.rates[name]).max(), np.abs(res.accels[name]).max()
+        assert np.abs(res.rates[name] - d1).max() <= 1e-6 * max(scale1, 1e-3), name
+        assert np.abs(res.accels[name] - d2).max() <= 1e-4 * max(scale2, 1e-3), name
+    # with model time (constant speed) the derivatives are the analogs times ω, ω²
+    timed = mechloop.load_model(SPATIAL / example)
+    t = mechloop.solve(timed)
+    omega = 2 * math.pi * timed.time.rpm / 60
+    for name in names:
+        np.testing.assert_allclose(t.rates[name], res.rates[name] * omega, rtol=1e-12,
+                                   atol=1e-12 * np.abs(t.rates[name]).max())
+        np.testing.assert_allclose(t.accels[name], res.accels[name] * omega**2,
+                                   rtol=1e-12, atol=1e-12 * np.abs(t.accels[name]).max())
+
+
+def test_a_reversed_loop_gives_the_same_mechanism():
+    """The signs: the same RSSR loop written the other way round (every vector
+    subtracted: the module's vector i then enters with a minus sign)."""
+    data = _data(SPATIAL / "rssr.yaml")
+    want = _solve(data)
+    data["contours"][0]["vectors"] = [-1, -2, 3, 4]
+    got = _solve(data)
+    for name in want.varying():
+        for what in ("values", "rates", "accels"):
+            np.testing.assert_allclose(getattr(got, what)[name], getattr(want, what)[name],
+                                       rtol=1e-12, atol=1e-12)
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(a=st.floats(0.02, 0.08), L=st.floats(0.08, 0.2), c=st.floats(0.04, 0.12),
+       r4=st.floats(0.05, 0.15), al4=st.floats(-60, 60), be4=st.floats(-80, 80),
+       variant=st.sampled_from([1, 2]))
+def test_random_rssr_geometry_against_the_closed_form(a, L, c, r4, al4, be4, variant):
+    data = _rssr_data(a, L, c, r4, al4, be4, positions=36, variant=variant)
+    res = _solve(data)
+    theta = res.arguments[1]
+    d = _frame(r4, al4, be4)
+    roots, exists = _rssr_roots(a, L, c, d, theta)
+    ok = ~res.broken
+    # every position the closed form says does not assemble is a chain break
+    assert not (ok & ~exists).any()
+    margin = np.abs(np.cos(np.diff(roots, axis=0)[0] / 2)) > 1e-6  # away from tangency
+    assert not (~ok & exists & margin).any()
+    miss = _wrapped_distance(res.values["b3"][None], roots).min(axis=0)
+    assert (miss[ok] < 1e-9).all()
+    assert np.isfinite(res.to_frame().drop(columns="chain_break").to_numpy(float)[ok]).all()
+
+
+# ------------------------------------------------------------------ spherical four-bar
+def test_spherical_four_bar_follows_the_spherical_cosine_law_over_the_cycle():
+    data = _data(SPATIAL / "spherical_four_bar.yaml")
+    v = data["vectors"]
+    g1 = math.radians(90 - v[1]["a"])  # crank arc from the Y axis
+    g2 = 2 * math.asin(v[2]["r"] / (2 * v[1]["r"]))  # coupler arc from its chord
+    g3 = math.atan2(v[3]["r"], v[4]["r"])  # output arc from the X axis
+    assert math.isclose(math.hypot(v[3]["r"], v[4]["r"]), v[1]["r"], rel_tol=1e-15)
+    for variant in (1, 2):
+        data["contours"][0]["variant"] = variant
+        res = _solve(data)
+        assert not res.broken.any()
+        t, psi = res.arguments[1], res.values["a3"]
+        lhs = (math.sin(g1) * math.sin(g3) * np.sin(t) * np.cos(psi)
+               + math.cos(g1) * math.sin(g3) * np.sin(psi))
+        rhs = math.cos(g2) - math.sin(g1) * math.cos(g3) * np.cos(t)
+        assert np.abs(lhs - rhs).max() < 1e-14
+        # A and B on the sphere, the coupler arc constant
+        ax, ay, az = res.components(1)[0][0], res.components(1)[1][0], res.components(1)[2][0]
+        assert np.abs(np.sqrt(ax**2 + ay**2 + az**2) - 0.1).max() < 1e-15
+
+
+# ---------------------------------------------------------------- closure and the CLI
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+def test_example_contours_close_in_space(path):
+    model = mechloop.load_model(path)
+    res = mechloop.solve(model)
+    for contour in model.contours:
+        total = np.zeros((3, 3, model.positions + 1))
+        scale = np.zeros(3)
+        for entry in contour.vectors:
+            sign = -1.0 if entry < 0 else 1.0
+            comps = res.components(abs(entry))
+            for axis in range(3):
+                for order in range(3):
+                    total[order, axis] += sign * comps[axis][order]
+                    scale[order] = max(scale[order], np.abs(comps[axis][order]).max())
+        for order in range(3):
+            assert np.abs(total[order]).max() <= 1e-12 * scale[order]
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+def test_example_through_the_cli(path, tmp_path):
+    runner = CliRunner()
+    result = runner.invoke(app, ["check", str(path)])
+    assert result.exit_code == 0 and "OK" in result.output, result.output
+    out = tmp_path / "x.csv"
+    result = runner.invoke(app, ["solve", str(path), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    written = pd.read_csv(out)
+    frame = mechloop.solve(mechloop.load_model(path)).to_frame()
+    assert list(written.columns) == list(frame.columns)
+    for column in ("b3 [deg]", "x2 [m]", "dz2 [m/s]", "ddy2 [m/s^2]"):
+        assert column in written.columns or column.replace("b3", "a3") in written.columns
+    np.testing.assert_allclose(written.drop(columns="chain_break").to_numpy(float),
+                               frame.drop(columns="chain_break").to_numpy(float),
+                               rtol=1e-15, atol=0)
+    result = runner.invoke(app, ["solve", str(path), "-o", str(tmp_path / "x.json")])
+    assert result.exit_code == 0, result.output
+
+
+# -------------------------------------------------------------------------- bad input
+BAD = """\
+units: {length: mm, angle: deg}
+positions: 12
+arguments:
+  1: {table: {0: 0, 12: 360}}
+vectors:
+  1: {r: 40, a: {argument: 1}}
+  2: {r: 120, a: function, b: %s}
+  3: {r: 80, a: 0, b: function}
+  4: {r: 100, a: 30, b: %s}
+contours:
+  - vectors: [1, 2, -3, -4]
+    spatial: true
+    variant: %s
+"""
+
+
+@pytest.mark.parametrize("b2, b4, variant, where, words, fix", [
+    ("10", "45", "1", "contours[0]", "has 2 function parameter(s) (a2, b3)",
+     "mark 3 of its parameters 'function'"),
+    ("function", "function", "1", "contours[0]", "has 4 function parameter(s)",
+     "make all but 3 of them"),
+    ("function", "{link: b9}", "1", "vectors[4].b", "vector 9 is not defined",
+     "link to a vector that exists"),
+    ("function", "{link: a2}", "1", "vectors[4].b", "b4 (angle) links to a2 (angle)", ""),
+    ("function", "45", "3", "contours[0].variant", "module Pr10, which has 2 solution(s)",
+     "set 'variant' to 1..2 or 'auto'"),
+    ("function", "{argument: 2}", "1", "vectors[4].b", "uses argument 2, which is not "
+     "defined", "add argument 2"),
+])
+def test_bad_spatial_contours_are_located_with_a_fix(tmp_path, b2, b4, variant, where, words,
+                                                     fix):
+    path = tmp_path / "bad.yaml"
+    path.write_text(BAD % (b2, b4, variant), encoding="utf-8")
+    if "links to a2" in words:  # a link joins parameters of the same kind: α to β is
+        path.write_text(BAD % ("function", "{link: r2}", variant), encoding="utf-8")
+        words, fix = "b4 (angle) links to r2 (length)", "link to b2 instead"
+    with pytest.raises(ModelError) as info:
+        mechloop.load_model(path)
+    found = [p for p in info.value.problems if words in p.message]
+    assert found, str(info.value)
+    assert found[0].where() == where and fix in found[0].hint
+    assert found[0].line is not None
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2 and words.split()[0] in result.output
+
+
+def test_three_unknown_rotations_are_refused_as_pr20_with_the_fix():
+    data = _rssr_data(0.04, 0.12, 0.08, 0.1, 30, 45)
+    data["vectors"][2] = {"r": 0.12, "a": 10, "b": "function"}
+    data["vectors"][1]["b"] = "function"
+    data["vectors"][1]["a"] = 0
+    data["vectors"][4]["b"] = {"argument": 1}
+    with pytest.raises(ModelError) as info:
+        model_from_data(data)
+    text = str(info.value)
+    assert "Pr20" in text and "infinitely many" in text and "give one of these" in text
+
+
+def test_rotation_on_a_planar_contour_and_unsupported_sections_are_refused():
+    data = _data(ROOT / "examples" / "four_bar.yaml")
+    data["vectors"][1]["b"] = 0
+    with pytest.raises(ModelError) as info:
+        model_from_data(copy.deepcopy(data))
+    assert "add 'spatial: true'" in str(info.value)
+    spatial = _data(SPATIAL / "rssr.yaml")
+    spatial["gravity"] = {"g": 9.81}
+    with pytest.raises(ModelError) as info:
+        model_from_data(spatial)
+    assert "'gravity' is not solved for a model with spatial contours" in str(info.value)
+
+
+def test_old_models_keep_their_schema_meaning():
+    """A planar model reads as before: no β anywhere, variant 3 still refused."""
+    data = _data(ROOT / "examples" / "four_bar.yaml")
+    model = model_from_data(copy.deepcopy(data))
+    assert all(v.b is None for v in model.vectors.values())
+    assert not any(c.spatial for c in model.contours)
+    data["contours"][0]["variant"] = 3
+    with pytest.raises(ModelError, match="at most two solutions"):
+        model_from_data(data)
+
+
+# ------------------------------------------------------------------ module and branches
+def test_every_unknown_pattern_names_its_module():
+    assert classify([(1, "r"), (1, "a"), (1, "b")]).module == "Pr1"
+    assert classify([(2, "a"), (2, "b"), (3, "b")]).module == "Pr10"
+    assert classify([(3, "b"), (2, "b"), (2, "a")]).roles == (2, 3)
+    assert classify([(1, "b"), (2, "r"), (3, "b")]).module == "Pr18"
+    assert classify([(1, "b"), (2, "r"), (3, "b")]).roles == (1, 3, 2)
+    assert classify([(1, "a"), (2, "b"), (3, "b")]).module == "Pr19"
+    seen = {classify(u).module for u in (
+        [(1, x), (2, y), (3, z)] for x in "rab" for y in "rab" for z in "rab")}
+    seen |= {classify([(1, x), (1, y), (2, z)]).module
+             for x, y in (("r", "a"), ("r", "b"), ("a", "b")) for z in "rab"}
+    assert seen == {f"Pr{k}" for k in range(2, 21)}
+    assert classify([(1, "r"), (2, "r")]) is None
+
+
+def test_follow_branch_undoes_swapped_labels():
+    """Two assemblies whose first coordinate crosses (a root sort swaps their labels
+    there) while the second keeps them apart: followed, each stays itself."""
+    t = np.linspace(0, 2 * np.pi, 200)
+    first = np.stack([np.sin(t), -np.sin(t)])
+    second = np.stack([np.ones_like(t), -np.ones_like(t)])
+    order = np.argsort(first, axis=0)  # labels by increasing first coordinate
+    points = np.stack([np.take_along_axis(first, order, axis=0),
+                       np.take_along_axis(second, order, axis=0)], axis=1)
+    ok = np.ones((2, t.size), dtype=bool)
+    for start in (0, 1):
+        index = follow_branch(points, ok, start)
+        path = np.take_along_axis(points, index[None, None], axis=0)[0]
+        assert np.all(path[1] == path[1, 0])  # never jumps to the other assembly
+        assert np.abs(np.diff(path[0])).max() < 2 * (t[1] - t[0])
+    # a break (one branch missing) keeps the labels through it
+    ok[0, 50:60] = False
+    index = follow_branch(points, ok, 1)
+    assert index.shape == t.shape
