@@ -115,7 +115,8 @@ def _rssr_roots(a, L, c, d, theta):
     p, q = 2 * c * dx, 2 * c * dz * np.ones_like(theta)
     rhs = L**2 - c**2 - (dx**2 + dy**2 + dz**2)
     h = np.hypot(p, q)
-    mid, half = np.arctan2(q, p), np.arccos(np.clip(rhs / h, -1, 1))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mid, half = np.arctan2(q, p), np.arccos(np.clip(rhs / h, -1, 1))
     return np.stack([mid + half, mid - half]), np.abs(rhs) <= h
 
 
@@ -230,7 +231,8 @@ def test_random_rssr_geometry_against_the_closed_form(a, L, c, r4, al4, be4, var
     ok = ~res.broken
     # every position the closed form says does not assemble is a chain break
     assert not (ok & ~exists).any()
-    margin = np.abs(np.cos(np.diff(roots, axis=0)[0] / 2)) > 1e-6  # away from tangency
+    # away from a tangency (the two assemblies meet: a dead point, rightly a break)
+    margin = np.abs(np.sin((roots[0] - roots[1]) / 2)) > 1e-6
     assert not (~ok & exists & margin).any()
     miss = _wrapped_distance(res.values["b3"][None], roots).min(axis=0)
     assert (miss[ok] < 1e-9).all()
@@ -417,3 +419,51 @@ def test_follow_branch_undoes_swapped_labels():
     ok[0, 50:60] = False
     index = follow_branch(points, ok, 1)
     assert index.shape == t.shape
+
+
+# --------------------------------------------------------------- landing-gear retraction
+GEAR = SPATIAL / "landing_gear_skewed_axis.yaml"
+
+
+def test_landing_gear_swing_angle_and_wheel_path_in_closed_form():
+    data = _data(GEAR)
+    res = _solve(data)
+    assert not res.broken.any()
+    v = data["vectors"]
+    a_vec = _frame(v[1]["r"], v[1]["a"], v[1]["b"])
+    d, length, b0 = v[3]["r"], v[4]["r"], math.radians(v[3]["b"])
+    s, alpha = res.values["r2"], res.values["a3"]
+    # the cylinder's length: d (xA cos b0 + zA sin b0) cos a3 + d yA sin a3 = (d² + |A|² − s²)/2
+    lhs = d * (a_vec[0] * math.cos(b0) + a_vec[2] * math.sin(b0)) * np.cos(alpha) \
+        + d * a_vec[1] * np.sin(alpha)
+    rhs = (d**2 + a_vec @ a_vec - s**2) / 2
+    assert np.abs(lhs - rhs).max() < 1e-15
+    assert np.all(np.cos(alpha) > 0) and np.all(np.sin(alpha) < 0)  # below the hinge, ahead
+    # the wheel axle W = −(vector 5): on the sphere of radius L, in the hinge's plane
+    w = -np.stack([c[0] for c in res.components(5)])
+    assert np.abs(np.linalg.norm(w, axis=0) - length).max() < 1e-14
+    assert np.abs(-math.sin(b0) * w[0] + math.cos(b0) * w[2]).max() < 1e-14
+    assert w[1, 0] < -0.99 * length and w[1, -1] > -0.2 * length  # down, then up
+
+
+def test_landing_gear_rates_by_finite_differences_and_the_chain_rule():
+    """dq/ds and d²q/ds² by central differences in the cylinder length's offset; the
+    time derivatives are then q̇ = q' ṡ and q̈ = q'' ṡ² + q' s̈ (ṡ, s̈ of the law, as the
+    cylinder's own r2 rates)."""
+    data = _data(GEAR)
+    res = _solve(data)
+    h = 1e-4  # m: truncation and round-off of the second difference both near 1e-8
+    runs = []
+    for step in (-h, 0.0, h):
+        moved = copy.deepcopy(data)
+        moved["vectors"][2]["r"] = {"argument": 1, "offset": step}
+        runs.append(_solve(moved))
+    s_dot, s_ddot = res.rates["r2"], res.accels["r2"]
+    # the axle's distance from O is fixed, and so is the plane it moves in
+    assert np.abs(res.rates["r5"]).max() < 1e-12 and np.abs(res.rates["b5"]).max() < 1e-12
+    for name in ("a2", "b2", "a3", "a5"):
+        lo, mid, hi = (r.values[name] for r in runs)
+        d1, d2 = (hi - lo) / (2 * h), (hi - 2 * mid + lo) / h**2
+        rate, accel = d1 * s_dot, d2 * s_dot**2 + d1 * s_ddot
+        assert np.abs(res.rates[name] - rate).max() <= 1e-6 * np.abs(rate).max() + 1e-12, name
+        assert np.abs(res.accels[name] - accel).max() <= 1e-6 * np.abs(accel).max(), name

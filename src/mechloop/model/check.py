@@ -17,6 +17,7 @@ from mechloop.model.indicator import IndicatorValue, indicator_problems
 from mechloop.model.intermediate import check_intermediate
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument, Units
 from mechloop.model.signals import MIN_TIME_STEP
+from mechloop.model.spatial import analyze_spatial
 from mechloop.model.structure import Structure, analyze
 from mechloop.model.synthesis import check_synthesis
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
@@ -45,7 +46,10 @@ def argument_kind(model: Model, number: int) -> Kind:
 
 def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     """Every problem of ``model``, in document order as far as practical."""
-    structure, problems = analyze(model)
+    if any(c.spatial for c in model.contours):  # spatial contours (issue 17)
+        structure, problems = analyze_spatial(model)
+    else:
+        structure, problems = analyze(model)
     problems = _check_units(model) + problems
     problems += _check_arguments(model)
     problems += check_intermediate(model, structure,

@@ -17,9 +17,11 @@ contours that need each other (a coupled block) are not solved in spatial models
 are refused with that message, as are the sections the spatial solver does not read
 (dynamics, synthesis, envelopes, ...).
 
-:func:`analyze_spatial` returns the same :class:`~mechloop.model.structure.Structure` as
-the planar analysis (module names ``Pr1``–``Pr19`` beside ``Pl1``–``Pl4``, three functions
-for a spatial contour) and every problem, located, with its fix.
+:func:`analyze_spatial` (called by :func:`mechloop.model.check.check_model` for a model
+with a spatial contour, in place of :func:`mechloop.model.structure.analyze`) returns the
+same :class:`~mechloop.model.structure.Structure` as the planar analysis (module names
+``Pr1``–``Pr19`` beside ``Pl1``–``Pl4``, three functions for a spatial contour) and every
+problem, located, with its fix.
 """
 
 from __future__ import annotations

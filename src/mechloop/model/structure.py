@@ -144,10 +144,6 @@ def _module_of(functions: list[str]) -> tuple[str, tuple[str, ...]]:
 
 def analyze(model: Model) -> tuple[Structure, list[Problem]]:
     """Resolve roles, classify contours and order them; collect every problem found."""
-    if any(c.spatial for c in model.contours):
-        from mechloop.model.spatial import analyze_spatial
-
-        return analyze_spatial(model)
     problems: list[Problem] = []
     for number, vector in model.vectors.items():
         if vector.b is not None:
