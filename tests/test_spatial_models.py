@@ -467,3 +467,26 @@ def test_landing_gear_rates_by_finite_differences_and_the_chain_rule():
         rate, accel = d1 * s_dot, d2 * s_dot**2 + d1 * s_ddot
         assert np.abs(res.rates[name] - rate).max() <= 1e-6 * np.abs(rate).max() + 1e-12, name
         assert np.abs(res.accels[name] - accel).max() <= 1e-6 * np.abs(accel).max(), name
+
+
+def test_what_is_not_built_for_spatial_models_is_refused_with_the_fix(tmp_path):
+    from mechloop.errors import HintedError, SolveError
+    from mechloop.solve.designs import solve_designs
+    from mechloop.solve.existence import assembles_throughout
+
+    model = mechloop.load_model(SPATIAL / "rssr.yaml")
+    for call in (lambda: solve_designs(model, {"r2": [0.11, 0.12]}),
+                 lambda: assembles_throughout(model),
+                 lambda: mechloop.solve_intermediate(model)):
+        with pytest.raises(SolveError, match="not built for a model with spatial contours"):
+            call()
+    runner = CliRunner()
+    for command in (["plot", str(SPATIAL / "rssr.yaml"), "plan", "-o", str(tmp_path / "p.png")],
+                    ["report", str(SPATIAL / "rssr.yaml"), "-o", str(tmp_path / "r.pdf")]):
+        result = runner.invoke(app, command)
+        assert result.exit_code == 2 and "spatial contours" in result.output, result.output
+        assert not (tmp_path / command[-1]).exists()
+    result = runner.invoke(app, ["plot", str(SPATIAL / "rssr.yaml"), "parameters", "-n",
+                                 "b3,db3", "-o", str(tmp_path / "b3.png")])
+    assert result.exit_code == 0, result.output
+    assert issubclass(SolveError, HintedError)  # the CLI prints it with its fix

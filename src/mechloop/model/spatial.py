@@ -252,3 +252,14 @@ def _order(infos: list[ContourInfo], problems: list[Problem]) -> list[int]:
                                 "break the cycle (make one of the linked parameters a "
                                 "constant or an argument), or solve the model as planar"))
         return [info.number for info in infos]
+
+
+def refuse_spatial(model: Model, what: str) -> None:
+    """Raise :class:`~mechloop.errors.SolveError` when ``model`` has a spatial contour:
+    ``what`` (e.g. "solving many designs at once") is not built for spatial models yet."""
+    if is_spatial(model):
+        from mechloop.errors import SolveError
+
+        raise SolveError(f"{what} is not built for a model with spatial contours yet",
+                         "solve it with mechloop.solve (mechloop solve), or vary its "
+                         "dimensions with mechloop sweep")
