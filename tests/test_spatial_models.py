@@ -490,3 +490,50 @@ def test_what_is_not_built_for_spatial_models_is_refused_with_the_fix(tmp_path):
                                  "b3,db3", "-o", str(tmp_path / "b3.png")])
     assert result.exit_code == 0, result.output
     assert issubclass(SolveError, HintedError)  # the CLI prints it with its fix
+
+
+# ------------------------------------------------------- a planar contour in another plane
+@pytest.mark.parametrize("plane", [{"normal": [1, 1, 1]}, {"a": 30, "b": 60},
+                                   {"normal": [0, 2, 0]}])
+def test_a_planar_contour_in_a_plane_beside_a_spatial_one(plane):
+    """The four-bar's loop spatial, its coupler-point loop planar in another plane: the
+    parameters are the planar model's, and the plane places the second loop's vectors."""
+    data = _data(ROOT / "examples" / "four_bar.yaml")
+    planar = _solve(data)
+    mixed = _as_spatial(data, {0: 2})
+    mixed["contours"][1]["plane"] = plane
+    res = _solve(mixed)
+    _assert_same(res, planar)
+    if "normal" in plane:
+        n = np.asarray(plane["normal"], float)
+    else:
+        a, b = math.radians(plane["a"]), math.radians(plane["b"])
+        n = np.array([math.cos(a) * math.cos(b), math.sin(a), math.cos(a) * math.sin(b)])
+    n /= np.linalg.norm(n)
+    total = np.zeros((3, 3, res.broken.size))
+    for number in (5, 6, 7):
+        comps = res.components(number)
+        v = np.stack([c[0] for c in comps])
+        assert np.abs(n @ v).max() < 1e-15  # in the plane
+        np.testing.assert_allclose(np.linalg.norm(v, axis=0), res.values[f"r{number}"],
+                                   rtol=1e-14)
+        for order in range(3):
+            total[order] += np.stack([c[order] for c in comps])
+            assert np.abs(n @ np.stack([c[order] for c in comps])).max() < 1e-12
+    assert np.abs(total).max() < 1e-12  # the loop closes in space, with its rates
+    frame = res.to_frame()
+    assert {"x7 [m]", "dz6 [m/s]", "ddy5 [m/s^2]"} <= set(frame.columns)
+
+
+def test_a_plane_is_refused_where_it_does_not_apply():
+    data = _data(ROOT / "examples" / "four_bar.yaml")
+    data["contours"][1]["plane"] = {"normal": [1, 0, 0]}
+    with pytest.raises(ModelError, match="no contour of the model is spatial"):
+        model_from_data(copy.deepcopy(data))
+    spatial = _data(SPATIAL / "rssr.yaml")
+    spatial["contours"][0]["plane"] = {"normal": [1, 0, 0]}
+    with pytest.raises(ModelError, match="a plane applies to a planar contour"):
+        model_from_data(copy.deepcopy(spatial))
+    spatial["contours"][0]["plane"] = {"normal": [0, 0, 0]}
+    with pytest.raises(ModelError, match="normal is zero"):
+        model_from_data(spatial)

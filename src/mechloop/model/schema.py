@@ -39,6 +39,7 @@ from mechloop.model.dynamic import (
 )
 from mechloop.model.elements import Damper, Spring
 from mechloop.model.gearing import GearMesh
+from mechloop.model.plane import Plane
 from mechloop.model.project import Project
 from mechloop.model.report_info import ReportInfo
 from mechloop.model.roles import FUNCTION
@@ -211,6 +212,10 @@ class Contour(_Frozen):
         False, description="a spatial contour (mechloop.model.spatial): its vectors have "
         "r, a (α) and b (β), three of them 'function'; a negative vector number in "
         "'vectors' subtracts that vector")
+    plane: Plane | None = Field(
+        None, description="a planar contour's plane in a model with spatial contours "
+        "(mechloop.model.plane): {normal: [nx, ny, nz]} or the normal's angles {a: .., "
+        "b: ..}; the XY plane when absent")
     name: str | None = None
     start: Literal["origin"] | TailPoint | HeadPoint | tuple[Scalar, Scalar] = Field(
         "origin", description="where the tail of the first vector lies: 'origin', the tail "

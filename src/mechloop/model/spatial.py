@@ -9,8 +9,9 @@ functions, and which three names the module of seed 000 table 2.1
 (:func:`mechloop.spatial.contour.classify`); ``variant`` picks the module's branch
 (1..its count) or ``auto`` (branch 1 at position 0, then continuity).
 
-The other contours of such a model are planar (in the XY plane: their vectors have no
-``b``, i.e. ``β = 0``) and are solved by the planar modules Pl1–Pl4; every parameter may
+The other contours of such a model are planar (their vectors have no ``b``; in the XY
+plane, or in the contour's ``plane``, :mod:`mechloop.model.plane`) and are solved by the
+planar modules Pl1–Pl4 in their plane's axes; every parameter may
 link to any other of its kind (α to α or to a planar angle, β to β), so planar and spatial
 contours are chained freely.  Contours are solved one after another in dependency order;
 contours that need each other (a coupled block) are not solved in spatial models yet and
@@ -29,6 +30,7 @@ from __future__ import annotations
 from graphlib import CycleError, TopologicalSorter
 
 from mechloop.errors import Problem
+from mechloop.model.plane import Plane, normal_of
 from mechloop.model.roles import is_function
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import (
@@ -41,6 +43,7 @@ from mechloop.model.structure import (
     _module_of,
     param_role,
 )
+from mechloop.model.units import UnitProblem, to_si
 from mechloop.spatial.contour import classify
 
 #: Sections of a model file that the spatial solver does not read yet.
@@ -52,6 +55,16 @@ LETTERS = "rab"
 def is_spatial(model: Model) -> bool:
     """Whether the model has a spatial contour."""
     return any(c.spatial for c in model.contours)
+
+
+def plane_normal(model: Model, plane: Plane | None) -> tuple[float, float, float]:
+    """The normal of a planar contour's ``plane`` (Z, the XY plane, when None)."""
+    if plane is None:
+        return (0.0, 0.0, 1.0)
+    if plane.normal is not None:
+        return plane.normal
+    unit = model.units.angle
+    return normal_of(to_si(plane.a, "angle", unit), to_si(plane.b, "angle", unit))
 
 
 def contour_signs(model: Model, index: int) -> list[tuple[int, float]]:
@@ -76,6 +89,15 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
     spatial_vectors: set[int] = set()
     holder: dict[int, int] = {}
     for ci, contour in enumerate(model.contours):
+        if contour.plane is not None and contour.spatial:
+            problems.append(Problem(("contours", ci, "plane"), f"contour {ci + 1} is "
+                                    "spatial; a plane applies to a planar contour",
+                                    "remove 'plane', or 'spatial: true'"))
+        elif contour.plane is not None:
+            try:
+                plane_normal(model, contour.plane)
+            except UnitProblem as exc:
+                problems.append(Problem(("contours", ci, "plane"), exc.message, exc.hint))
         seen: set[int] = set()
         for vi, entry in enumerate(contour.vectors):
             number = abs(entry) if contour.spatial else entry

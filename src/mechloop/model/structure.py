@@ -145,6 +145,12 @@ def _module_of(functions: list[str]) -> tuple[str, tuple[str, ...]]:
 def analyze(model: Model) -> tuple[Structure, list[Problem]]:
     """Resolve roles, classify contours and order them; collect every problem found."""
     problems: list[Problem] = []
+    for ci, contour in enumerate(model.contours):
+        if contour.plane is not None:
+            problems.append(Problem(("contours", ci, "plane"), f"contour {ci + 1} has a "
+                                    "plane, but no contour of the model is spatial: a plane "
+                                    "places a planar contour beside spatial ones",
+                                    "remove 'plane' (a planar model lies in the XY plane)"))
     for number, vector in model.vectors.items():
         if vector.b is not None:
             problems.append(Problem(("vectors", number, "b"), f"vector {number} has a "

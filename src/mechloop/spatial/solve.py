@@ -7,9 +7,11 @@ whole array of positions:
 * a spatial contour by its module Pr1–Pr19 (:mod:`mechloop.spatial.contour`): every branch
   at once, then the variant's branch (fixed, or followed by continuity from position 0
   with ``auto``), then the exact rates by the 3×3 Jacobian (:mod:`mechloop.spatial.rates`);
-* a planar contour (XY plane, ``β = 0``) by its module Pl1–Pl4, its rates by the same
-  3×3 systems with a unit Z vector of unknown length 0 as the third unknown (its column
-  is ``(0, 0, 1)``: the Z row gives 0 and the XY rows are exactly the planar 2×2 system).
+* a planar contour (its vectors without β; in the XY plane or in its ``plane``,
+  :mod:`mechloop.model.plane`, solved in that plane's axes) by its module Pl1–Pl4, its
+  rates by the same 3×3 systems with a unit Z vector of unknown length 0 as the third
+  unknown (its column is ``(0, 0, 1)``: the Z row gives 0 and the XY rows are exactly
+  the planar 2×2 system).
 
 A negative vector number in a spatial contour subtracts that vector: the closure is
 multiplied by the sign of the module's vector ``i`` (so its length keeps the module's
@@ -24,7 +26,7 @@ its value at position 0.  The arrays are ``(P,)``: a model is one design.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
@@ -32,8 +34,9 @@ from numpy.typing import NDArray
 
 from mechloop.errors import SolveError
 from mechloop.model.check import KIND_OF, argument_kind
+from mechloop.model.plane import plane_axes
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
-from mechloop.model.spatial import contour_signs
+from mechloop.model.spatial import contour_signs, plane_normal
 from mechloop.model.structure import ContourInfo, Structure, param_role
 from mechloop.model.units import to_si
 from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl3, solve_pl4
@@ -56,26 +59,40 @@ class SpatialResults(Results):
     derivatives (``x3 [m]``, ``dx3 [m/s]``, ``ddx3 [m/s^2]``, then y, z)."""
 
     spatial_vectors: tuple[int, ...] = ()
+    #: the in-plane axes ``(e1, e2)`` of every vector of a planar contour
+    axes: dict[int, tuple[Array, Array]] = field(default_factory=dict)
 
     def components(self, number: int) -> tuple[Triple, Triple, Triple]:
         """``(x, y, z)`` of vector ``number`` (m), each as (value, first, second
-        derivative): ``d(r u) = ṙ u + r (α̇ u_α + β̇ u_β)`` and its derivative."""
-        r, a, b = (self.values[f"{k}{number}"] for k in "rab")
-        dr, da, db = (self.rates[f"{k}{number}"] for k in "rab")
-        ddr, dda, ddb = (self.accels[f"{k}{number}"] for k in "rab")
-        e = _basis(a, b)
-        turn = da * e["a"] + db * e["b"]
-        value = r * e["u"]
-        rate = dr * e["u"] + r * turn
-        accel = (ddr * e["u"] + 2.0 * dr * turn + r * (dda * e["a"] + ddb * e["b"])
-                 + r * (-da**2 * e["u"] + 2.0 * da * db * e["ab"] + db**2 * e["bb"]))
+        derivative): ``d(r u) = ṙ u + r (α̇ u_α + β̇ u_β)`` and its derivative; a vector
+        of a planar contour is ``r (cos α e1 + sin α e2)`` in its plane's axes."""
+        if number in self.axes:
+            r, a = (self.values[f"{k}{number}"] for k in "ra")
+            dr, da = (self.rates[f"{k}{number}"] for k in "ra")
+            ddr, dda = (self.accels[f"{k}{number}"] for k in "ra")
+            e1, e2 = (x[:, None] for x in self.axes[number])
+            u = np.cos(a) * e1 + np.sin(a) * e2
+            n = -np.sin(a) * e1 + np.cos(a) * e2
+            value = r * u
+            rate = dr * u + r * da * n
+            accel = (ddr - r * da**2) * u + (2.0 * dr * da + r * dda) * n
+        else:
+            r, a, b = (self.values[f"{k}{number}"] for k in "rab")
+            dr, da, db = (self.rates[f"{k}{number}"] for k in "rab")
+            ddr, dda, ddb = (self.accels[f"{k}{number}"] for k in "rab")
+            e = _basis(a, b)
+            turn = da * e["a"] + db * e["b"]
+            value = r * e["u"]
+            rate = dr * e["u"] + r * turn
+            accel = (ddr * e["u"] + 2.0 * dr * turn + r * (dda * e["a"] + ddb * e["b"])
+                     + r * (-da**2 * e["u"] + 2.0 * da * db * e["ab"] + db**2 * e["bb"]))
         return tuple((value[i], rate[i], accel[i]) for i in range(3))  # type: ignore[return-value]
 
     def to_frame(self) -> pd.DataFrame:
         frame = super().to_frame()
         d1, d2 = self.derivative_units()
         flag = frame.pop("chain_break")
-        for number in self.spatial_vectors:
+        for number in sorted({*self.spatial_vectors, *self.axes}):
             if all(f"{k}{number}" in self.constant for k in "rab"):
                 continue  # a constant vector (as constant parameters, not tabulated)
             for axis, (v, dv, ddv) in zip("xyz", self.components(number), strict=True):
@@ -181,7 +198,13 @@ def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None 
             v, d, dd = params(name)
             values[name], rate[name], accel[name] = (np.where(broken, np.nan, x)
                                                      for x in (v, d, dd))
-    constant = frozenset(params.constant)
+    axes = {}
+    for info in structure.contours:
+        contour = model.contours[info.number - 1]
+        if not contour.spatial:
+            e1e2 = plane_axes(plane_normal(model, contour.plane))
+            axes.update({n: e1e2 for n in info.vectors})
+    constant = frozenset(params.constant | {f"b{n}" for n in axes})
     for name in constant:
         values[name] = params(name)[0]  # a constant stays defined on broken rows
     return SpatialResults(
@@ -190,7 +213,7 @@ def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None 
         argument_kinds={k: argument_kind(model, k) for k in model.arguments},
         values=values, rates=rate, accels=accel, constant=constant, broken=broken,
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)), analogs_of=analogs_of,
-        spatial_vectors=spatial)
+        spatial_vectors=spatial, axes=axes)
 
 
 def _break_reason(info: ContourInfo) -> str:
