@@ -200,6 +200,7 @@ class Contour(_Frozen):
     A planar contour has exactly two function parameters among its vectors.  The module
     type follows from them (Pl1 ``r,α`` of one vector; Pl2 two lengths; Pl3 a length and
     another vector's angle; Pl4 two angles); "vector 1" of the module is the first listed.
+    A ``spatial`` contour has three (:mod:`mechloop.model.spatial`: modules Pr1–Pr19).
     """
 
     vectors: list[int] = Field(min_length=2, description="vector numbers in the loop")
