@@ -537,3 +537,27 @@ def test_a_plane_is_refused_where_it_does_not_apply():
     spatial["contours"][0]["plane"] = {"normal": [0, 0, 0]}
     with pytest.raises(ModelError, match="normal is zero"):
         model_from_data(spatial)
+
+
+def test_chain_breaks_and_dead_points_are_reported_as_in_the_planar_core(tmp_path):
+    # a coupler too short to reach at some crank angles: a break, positions named
+    data = _rssr_data(0.04, 0.07, 0.08, 0.1, 30, 45, positions=36)
+    res = _solve(data)
+    _, exists = _rssr_roots(0.04, 0.07, 0.08, _frame(0.1, 30, 45), res.arguments[1])
+    assert (~exists).any() and exists.any()
+    (brk,) = res.breaks
+    assert brk.contour == 1 and brk.module == "Pr10"
+    np.testing.assert_array_equal(brk.positions, np.flatnonzero(~exists))
+    assert "no real solution" in brk.describe()
+    frame = res.to_frame()
+    assert frame.loc[~exists, "b3 [deg]"].isna().all()
+    assert np.isfinite(frame.loc[exists].drop(columns="chain_break").to_numpy(float)).all()
+    path = tmp_path / "short.yaml"
+    path.write_text(yaml.safe_dump(data), encoding="utf-8")
+    result = CliRunner().invoke(app, ["solve", str(path)])
+    assert result.exit_code == 0 and "chain break" in result.output
+    # the crank in line with the frame: the two assemblies meet (φ = 0), a dead point
+    res = _solve(_rssr_data(0.0625, 0.125, 0.0625, 0.125, 0, 0, positions=36))
+    (dead,) = res.breaks
+    assert "dead point" in dead.reason and list(dead.positions) == [0, 18, 36]
+    assert res.broken.sum() == 3
