@@ -475,7 +475,7 @@ def test_what_is_not_built_for_spatial_models_is_refused_with_the_fix(tmp_path):
     from mechloop.solve.existence import assembles_throughout
 
     model = mechloop.load_model(SPATIAL / "rssr.yaml")
-    for call in (lambda: solve_designs(model, {"r2": [0.11, 0.12]}),
+    for call in (lambda: solve_designs(model, {"r2": [0.11, 0.12]}, positions=[0, 1]),
                  lambda: assembles_throughout(model),
                  lambda: mechloop.solve_intermediate(model)):
         with pytest.raises(SolveError, match="not built for a model with spatial contours"):
@@ -561,3 +561,31 @@ def test_chain_breaks_and_dead_points_are_reported_as_in_the_planar_core(tmp_pat
     (dead,) = res.breaks
     assert "dead point" in dead.reason and list(dead.positions) == [0, 18, 36]
     assert res.broken.sum() == 3
+
+
+def test_many_designs_in_one_pass_are_the_designs_solved_one_by_one():
+    """``solve_designs`` on a spatial model: arrays ``(D, P)``, each row the solve of that
+    design's model (a constant, an argument offset and a link delta varied)."""
+    from mechloop.solve.designs import solve_designs
+
+    data = _data(GEAR)
+    model = model_from_data(copy.deepcopy(data))
+    over = {"r3": np.array([0.38, 0.40, 0.42]),     # a constant (m)
+            "r2": np.array([0.0, 0.002, -0.003]),   # the cylinder's argument offset (m)
+            "a4": np.radians([0.0, 5.0, -5.0])}     # the link delta of the wheel's strut
+    many = solve_designs(model, over)
+    assert many.broken.shape == (3, model.positions + 1) and not many.broken.any()
+    for row in range(3):
+        one = copy.deepcopy(data)
+        one["vectors"][3]["r"] = float(over["r3"][row])
+        one["vectors"][2]["r"] = {"argument": 1, "offset": float(over["r2"][row])}
+        one["vectors"][4]["a"] = {"link": "a3", "delta": float(np.degrees(over["a4"][row]))}
+        want = _solve(one)
+        for name in want.varying():
+            for what in ("values", "rates", "accels"):
+                np.testing.assert_allclose(getattr(many, what)[name][row],
+                                           getattr(want, what)[name], rtol=1e-12,
+                                           atol=1e-12, err_msg=f"{name} {what} {row}")
+    assert not any(c.any() for c in many.branch_changes.values())
+    with pytest.raises(Exception, match="cannot vary a3"):
+        solve_designs(model, {"a3": [0.1, 0.2]})

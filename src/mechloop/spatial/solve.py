@@ -35,6 +35,7 @@ from numpy.typing import NDArray
 from mechloop.errors import SolveError
 from mechloop.model.check import KIND_OF, argument_kind
 from mechloop.model.plane import plane_axes
+from mechloop.model.roles import is_function
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.spatial import contour_signs, plane_normal
 from mechloop.model.structure import ContourInfo, Structure, param_role
@@ -129,22 +130,30 @@ def _inputs(model: Model, analogs_of: int | None) -> tuple[Signal | None, dict[i
 
 
 class _Params:
-    """Every parameter over positions, SI, resolved on demand from its role."""
+    """Every parameter over the positions, SI, resolved on demand from its role; arrays
+    shaped ``shape``: ``(P,)``, or ``(D, P)`` when ``over`` gives some constants, link
+    deltas or argument offsets one value per design (arrays ``(D,)``, SI)."""
 
-    def __init__(self, model: Model, structure: Structure, args: dict[int, Signal]):
+    def __init__(self, model: Model, structure: Structure, args: dict[int, Signal],
+                 over: dict[str, Array] | None = None):
         self.model, self.structure, self.args = model, structure, args
-        self.n_pos = model.positions + 1
+        self.over = {k: np.asarray(v, dtype=float)[:, None] for k, v in (over or {}).items()}
+        n_designs = {v.shape[0] for v in self.over.values()}
+        self.shape: tuple[int, ...] = (*n_designs, model.positions + 1)
         self.known: dict[str, Triple] = {}
         self.constant: set[str] = set()
 
-    def si(self, name: str, value: float | str) -> float:
+    def si(self, name: str, value: float | str) -> Array | float:
+        """The number ``value`` of parameter ``name`` in SI, or its designs' values."""
+        if name in self.over:
+            return self.over[name]
         kind = KIND_OF[name[0]]
         return to_si(value, kind, getattr(self.model.units, kind))
 
     def __call__(self, name: str) -> Triple:
         if name in self.known:
             return self.known[name]
-        zero = np.zeros(self.n_pos)
+        zero = np.zeros(self.shape)
         role = param_role(self.model, name)
         if isinstance(role, ArgumentRole):
             sig = self.args[role.argument]
@@ -152,19 +161,68 @@ class _Params:
         elif isinstance(role, LinkRole):
             chain = self.structure.links[name]
             root = self(chain.root)
-            ratios = chain.ratios or (1.0,) * len(chain.deltas)
-            delta, factor = 0.0, 1.0
-            for k, d in zip(ratios, chain.deltas, strict=True):
-                delta += factor * self.si(name, d)
-                factor *= k
+            # p = k·q + Δ step by step: the composed factor and delta (each step's own Δ)
+            delta: Array | float = 0.0
+            factor = 1.0
+            current = name
+            while isinstance(step := param_role(self.model, current), LinkRole):
+                delta = delta + factor * self.si(current, step.delta)
+                factor *= float(step.ratio)
+                current = step.link
             out = (factor * root[0] + delta, factor * root[1], factor * root[2])
             if chain.root in self.constant:
                 self.constant.add(name)
         else:
-            out = (np.full(self.n_pos, self.si(name, role)), zero, zero.copy())
+            out = (self.si(name, role) + zero, zero, zero)
             self.constant.add(name)
-        self.known[name] = out
-        return out
+        out = tuple(np.broadcast_to(x, self.shape) for x in out)
+        self.known[name] = out  # type: ignore[assignment]
+        return out  # type: ignore[return-value]
+
+
+@dataclass
+class _Solved:
+    """Every contour solved: the parameters, and per contour where it has no solution,
+    its dead points and the sign of its Jacobian (the assembly branch; 0 where not
+    regular), each shaped like the parameters."""
+
+    params: _Params
+    no_solution: dict[int, NDArray[np.bool_]]
+    dead: dict[int, NDArray[np.bool_]]
+    sign: dict[int, NDArray[np.int8]]
+    broken: NDArray[np.bool_]
+
+
+def _solve_all(model: Model, structure: Structure, args: dict[int, Signal],
+               over: dict[str, Array] | None = None) -> _Solved:
+    params = _Params(model, structure, args, over)
+    broken = np.zeros(params.shape, dtype=bool)
+    out = _Solved(params, {}, {}, {}, broken)
+    with np.errstate(all="ignore"):
+        for info in structure.ordered():
+            no_solution, dead, sign = _solve_contour(model, info, params)
+            out.no_solution[info.number], out.dead[info.number] = no_solution, dead
+            out.sign[info.number] = sign
+            broken |= no_solution | dead
+    return out
+
+
+def _axes(model: Model, structure: Structure) -> dict[int, tuple[Array, Array]]:
+    """The in-plane axes of every vector of a planar contour."""
+    axes = {}
+    for info in structure.contours:
+        contour = model.contours[info.number - 1]
+        if not contour.spatial:
+            e1e2 = plane_axes(plane_normal(model, contour.plane))
+            axes.update({n: e1e2 for n in info.vectors})
+    return axes
+
+
+def _names(model: Model, structure: Structure) -> tuple[list[str], tuple[int, ...]]:
+    spatial = tuple(sorted(n for info in structure.contours
+                           if model.contours[info.number - 1].spatial for n in info.vectors))
+    return [f"{letter}{number}" for number in sorted(model.vectors)
+            for letter in ("rab" if number in spatial else "ra")], spatial
 
 
 def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None = None
@@ -175,38 +233,28 @@ def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None 
     Derivatives are with respect to time, or the analogs with respect to argument
     ``analogs_of`` (or argument 1 without model time), as in the planar solve.
     """
-    n_pos = model.positions + 1
     time, args = _inputs(model, analogs_of)
-    params = _Params(model, structure, args)
-    broken = np.zeros(n_pos, dtype=bool)
+    solved = _solve_all(model, structure, args)
+    params, broken = solved.params, solved.broken
     breaks: list[ChainBreak] = []
-    with np.errstate(all="ignore"):
-        for info in structure.ordered():
-            no_solution, dead = _solve_contour(model, info, params)
-            for reason, mask in ((_break_reason(info), no_solution & ~broken),
-                                 (DEAD_POINT, dead & ~no_solution & ~broken)):
-                if mask.any():
-                    breaks.append(ChainBreak(info.number, info.module, np.flatnonzero(mask),
-                                             reason))
-            broken |= no_solution | dead
-    spatial = tuple(sorted(n for info in structure.contours
-                           if model.contours[info.number - 1].spatial for n in info.vectors))
+    seen = np.zeros_like(broken)
+    for info in structure.ordered():
+        no_solution, dead = solved.no_solution[info.number], solved.dead[info.number]
+        for reason, mask in ((_break_reason(info), no_solution & ~seen),
+                             (DEAD_POINT, dead & ~no_solution & ~seen)):
+            if mask.any():
+                breaks.append(ChainBreak(info.number, info.module, np.flatnonzero(mask),
+                                         reason))
+        seen |= no_solution | dead
+    names, spatial = _names(model, structure)
     values, rate, accel = {}, {}, {}
-    for number in sorted(model.vectors):
-        for letter in "rab" if number in spatial else "ra":
-            name = f"{letter}{number}"
-            v, d, dd = params(name)
-            values[name], rate[name], accel[name] = (np.where(broken, np.nan, x)
-                                                     for x in (v, d, dd))
-    axes = {}
-    for info in structure.contours:
-        contour = model.contours[info.number - 1]
-        if not contour.spatial:
-            e1e2 = plane_axes(plane_normal(model, contour.plane))
-            axes.update({n: e1e2 for n in info.vectors})
+    for name in names:
+        values[name], rate[name], accel[name] = (np.where(broken, np.nan, x)
+                                                 for x in params(name))
+    axes = _axes(model, structure)
     constant = frozenset(params.constant | {f"b{n}" for n in axes})
     for name in constant:
-        values[name] = params(name)[0]  # a constant stays defined on broken rows
+        values[name] = np.array(params(name)[0])  # a constant stays defined on broken rows
     return SpatialResults(
         model=model, structure=structure, time=None if time is None else time.value,
         arguments={k: s.value for k, s in args.items()},
@@ -214,6 +262,52 @@ def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None 
         values=values, rates=rate, accels=accel, constant=constant, broken=broken,
         breaks=tuple(sorted(breaks, key=lambda b: b.contour)), analogs_of=analogs_of,
         spatial_vectors=spatial, axes=axes)
+
+
+def solve_spatial_designs(model: Model, structure: Structure, overrides: dict[str, Array],
+                          *, analogs_of: int | None = None):
+    """``D`` designs of a model with spatial contours at every position in one vectorized
+    pass (``overrides``: constants, link deltas or argument offsets, one value per
+    design, SI): :class:`~mechloop.solve.designs.DesignResults` with arrays ``(D, P)``,
+    derivatives included."""
+    from mechloop.solve.designs import DesignResults
+
+    time, args = _inputs(model, analogs_of)
+    names, _ = _names(model, structure)
+    unknown = sorted(set(overrides) - {n for n in names
+                                       if not is_function(param_role(model, n))})
+    if unknown:
+        raise SolveError(f"cannot vary {', '.join(unknown)}: only constants, link deltas "
+                         "and argument offsets can differ between designs",
+                         "vary a parameter whose role is a number, a link or an argument")
+    over = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in overrides.items()}
+    if len({v.shape for v in over.values()}) > 1 or any(v.ndim != 1 for v in over.values()):
+        raise SolveError("every varied parameter needs one value per design",
+                         "pass 1-D arrays of one length")
+    solved = _solve_all(model, structure, args, over)
+    params, broken = solved.params, solved.broken
+    values, rate, accel = {}, {}, {}
+    for name in names:
+        v, d, dd = params(name)
+        if name in params.constant:
+            values[name], rate[name], accel[name] = v, d, dd
+        else:
+            values[name], rate[name], accel[name] = (np.where(broken, np.nan, x)
+                                                     for x in (v, d, dd))
+    changes = {}
+    for number, sign in solved.sign.items():
+        flat = sign.reshape(-1, sign.shape[-1])
+        # the sign at the previous regular position, carried over the irregular ones
+        index = np.where(flat != 0, np.arange(flat.shape[-1]), 0)
+        np.maximum.accumulate(index, axis=-1, out=index)
+        last = np.take_along_axis(flat, index, axis=-1)
+        flips = (flat[:, 1:] != 0) & (last[:, :-1] != 0) & (flat[:, 1:] != last[:, :-1])
+        changes[number] = flips.any(axis=-1).reshape(sign.shape[:-1])
+    return DesignResults(
+        model=model, arguments={k: s.value for k, s in args.items()},
+        time=None if time is None else time.value, values=values, rates=rate,
+        accels=accel, broken=broken, no_solution=solved.no_solution, dead=solved.dead,
+        branch_changes=changes)
 
 
 def _break_reason(info: ContourInfo) -> str:
@@ -224,17 +318,18 @@ def _break_reason(info: ContourInfo) -> str:
 
 
 def _solve_contour(model: Model, info: ContourInfo, params: _Params
-                   ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
+                   ) -> tuple[NDArray[np.bool_], NDArray[np.bool_], NDArray[np.int8]]:
     """Solve one contour, adding its functions to ``params``; returns the positions with
-    no real solution and the dead points."""
+    no real solution, the dead points and the sign of the Jacobian (0 where neither
+    regular)."""
     contour = model.contours[info.number - 1]
     signs = contour_signs(model, info.number - 1)
     letters = "rab" if contour.spatial else "ra"
     unknown = set(info.functions)
     found = [(n, k) for n, _ in signs for k in letters if f"{k}{n}" in unknown]
     sign_of = dict(signs)
-    n_pos = params.n_pos
-    zero = np.zeros(n_pos)
+    shape = params.shape
+    zero = np.zeros(shape)
 
     def get(n: int, k: str) -> Triple:
         if k == "b" and not contour.spatial:
@@ -242,7 +337,7 @@ def _solve_contour(model: Model, info: ContourInfo, params: _Params
         return params(f"{k}{n}")
 
     carriers = {n for n, _ in found}
-    s = [np.zeros(n_pos) for _ in range(3)]
+    s = [np.zeros(shape) for _ in range(3)]
     for n, sign in signs:
         if n in carriers:
             continue
@@ -272,7 +367,7 @@ def _solve_contour(model: Model, info: ContourInfo, params: _Params
         points = _branch_points(order, vals, get, n_branch)
         index = follow_branch(points, ok, 0)
     else:
-        index = np.full(n_pos, (1 if info.variant == "auto" else info.variant) - 1)
+        index = np.full(shape, (1 if info.variant == "auto" else info.variant) - 1)
     chosen = [np.take_along_axis(v, index[None], axis=0)[0] for v in vals]
     good = np.take_along_axis(ok, index[None], axis=0)[0] & np.isfinite(s).all(axis=0)
     for (n, k), v in zip(order, chosen, strict=True):
@@ -281,20 +376,22 @@ def _solve_contour(model: Model, info: ContourInfo, params: _Params
     # exact rates by the 3×3 Jacobian of the whole contour (signed lengths)
     numbers = [n for n, _ in signs]
     triples = {k: [get(n, k) for n in numbers] for k in "rab"}
-    sgn = np.array([sign_of[n] for n in numbers])[:, None]
+    sgn = np.array([sign_of[n] for n in numbers]).reshape((-1,) + (1,) * len(shape))
     stacked = {k: [np.stack([t[i] for t in triples[k]]) for i in range(3)] for k in "rab"}
     r, dr, ddr = (sgn * x for x in stacked["r"])
     a, da, dda = stacked["a"]
     b, db, ddb = stacked["b"]
     slots = [(numbers.index(n), k) for n, k in order]
     if not contour.spatial:  # the planar contour's third unknown: a unit Z vector
-        pad = np.zeros((1, n_pos))
+        pad = np.zeros((1, *shape))
         r, dr, ddr, a, da, dda, db, ddb = (np.concatenate([x, pad]) for x in
                                           (r, dr, ddr, a, da, dda, db, ddb))
-        b = np.concatenate([b, np.full((1, n_pos), np.pi / 2)])
+        b = np.concatenate([b, np.full((1, *shape), np.pi / 2)])
         slots.append((len(numbers), "r"))
-    dead = good & (_jacobian_sine(r, a, b, slots) < SINGULAR_SIN)
+    det, degenerate = _jacobian_sine(r, a, b, slots)
+    dead = good & ((np.abs(det) < SINGULAR_SIN) | degenerate)
     good &= ~dead
+    sign = np.where(good, np.sign(det), 0).astype(np.int8)
     d1 = rates(r, a, b, dr, da, db, slots)[:3]
     dr, da, db = (_filled(x, slots, name, d1) for x, name in ((dr, "r"), (da, "a"), (db, "b")))
     d2 = accelerations(r, a, b, dr, da, db, ddr, dda, ddb, slots)[:3]
@@ -305,7 +402,7 @@ def _solve_contour(model: Model, info: ContourInfo, params: _Params
             value = _continuous(value, good, base_turn=k == "a")
         params.known[f"{k}{n}"] = (value, np.where(good, scale * v1, np.nan),
                                    np.where(good, scale * v2, np.nan))
-    return ~good & ~dead, dead
+    return ~good & ~dead, dead, sign
 
 
 def _filled(x: Array, slots: list[tuple[int, str]], letter: str, solved: tuple) -> Array:
@@ -324,22 +421,33 @@ def _continuous(angle: Array, good: NDArray[np.bool_], *, base_turn: bool) -> Ar
         return angle
     out = unwrap_angles(angle, good)
     if not base_turn:
-        first = int(np.argmax(good))
-        out = out + (angle[first] - out[first])
+        first = np.argmax(good, axis=-1)[..., None]  # the first good position of a row
+        out = out + (np.take_along_axis(angle, first, axis=-1)
+                     - np.take_along_axis(out, first, axis=-1))
     return out
 
 
-def _jacobian_sine(r: Array, a: Array, b: Array, slots: list[tuple[int, str]]) -> Array:
-    """|det| of the contour's Jacobian with its columns scaled to unit length: 1 for
-    orthogonal columns, 0 at a dead point (P,)."""
-    cols = []
+def _jacobian_sine(r: Array, a: Array, b: Array, slots: list[tuple[int, str]]
+                   ) -> tuple[Array, NDArray[np.bool_]]:
+    """The contour's Jacobian in the unit frame of its unknowns' vectors: the determinant
+    of the columns ``u`` (a length), ``u_α`` (an elevation), ``u_β / cos α`` (a rotation)
+    — ±1 for orthogonal columns, 0 at a dead point, its sign the assembly branch (no
+    parametrization's sign in it) — and where a column itself vanishes (``r = 0`` under
+    an angle, ``cos α = 0`` under a rotation: also a dead point), relative to the
+    contour's longest vector."""
+    size = np.abs(r).max(axis=0)
+    cols, degenerate = [], np.zeros(np.shape(size), dtype=bool)
     for v, k in slots:
         e = _basis(a[v], b[v])
-        col = e["u"] if k == "r" else r[v] * e[k]
-        norm = np.sqrt((col * col).sum(axis=0))
-        cols.append(col / np.where(norm > 0, norm, np.inf))
-    mat = np.moveaxis(np.stack(cols), (0, 1), (-1, -2))
-    return np.abs(np.linalg.det(np.where(np.isfinite(mat), mat, 0.0)))
+        if k == "r":
+            cols.append(e["u"])
+            continue
+        scale = r[v] * (1.0 if k == "a" else np.cos(a[v]))
+        degenerate |= ~(np.abs(scale) > SINGULAR_SIN * size)
+        cols.append(e["a"] if k == "a" else np.stack(
+            [-np.sin(b[v]), np.zeros_like(b[v]), np.cos(b[v])]))
+    mat = np.moveaxis(np.stack(np.broadcast_arrays(*cols)), (0, 1), (-1, -2))
+    return np.linalg.det(np.where(np.isfinite(mat), mat, 0.0)), degenerate
 
 
 def _planar_branches(module: str, order, s: list[Array], get) -> tuple[tuple[Array, ...],
