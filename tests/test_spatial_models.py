@@ -589,3 +589,37 @@ def test_many_designs_in_one_pass_are_the_designs_solved_one_by_one():
     assert not any(c.any() for c in many.branch_changes.values())
     with pytest.raises(Exception, match="cannot vary a3"):
         solve_designs(model, {"a3": [0.1, 0.2]})
+
+
+def _pr14(variant) -> dict:
+    """A loop with unknowns r2, a3, a4 (module Pr14: four roots of a trigonometric
+    quartic, sorted by value, two of them real only over part of the cycle)."""
+    return {"units": {"length": "m", "angle": "deg"}, "positions": 180,
+            "arguments": {1: {"table": {0: 0, 180: 360}}},
+            "vectors": {1: {"r": 0.3, "a": {"argument": 1}, "b": 0},
+                        2: {"r": "function", "a": 20, "b": 70},
+                        3: {"r": 1.0, "a": "function", "b": 30},
+                        4: {"r": 0.9, "a": "function", "b": -60},
+                        5: {"r": 0.8, "a": 10, "b": 40}},
+            "contours": [{"vectors": [1, 2, 3, 4, -5], "spatial": True,
+                          "variant": variant}]}
+
+
+def test_auto_follows_an_assembly_where_sorted_roots_change_labels():
+    def steps(res):
+        pts = np.stack([c[0] for n in (2, 3, 4) for c in res.components(n)])
+        return np.abs(np.diff(pts, axis=1)).sum(axis=0)
+
+    fixed, auto = _solve(_pr14(1)), _solve(_pr14("auto"))
+    assert fixed.structure.contours[0].module == "Pr14"
+    assert not fixed.broken.any() and not auto.broken.any()
+    np.testing.assert_array_equal(auto.values["a3"][:5], fixed.values["a3"][:5])  # from 1
+    jump = steps(fixed)
+    assert jump.max() > 20 * np.median(jump)  # branch 1 of the sorted roots jumps
+    smooth = steps(auto)
+    assert smooth.max() < 2 * np.median(smooth)  # followed, the assembly moves smoothly
+    # and it is a solution: the loop closes, its velocities and accelerations too
+    for order in range(3):
+        total = sum(sign * np.stack([c[order] for c in auto.components(n)])
+                    for n, sign in ((1, 1), (2, 1), (3, 1), (4, 1), (5, -1)))
+        assert np.abs(total).max() < 1e-12

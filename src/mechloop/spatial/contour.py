@@ -147,9 +147,10 @@ def follow_branch(points: Array, ok: NDArray[np.bool_], start: int) -> NDArray[n
 
     ``points`` ``(B, C, ..., P)``: per branch, ``C`` Cartesian coordinates that the
     unknowns move (comparable distances); ``ok`` ``(B, ..., P)``.  Between two positions
-    each branch goes to the nearest branch of the next position when that pairing is a
-    permutation of the branches that exist at both; otherwise (a break, a branch
-    appearing or vanishing, two branches meeting) the labels are kept.  The steps are
+    each existing branch goes on to the nearest existing branch of the next position
+    (roots sorted by value change labels where others appear or vanish), the branches
+    with no continuation to the labels left over, in order; where two branches would go
+    to the same one (they meet) the labels are kept.  The steps are
     composed by a parallel prefix scan (``log₂ P`` vectorized rounds, no loop over
     positions).  Returns ``(..., P)``.
     """
@@ -158,22 +159,27 @@ def follow_branch(points: Array, ok: NDArray[np.bool_], start: int) -> NDArray[n
     if n_branch == 1 or lead[-1] < 2:
         return np.full(lead, start, dtype=np.int64)
     prev, nxt = points[..., :-1], points[..., 1:]
-    # dist[b, c, ..., p]: from branch b at p − 1 to branch c at p
+    # dist[b, c, ..., p]: from branch b at p − 1 to branch c at p (both existing)
     with np.errstate(invalid="ignore"):
         dist = np.abs(prev[:, None] - nxt[None, :]).sum(axis=2)
     both = ok[:, None, ..., :-1] & ok[None, :, ..., 1:]
-    dist = np.where(both, dist, np.inf)
-    step = np.moveaxis(np.argmin(dist, axis=1), 0, -1)  # (..., P−1, B)
+    dist = np.moveaxis(np.where(both & np.isfinite(dist), dist, np.inf), (0, 1), (-2, -1))
+    pick = np.argmin(dist, axis=-1)  # (..., P−1, B): the nearest branch at p
+    valid = np.isfinite(np.min(dist, axis=-1))
     labels = np.arange(n_branch)
-    exists = np.moveaxis(ok[..., :-1] & ok[..., 1:], 0, -1)
-    step = np.where(exists, step, labels)
-    # a permutation of the branches that exist at both positions, else keep the labels
-    moved = exists & (step != labels)
-    unique = np.ones(step.shape[:-1], dtype=bool)
+    used = np.zeros(pick.shape, dtype=bool)
+    unique = np.ones(pick.shape[:-1], dtype=bool)
     for b in range(n_branch):  # a loop over the branches (≤ 8), not over positions
-        unique &= np.count_nonzero(step == b, axis=-1) <= 1
-    keep = ~unique | (moved & ~np.take_along_axis(exists, step, axis=-1)).any(axis=-1)
-    step = np.where(keep[..., None], labels, step)
+        hits = np.count_nonzero(valid & (pick == b), axis=-1)
+        unique &= hits <= 1
+        used[..., b] = hits > 0
+    # the branches with no continuation take the unused labels, in order of their labels
+    free_from = np.argsort(np.where(valid, n_branch + labels, labels), axis=-1, kind="stable")
+    free_to = np.argsort(np.where(used, n_branch + labels, labels), axis=-1, kind="stable")
+    filler = np.empty_like(pick)
+    np.put_along_axis(filler, free_from, free_to, axis=-1)
+    step = np.where(valid, pick, filler)
+    step = np.where(unique[..., None], step, labels)  # two meet: keep the labels
     first = np.broadcast_to(np.arange(n_branch), (*step.shape[:-2], 1, n_branch))
     comp = np.concatenate([first, step], axis=-2)  # (..., P, B): position p from p − 1
     shift = 1
