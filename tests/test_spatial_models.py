@@ -623,3 +623,23 @@ def test_auto_follows_an_assembly_where_sorted_roots_change_labels():
         total = sum(sign * np.stack([c[order] for c in auto.components(n)])
                     for n, sign in ((1, 1), (2, 1), (3, 1), (4, 1), (5, -1)))
         assert np.abs(total).max() < 1e-12
+
+
+def test_the_second_convention_gives_the_same_vectors_in_its_own_ranges():
+    """Seed 000 sec. 1.1: convention 2 (β a full turn, α a half turn) describes the same
+    coupler of the RSSR; its angles stay in their ranges (continuous from position 0)."""
+    data = _data(SPATIAL / "rssr.yaml")
+    one = _solve(data)
+    data["contours"][0]["convention"] = 2
+    two = _solve(data)
+    for k in range(3):
+        for order in range(3):
+            np.testing.assert_allclose(two.components(2)[k][order],
+                                       one.components(2)[k][order], atol=1e-13)
+    assert np.abs(two.values["a2"]).max() <= np.pi / 2
+    assert np.abs(one.values["b2"]).max() <= np.pi / 2
+    np.testing.assert_allclose(two.values["b3"], one.values["b3"], atol=1e-13)
+    planar = _data(ROOT / "examples" / "four_bar.yaml")
+    planar["contours"][0]["convention"] = 2
+    with pytest.raises(ModelError, match="applies to a spatial contour"):
+        model_from_data(planar)

@@ -213,6 +213,11 @@ class Contour(_Frozen):
         False, description="a spatial contour (mechloop.model.spatial): its vectors have "
         "r, a (α) and b (β), three of them 'function'; a negative vector number in "
         "'vectors' subtracts that vector")
+    convention: Literal[1, 2] = Field(
+        1, description="a spatial contour's parameter ranges (seed 000 sec. 1.1) for a "
+        "vector whose α and β it both solves: 1 — α a full turn, β a half turn (-90, 90] "
+        "(β = 0: the planar XY contour); 2 — β a full turn, α a half turn [-90, 90] "
+        "(azimuth and elevation)")
     plane: Plane | None = Field(
         None, description="a planar contour's plane in a model with spatial contours "
         "(mechloop.model.plane): {normal: [nx, ny, nz]} or the normal's angles {a: .., "

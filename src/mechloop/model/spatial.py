@@ -89,6 +89,10 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
     spatial_vectors: set[int] = set()
     holder: dict[int, int] = {}
     for ci, contour in enumerate(model.contours):
+        if contour.convention != 1 and not contour.spatial:
+            problems.append(Problem(("contours", ci, "convention"), f"contour {ci + 1} is "
+                                    "planar; a convention of parameter ranges applies to a "
+                                    "spatial contour", "remove 'convention'"))
         if contour.plane is not None and contour.spatial:
             problems.append(Problem(("contours", ci, "plane"), f"contour {ci + 1} is "
                                     "spatial; a plane applies to a planar contour",

@@ -146,6 +146,10 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
     """Resolve roles, classify contours and order them; collect every problem found."""
     problems: list[Problem] = []
     for ci, contour in enumerate(model.contours):
+        if contour.convention != 1:
+            problems.append(Problem(("contours", ci, "convention"), f"contour {ci + 1} is "
+                                    "planar; a convention of parameter ranges applies to a "
+                                    "spatial contour", "remove 'convention'"))
         if contour.plane is not None:
             problems.append(Problem(("contours", ci, "plane"), f"contour {ci + 1} has a "
                                     "plane, but no contour of the model is spatial: a plane "

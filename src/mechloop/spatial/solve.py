@@ -353,7 +353,8 @@ def _solve_contour(model: Model, info: ContourInfo, params: _Params
         eff = {n: flip * sign_of[n] for n in choice.roles}
         known = {(n, k): (eff[n] if k == "r" else 1.0) * get(n, k)[0]
                  for n in choice.roles for k in "rab" if (n, k) not in choice.unknowns}
-        vals, ok = run_module(choice, (flip * s[0], flip * s[1], flip * s[2]), known)
+        vals, ok = run_module(choice, (flip * s[0], flip * s[1], flip * s[2]), known,
+                              convention=contour.convention)
         vals = tuple(eff[n] * v if k == "r" else v
                      for (n, k), v in zip(choice.unknowns, vals, strict=True))
         order = choice.unknowns
@@ -399,7 +400,8 @@ def _solve_contour(model: Model, info: ContourInfo, params: _Params
         scale = sgn[slot[0], 0] if k == "r" else 1.0
         value = params.known[f"{k}{n}"][0]
         if k == "a" or (k == "b" and contour.spatial):
-            value = _continuous(value, good, base_turn=k == "a")
+            # α from [0, 2π) as the planar core; β, and α in convention 2, from their own
+            value = _continuous(value, good, base_turn=k == "a" and contour.convention == 1)
         params.known[f"{k}{n}"] = (value, np.where(good, scale * v1, np.nan),
                                    np.where(good, scale * v2, np.nan))
     return ~good & ~dead, dead, sign
