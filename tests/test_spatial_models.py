@@ -643,3 +643,24 @@ def test_the_second_convention_gives_the_same_vectors_in_its_own_ranges():
     planar["contours"][0]["convention"] = 2
     with pytest.raises(ModelError, match="applies to a spatial contour"):
         model_from_data(planar)
+
+
+def test_a_rotation_linked_with_a_ratio_follows_its_source_exactly():
+    """b1 = 0.5·b5 + 10° (b5 driven by argument 1, a vector of another contour) drives
+    the spherical four-bar over half a turn from 10° in the same time: the same motion as
+    its argument so given, values and time derivatives."""
+    data = _data(SPATIAL / "spherical_four_bar.yaml")
+    linked = copy.deepcopy(data)
+    linked["vectors"][1]["b"] = {"link": "b5", "ratio": 0.5, "delta": 10}
+    linked["vectors"][5] = {"r": 100, "a": 0, "b": {"argument": 1}}
+    linked["vectors"][6] = {"r": "function", "a": "function", "b": "function"}
+    linked["contours"].append({"vectors": [5, 6], "spatial": True})
+    direct = copy.deepcopy(data)
+    direct["arguments"][1] = {"table": {0: 10, 72: 190}}
+    got, want = _solve(linked), _solve(direct)
+    assert not got.broken.any() and got.structure.contours[1].module == "Pr1"
+    for name in ("b1", "a2", "b2", "a3"):
+        for what in ("values", "rates", "accels"):
+            np.testing.assert_allclose(getattr(got, what)[name], getattr(want, what)[name],
+                                       rtol=1e-12, atol=1e-12, err_msg=f"{name} {what}")
+    np.testing.assert_allclose(got.rates["b1"], 0.5 * got.rates["b5"], rtol=1e-15)
