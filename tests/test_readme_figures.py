@@ -458,6 +458,8 @@ FIGURES: list[tuple[str, str, tuple]] = [
                                       "test_the_james_train_textbook_ratios")),
     (R, r"`a = (?P<fig>56\.8)` mm", ("test", "tests/test_gears_published.py::"
                                      "test_the_sun_planet_pair_from_its_printed_shifts")),
+    (R, r"the planar results to (?P<fig>1e-12)", ("test", "tests/test_spatial_models.py::"
+     "test_planar_four_bar_written_as_spatial_gives_the_planar_results")),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row
