@@ -458,6 +458,8 @@ FIGURES: list[tuple[str, str, tuple]] = [
                                       "test_the_james_train_textbook_ratios")),
     (R, r"`a = (?P<fig>56\.8)` mm", ("test", "tests/test_gears_published.py::"
                                      "test_the_sun_planet_pair_from_its_printed_shifts")),
+    (R, r"the planar results to (?P<fig>1e-12)", ("test", "tests/test_spatial_models.py::"
+     "test_planar_four_bar_written_as_spatial_gives_the_planar_results")),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row
@@ -470,7 +472,7 @@ COURSE_DIAGRAM = "the assumed indicator diagram behind the gas-force tables (che
     "tests/test_course_models_loads.py)"
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
-    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
+    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|GOST 2\.105|KHK Gear Technical Reference \(sec\. "
            r"4\.3", "a cited standard or reference"),
     ("planetary_choice.yaml", r"within 1 %", "the example's search.tolerance (0.01)"),
     (R, r"z 21/43 with\s+shifts 0\.4380/0\.0426", "the printed inputs of the Kos example "

@@ -3,7 +3,8 @@
 The messages the web application shares with the command line (``the increment needs one
 parameter``, ``the model has no synthesis task``, ``the request is …``) are entries of
 :mod:`mechloop.messages.ru.views`; the operating system's reasons (``Address already in
-use``) too.
+use``) too.  The form editing's messages (web/edit.py) name the key paths of the model
+(``vectors[1].r``) and the values sent as written.
 """
 
 from __future__ import annotations
@@ -115,4 +116,55 @@ ENTRIES: list[Entry] = [
      "не удаётся принимать соединения на {host}: {why_tr}"),
     (r"give an address of this machine with --host",
      "укажите в --host адрес этого компьютера"),
+    # the form editing (web/edit.py): one value set, a key renamed or an entry deleted
+    (r"the value nests too deep", "значение вложено слишком глубоко"),
+    (r"at most (?P<n>\S+) levels", "уровней вложенности — не больше {n}"),
+    (r"the value is not a finite number", "значение — не конечное число"),
+    (r"give a finite number", "задайте конечное число"),
+    (r"the key (?P<k>.+?) of the path is not a name or a number",
+     "ключ {k} в пути — не имя и не число"),
+    (r"the key (?P<k>.+?) is not a name or a number", "ключ {k} — не имя и не число"),
+    (r"use a name", "используйте имя"),
+    (r"(?P<t>\w+) is not a value of a model", "'{t}' не может быть значением модели"),
+    (r"give a number, a string, true/false, null, a list or a mapping",
+     "задайте число, строку, 'true'/'false', 'null', список или словарь"),
+    (r"no key (?P<p>'[^']*') in the model", "в модели нет ключа {p}"),
+    (r"add the entries above it first", "сначала добавьте записи уровнем выше"),
+    (r"(?P<p>.+?) is an alias of another entry", "{p} — псевдоним другой записи"),
+    (r"edit the anchored entry in the text", "измените в тексте запись с якорем"),
+    (r"no item (?P<i>.+?) in the list at (?P<p>.+)", "в списке {p} нет элемента {i}"),
+    (r"give an index 0\.\.(?P<n>\S+) \(the last adds one\)",
+     "укажите индекс от 0 до {n} (последний добавляет новый элемент)"),
+    (r"(?P<p>.+?) holds a single value, not entries",
+     "{p} содержит одно значение, а не записи"),
+    (r"set (?P<p>\S+) itself", "задайте само значение {p}"),
+    (r"the item does not start its own line", "элемент списка не начинается с новой строки"),
+    (r"delete it in the text", "удалите его в тексте"),
+    (r"'keys' is not a list of keys", "'keys' — не список ключей"),
+    (r"give the key path as a list, e\.g\. (?P<ex>\[.*\])",
+     "укажите путь из ключей списком, например '{ex}'"),
+    (r"the key path has (?P<n>\S+) keys", "ключей в пути: {n}"),
+    (r"at most (?P<n>\S+)", "не больше {n}"),
+    (r"give names and numbers only", "укажите только имена и числа"),
+    (r"the text is over (?P<n>\S+) bytes", "текст длиннее {n} байт"),
+    (r"keep long tables in a CSV file", "длинные таблицы храните в файле CSV"),
+    (r"no key (?P<p>'[^']*') to rename", "нет ключа {p}: переименовывать нечего"),
+    (r"rename an existing key", "переименуйте существующий ключ"),
+    (r"the new key (?P<k>.+?) is not a name or a number",
+     "новый ключ {k} — не имя и не число"),
+    (r"give a name", "задайте имя"),
+    (r"the key (?P<k>.+?) is there already", "ключ {k} уже есть"),
+    (r"pick another key", "выберите другой ключ"),
+    (r"renaming (?P<p>.+?) would not read back",
+     "после переименования {p} текст не читается обратно с новым ключом"),
+    (r"rename it in the text", "переименуйте его в тексте"),
+    (r"no key (?P<p>'[^']*') to delete", "нет ключа {p}: удалять нечего"),
+    (r"delete an existing entry", "удалите существующую запись"),
+    (r"deleting (?P<p>.+?) would not read back",
+     "после удаления {p} текст не читается обратно"),
+    (r"the value at (?P<p>\S+) would read back as (?P<a>.+?), not (?P<b>.+)",
+     "значение {p} прочиталось бы из текста как {a}, а не {b}"),
+    (r"change it in the text", "измените его в тексте"),
+    (r"the edited text would be over (?P<n>\S+) bytes",
+     "после правки текст был бы длиннее {n} байт"),
 ]
