@@ -167,4 +167,17 @@ ENTRIES: list[Entry] = [
     (r"change it in the text", "измените его в тексте"),
     (r"the edited text would be over (?P<n>\S+) bytes",
      "после правки текст был бы длиннее {n} байт"),
+    # the working copy (autosave) and new models from templates
+    (r"cannot read the working copy: (?P<why_tr>.+)",
+     "не удаётся прочитать рабочую копию: {why_tr}"),
+    (r"discard it and go on from the file",
+     "отбросьте её и продолжайте с файла"),
+    (r"the working copy is larger than (?P<n>\S+) MiB",
+     "рабочая копия больше {n} МиБ"),
+    (r"keep the model under 2 MiB \(long tables go in CSV files\)",
+     "модель должна быть меньше 2 МиБ (длинные таблицы выносите в файлы CSV)"),
+    (r"the autosave folder leads out of the folder",
+     "папка автосохранения ведёт за пределы папки"),
+    (r"remove the symbolic link \.mechloop", "удалите символическую ссылку .mechloop"),
+    (r"pick a model from the list", "выберите модель из списка"),
 ]
