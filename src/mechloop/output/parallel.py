@@ -64,8 +64,18 @@ def _iov_max() -> int:
 _IOV_MAX = _iov_max()
 _F_SETPIPE_SZ = 1031
 
-#: A piece's text, as an iterator of parts; each part a list of buffers written in a row.
-Render = Callable[[int, int], Iterator[list[bytes | memoryview]]]
+#: A part of a piece's text: a list of buffers written in a row, or a function giving them
+#: (work that does not hold Python's lock, e.g. compiled code: called by the thread that
+#: writes the part, beside the formatting of the next ones).
+Part = list[bytes | memoryview] | Callable[[], list[bytes | memoryview]]
+
+#: A piece's text, as an iterator of parts.
+Render = Callable[[int, int], Iterator[Part]]
+
+
+def buffers(part: Part) -> list[bytes | memoryview]:
+    """The buffers of a part (its function called where it is one)."""
+    return part() if callable(part) else part
 
 
 def workers_for(values: int, pieces: int) -> int:
@@ -129,7 +139,7 @@ def write_ordered(handle: BinaryIO, pieces: Sequence[tuple[int, int]], render: R
         if len(pieces) < 2:  # a small table: not worth a thread
             for start, stop in pieces:
                 for part in render(start, stop):
-                    for buffer in part:
+                    for buffer in buffers(part):
                         handle.write(buffer)
             return
         writer = _Writer(handle)
@@ -227,9 +237,9 @@ def _work(write: int, reads: Iterable[int], pieces: Sequence[tuple[int, int]],
             os.close(fd)
         sender = _Sender(write)
         for start, stop in pieces:  # sent as they are (a join would copy them once more)
-            buffers = [b for part in render(start, stop) for b in part if len(b)]
-            size = sum(len(b) for b in buffers)
-            sender.put([size.to_bytes(8, "little"), *buffers] if size else [])
+            texts = [b for part in render(start, stop) for b in buffers(part) if len(b)]
+            size = sum(len(b) for b in texts)
+            sender.put([size.to_bytes(8, "little"), *texts] if size else [])
         sender.finish()
     except BrokenPipeError:
         code = 1  # the parent stopped reading: it has failed or was killed
@@ -299,7 +309,7 @@ class _Writer:
         import threading
 
         self.handle = handle
-        self.queue: queue.Queue[list[bytes | memoryview] | None] = queue.Queue(
+        self.queue: queue.Queue[Part | None] = queue.Queue(
             maxsize=WRITE_AHEAD)
         self.error: BaseException | None = None
         self.thread = threading.Thread(target=self._run, daemon=True)
@@ -308,15 +318,16 @@ class _Writer:
     def _run(self) -> None:
         try:
             while (part := self.queue.get()) is not None:
-                for buffer in part:
+                for buffer in buffers(part):
                     self.handle.write(buffer)
         except BaseException as exc:
             self.error = exc
             while self.queue.get() is not None:  # let put() go on until the end
                 pass
 
-    def put(self, part: list[bytes | memoryview]) -> None:
-        """Write a part (its buffers in a row): queued, written by the thread."""
+    def put(self, part: Part) -> None:
+        """Write a part (its buffers in a row): queued, made (where it is a function) and
+        written by the thread."""
         if self.error is not None:
             raise self.error
         self.queue.put(part)

@@ -37,7 +37,7 @@ from typing import TYPE_CHECKING, BinaryIO
 import numpy as np
 
 from mechloop.output.atomic import atomic_file
-from mechloop.output.parallel import Render, workers_for, write_ordered
+from mechloop.output.parallel import Part, Render, workers_for, write_ordered
 from mechloop.output.paths import TABLE_SUFFIXES, OutputError
 
 if TYPE_CHECKING:
@@ -274,14 +274,16 @@ def _unbracket(items: list[bytes], brackets: int) -> list[bytes]:
     return items
 
 
-def _csv_chunk(columns: _Columns, start: int, stop: int) -> list[bytes | memoryview]:
+def _csv_chunk(columns: _Columns, start: int, stop: int) -> Part:
     """Rows ``start:stop`` as CSV lines (each ending in a newline): woven in one compiled
     pass (:mod:`mechloop.output.weave`) for a large table unless a column holds strings or
     objects or a float column an infinity (rare: those chunks are formatted field by
-    field)."""
+    field); woven by the thread that writes them (the weaving does not hold Python's
+    lock)."""
     texts = columns.texts(start, stop, csv=True)
     if texts is not None:
-        return [columns.csv_weaver(texts, stop - start)]
+        weave = functools.partial(columns.csv_weaver, texts, stop - start)
+        return lambda: [weave()]
     if len(columns.runs) == 1 and columns.runs[0][2] == "f":  # floats only: no line split
         block = columns.block(columns.runs[0], start, stop)
         if not np.isinf(block).any():
@@ -308,7 +310,7 @@ def write_csv(frame: pd.DataFrame, handle: BinaryIO) -> None:
     if columns.woven:
         columns.csv_weaver  # noqa: B018 (made, and its code compiled, before any fork)
 
-    def render(first: int, last: int) -> Iterator[list[bytes | memoryview]]:
+    def render(first: int, last: int) -> Iterator[Part]:
         for start, stop in columns.chunks(first, last):
             yield _csv_chunk(columns, start, stop)
 
@@ -366,16 +368,20 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
         weaver = Weaver(columns.widths, prefixes, b"", values=True)
 
-    def render(first: int, last: int) -> Iterator[list[bytes | memoryview]]:
+    def woven(texts: list[bytes], rows: int, first: bool) -> list[bytes | memoryview]:
+        block = weaver(texts, rows)  # (by the writing thread: compiled, without the lock)
+        return [block[len(opener) - 1:] if first else block]
+
+    def render(first: int, last: int) -> Iterator[Part]:
         for start, stop in columns.chunks(first, last):
             texts = columns.texts(start, stop, csv=False)  # inf: null, as NaN
             if texts is not None:  # (columns.woven: the weaver is made)
-                block: bytes | memoryview = weaver(texts, stop - start)
-            else:
-                parts: list[bytes] = [b""] * (2 * (stop - start) * columns.width)
-                parts[0::2] = prefixes * (stop - start)
-                parts[1::2] = _json_tokens(columns, start, stop)
-                block = b"".join(parts)
+                yield functools.partial(woven, texts, stop - start, start == 0)
+                continue
+            parts: list[bytes] = [b""] * (2 * (stop - start) * columns.width)
+            parts[0::2] = prefixes * (stop - start)
+            parts[1::2] = _json_tokens(columns, start, stop)
+            block = b"".join(parts)
             yield [memoryview(block)[len(opener) - 1:] if start == 0 else block]
 
     _write_pieces(columns, handle, render)
