@@ -370,12 +370,19 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"speedup 34\.2–(?P<fig>34\.7)", ("bench", "benchmarks/bench_synthesis.py", True)),
     (R, r"it printed (?P<fig>0\.26) s", ("bench", "benchmarks/bench_startup.py", True)),
     (R, r"CSV (?P<fig>132) MB/s", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"JSON (?P<fig>102) MB/s", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"Parquet (?P<fig>150) MB/s", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"\((?P<fig>289) and 210 MB per", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"289 and (?P<fig>210) MB per", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"with (?P<fig>6) MB above", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"and (?P<fig>41) MB for\s+Parquet", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"disk's (?P<fig>490) \(ratio", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"ratio (?P<fig>0\.27)\)", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"JSON (?P<fig>138) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"against (?P<fig>483) \(", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"483 \((?P<fig>0\.29)\)", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"Parquet (?P<fig>195) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"against (?P<fig>611) \(", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"611 \((?P<fig>0\.32)\)", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"at (?P<fig>172), 218 and", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"172, (?P<fig>218) and", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"218 and\s+(?P<fig>304) MB per", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"with (?P<fig>67) MB above", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"and (?P<fig>54) MB for\s+Parquet", ("bench", "benchmarks/bench_output.py", True)),
     # example headers
     ("roof_support.yaml", r"E from (?P<fig>1\.434) m", ("computed", "E low")),
     ("roof_support.yaml", r"to (?P<fig>2\.557) m", ("computed", "E high")),
@@ -493,8 +500,9 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"evaluates 2,000 designs|`--designs 20000`", "the synthesis benchmark's settings"),
     (R, r"from 65,536 designs × positions", "a rule of the code (its constant, "
         "mechloop.synthesis.cores.PARALLEL_ELEMENTS)"),
-    (R, r"100,000 rows × 454 columns", "bench_output.py's table at --contours 50 "
-        "--positions 100000 (position, time, argument 1, 9 per four-bar, chain_break)"),
+    (R, r"1,000,000 rows × 202 columns \(200\s+of them floats", "bench_output.py's table "
+        "at --contours 22 --positions 1000000 (position, time, argument 1, 9 per four-bar, "
+        "chain_break)"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
     (R, r"Jacobian columns\) falls to 1e-6", "a rule of the code (its constant, "
