@@ -200,3 +200,30 @@ def test_what_only_the_model_tells_fails_the_job_with_the_librarys_problem(clien
 def test_the_file_of_an_unknown_job_is_not_found(client):
     answer = client.get("/api/jobs/nothere/file")
     assert answer.status_code == 404 and answer.json()["error"] == "no job 'nothere'"
+
+
+@pytest.mark.parametrize(("fmt", "kind", "mark"), [
+    ("mp4", "video/mp4", b"ftyp"), ("html", "text/html; charset=utf-8", b"<script")])
+def test_an_animation_as_mp4_or_html(client, fmt, kind, mark):
+    job = _start(client, "animation", four_bar(4), format=fmt)
+    done = _wait(client, job, _finished)
+    assert done["state"] == "done", done["problems"]
+    assert done["result"]["frames"] == 4 and done["result"]["format"] == fmt
+    answer = client.get(f"/api/jobs/{job}/file")
+    assert answer.headers["content-type"] == kind
+    assert f'filename="model.{fmt}"' in answer.headers["content-disposition"]
+    assert mark in answer.content[:4096]
+    if fmt == "html":  # every frame embedded in the page
+        assert answer.content.count(b"data:image/png;base64") == 4
+
+
+def test_an_animation_of_a_model_with_bodies_draws_its_centres_of_mass(client):
+    text = _text("crank_slider_dynamics").replace("positions: 72", "positions: 6") \
+        .replace("{0: 0, 72: 360}", "{0: 0, 6: 360}")
+    answer = client.post("/api/jobs", json={"text": text, "example": "crank_slider_dynamics",
+                                            "kind": "animation", "format": "gif"})
+    done = _wait(client, answer.json()["id"], _finished)
+    assert done["state"] == "done", done["problems"]
+    image = Image.open(io.BytesIO(client.get(f"/api/jobs/{answer.json()['id']}/file")
+                                  .content))
+    assert image.n_frames == done["result"]["frames"] == 6
