@@ -1,11 +1,12 @@
 """The page's background work in a real headless Chromium (the fixtures of
 ``test_web_browser.py``: one server and one browser for this module): the animation of
-the motion downloaded as a GIF of one frame per position of the cycle, and a short
+the motion downloaded as a GIF of one frame per position of the cycle, a short
 parametric sweep whose table and plot appear when it is done, its values those the
-library computes."""
+library computes, and a simulation whose curves appear, then a long one cancelled."""
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -85,3 +86,31 @@ def test_a_sweep_shows_its_table_and_plot_when_done(browser, server):  # noqa: F
     browser.execute_script("arguments[0].scrollIntoView()",
                            browser.find_element(By.ID, "sweep-result"))
     browser.save_screenshot(str(SHOTS / "web-sweep.png"))
+
+
+def test_a_simulation_shows_its_curves_and_is_cancelled(browser, server):  # noqa: F811
+    base, folder = server
+    shutil.copy(EXAMPLES / "compressor_startup.yaml", folder / "compressor_startup.yaml")
+    _open(browser, base + "/?path=compressor_startup.yaml")
+    browser.find_element(By.ID, "sim-duration").send_keys("0.3")
+    browser.find_element(By.ID, "sim-start").click()
+    _wait(browser, lambda d: d.find_element(By.ID, "sim-result").is_displayed(),
+          "the simulation's result is not shown")
+    info = browser.find_element(By.ID, "sim-info").text
+    assert info.startswith("0.3 s simulated"), info
+    summary = browser.find_element(By.ID, "sim-summary").text
+    assert "duration: t = 0.3 s" in summary  # the library's account of how the run ended
+    plot = browser.find_element(By.ID, "sim-plot")
+    assert browser.execute_script("return arguments[0].naturalWidth", plot) > 100
+    # a long run, cancelled while it runs
+    field = browser.find_element(By.ID, "sim-duration")
+    field.clear()
+    field.send_keys("300")
+    browser.find_element(By.ID, "sim-start").click()
+    _wait(browser, lambda d: " s of 300 s simulated" in d.find_element(By.ID, "sim-info").text,
+          "no progress of the simulation is shown")
+    assert 0 < browser.find_element(By.ID, "sim-bar").get_property("value") < 1
+    browser.find_element(By.ID, "sim-cancel").click()
+    _wait(browser, lambda d: d.find_element(By.ID, "sim-info").text == "cancelled",
+          "the simulation was not cancelled")
+    assert browser.find_element(By.ID, "sim-start").is_enabled()
