@@ -272,6 +272,11 @@ class Jobs:
                         job.state = "done"
                         return
                     elif kind == "error":
+                        if job.kind != "synthesis" and not job.cancelled and \
+                                time.monotonic() >= deadline:
+                            from mechloop.web.work import timed_out
+
+                            value = timed_out(job.seconds)
                         job.problems = value
                         job.state = "failed"
                         return

@@ -276,3 +276,10 @@ def job_file(job: Any) -> dict[str, Any]:
         raise WebError("the job made no file",
                        "an animation, a sweep or a simulation that finished makes one", 404)
     return job.file
+
+
+def timed_out(seconds: float) -> list[dict[str, Any]]:
+    """The problem of a job of this module stopped at its time limit (not cancelled)."""
+    return [{"line": None, "path": "", "message":
+             f"the job took longer than {seconds:g} s and was stopped",
+             "hint": "use fewer values, fewer positions or a shorter duration"}]

@@ -145,4 +145,8 @@ ENTRIES: list[Entry] = [
     (r"the job made no file", "задание не создало файла"),
     (r"an animation, a sweep or a simulation that finished makes one",
      "файл создают завершённые анимация, параметрический анализ или моделирование"),
+    (r"the job took longer than (?P<n>\S+) s and was stopped",
+     "задание длилось дольше {n} с и было остановлено"),
+    (r"use fewer values, fewer positions or a shorter duration",
+     "возьмите меньше значений, меньше положений или меньшую длительность"),
 ]
