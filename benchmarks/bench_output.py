@@ -29,6 +29,11 @@ text: ``1`` for ``1.0``, ``true``, quoted strings).  ``--disk-mb N`` first write
 ready text (8 MiB blocks) through the same atomic write, fsync included: the disk speed,
 the most any writer can reach here.
 
+The disk speed is also measured right after every mechloop format, in the same run: a
+``disk`` line writes as many bytes of ready text as that format's file through the same
+atomic write (8 MiB blocks, fsync included), and ``of disk`` is the format's MB/s over it
+(1.00: the writer is as fast as the disk; ``--no-disk`` skips these lines).
+
 The default size writes about 3.4 GB of CSV and 8 GB of JSON: see that the folder
 (``--dir``, default the system temporary folder) has room.
 """
@@ -202,17 +207,18 @@ def write_arrow(frame: pd.DataFrame, path: Path) -> None:
                                                     preserve_index=False))
 
 
-def write_disk(path: Path, mb: int) -> None:
-    """``mb`` MB of ready text written through the atomic write (the disk speed)."""
+def write_disk(path: Path, size: int) -> None:
+    """``size`` bytes of ready text written through the atomic write, as the table
+    writers write (fsync included), in blocks of 8 MiB: the disk speed."""
     from mechloop.output.atomic import atomic_file
 
     block = (b"0.30000000000000004," * (1 << 19))[:1 << 23]
     with atomic_file(path) as handle:
-        for _ in range(mb * 2**20 // len(block)):
-            handle.write(block)
+        for start in range(0, size, len(block)):
+            handle.write(memoryview(block)[:min(len(block), size - start)])
 
 
-def run_child(frame: pd.DataFrame, path: Path, how: str, disk_mb: int = 0) -> dict:
+def run_child(frame: pd.DataFrame, path: Path, how: str, disk_bytes: int = 0) -> dict:
     """Write in a forked child; its seconds, peak memory and check."""
     read, write = os.pipe()
     pid = os.fork()
@@ -226,7 +232,7 @@ def run_child(frame: pd.DataFrame, path: Path, how: str, disk_mb: int = 0) -> di
             if how == "mechloop":
                 write_frame(frame, path)
             elif how == "disk":
-                write_disk(path, disk_mb)
+                write_disk(path, disk_bytes)
             elif how == "polars":
                 write_polars(frame, path)
             elif how == "arrow":
@@ -300,6 +306,8 @@ def main() -> int:
                         help="also time pandas' to_csv and to_json")
     parser.add_argument("--disk-mb", type=int, default=0,
                         help="first write this many MB of ready text: the disk speed")
+    parser.add_argument("--no-disk", action="store_true",
+                        help="skip the disk speed after each mechloop format")
     parser.add_argument("--ecosystem", action="store_true",
                         help="also time polars' write_csv/write_ndjson and Arrow's C++ "
                         "CSV writer")
@@ -336,21 +344,37 @@ def main() -> int:
     failed = False
     print(f"{'writer':<10} {'format':<8} {'seconds':>8} {'MB':>8} {'MB/s':>7} "
           f"{'MB/CPU-s':>9} "
-          f"{'peak RSS MB':>12} {'above table MB':>15} {'worker MB':>10}  check")
+          f"{'peak RSS MB':>12} {'above table MB':>15} {'worker MB':>10} {'of disk':>8}  "
+          "check")
     with tempfile.TemporaryDirectory(dir=args.dir) as folder:
         for how, fmt in runs:
             path = Path(folder) / f"table.{fmt}"
-            r = run_child(frame, path, how, args.disk_mb)
+            r = run_child(frame, path, how, args.disk_mb * 2**20)
             path.unlink(missing_ok=True)
             if "seconds" not in r:
                 print(f"{how:<10} {fmt:<8} {r['check']}")
                 failed = True
                 continue
+            disk = None
+            if how == "mechloop" and not args.no_disk:  # the same bytes, ready: the disk
+                disk = run_child(frame, path, "disk", r["size"])
+                path.unlink(missing_ok=True)
             mb = r["size"] / 2**20
+            ratio = (f"{mb / r['seconds'] / (mb / disk['seconds']):8.2f}"
+                     if disk and "seconds" in disk else f"{'':8}")
             print(f"{how:<10} {fmt:<8} {r['seconds']:8.1f} {mb:8.0f} "
                   f"{mb / r['seconds']:7.0f} {mb / r['cpu']:9.0f} {r['peak']:12.0f} "
-                  f"{r['above']:15.0f} {r['workers']:10.0f}  {r['check']}")
+                  f"{r['above']:15.0f} {r['workers']:10.0f} {ratio}  {r['check']}")
             failed |= r["check"].startswith("FAILED")
+            if disk:
+                if "seconds" not in disk:
+                    print(f"{'disk':<10} {fmt:<8} {disk['check']}")
+                    failed = True
+                    continue
+                print(f"{'disk':<10} {fmt:<8} {disk['seconds']:8.1f} {mb:8.0f} "
+                      f"{mb / disk['seconds']:7.0f} {mb / disk['cpu']:9.0f} "
+                      f"{disk['peak']:12.0f} {disk['above']:15.0f} {0:10.0f} "
+                      f"{'':8}  the same bytes, ready")
     return 1 if failed else 0
 
 

@@ -370,12 +370,19 @@ FIGURES: list[tuple[str, str, tuple]] = [
     (R, r"speedup 34\.2–(?P<fig>34\.7)", ("bench", "benchmarks/bench_synthesis.py", True)),
     (R, r"it printed (?P<fig>0\.26) s", ("bench", "benchmarks/bench_startup.py", True)),
     (R, r"CSV (?P<fig>132) MB/s", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"JSON (?P<fig>102) MB/s", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"Parquet (?P<fig>150) MB/s", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"\((?P<fig>289) and 210 MB per", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"289 and (?P<fig>210) MB per", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"with (?P<fig>6) MB above", ("bench", "benchmarks/bench_output.py", True)),
-    (R, r"and (?P<fig>41) MB for\s+Parquet", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"disk's (?P<fig>490) \(ratio", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"ratio (?P<fig>0\.27)\)", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"JSON (?P<fig>138) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"against (?P<fig>483) \(", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"483 \((?P<fig>0\.29)\)", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"Parquet (?P<fig>195) MB/s", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"against (?P<fig>611) \(", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"611 \((?P<fig>0\.32)\)", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"at (?P<fig>172), 218 and", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"172, (?P<fig>218) and", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"218 and\s+(?P<fig>304) MB per", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"with (?P<fig>67) MB above", ("bench", "benchmarks/bench_output.py", True)),
+    (R, r"and (?P<fig>54) MB for\s+Parquet", ("bench", "benchmarks/bench_output.py", True)),
     # example headers
     ("roof_support.yaml", r"E from (?P<fig>1\.434) m", ("computed", "E low")),
     ("roof_support.yaml", r"to (?P<fig>2\.557) m", ("computed", "E high")),
@@ -458,6 +465,8 @@ FIGURES: list[tuple[str, str, tuple]] = [
                                       "test_the_james_train_textbook_ratios")),
     (R, r"`a = (?P<fig>56\.8)` mm", ("test", "tests/test_gears_published.py::"
                                      "test_the_sun_planet_pair_from_its_printed_shifts")),
+    (R, r"the planar results to (?P<fig>1e-12)", ("test", "tests/test_spatial_models.py::"
+     "test_planar_four_bar_written_as_spatial_gives_the_planar_results")),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row
@@ -470,7 +479,7 @@ COURSE_DIAGRAM = "the assumed indicator diagram behind the gas-force tables (che
     "tests/test_course_models_loads.py)"
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
-    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|KHK Gear Technical Reference \(sec\. "
+    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|GOST 2\.105|KHK Gear Technical Reference \(sec\. "
            r"4\.3", "a cited standard or reference"),
     ("planetary_choice.yaml", r"within 1 %", "the example's search.tolerance (0.01)"),
     (R, r"z 21/43 with\s+shifts 0\.4380/0\.0426", "the printed inputs of the Kos example "
@@ -491,8 +500,9 @@ INPUTS: list[tuple[str | None, str, str]] = [
     (R, r"evaluates 2,000 designs|`--designs 20000`", "the synthesis benchmark's settings"),
     (R, r"from 65,536 designs × positions", "a rule of the code (its constant, "
         "mechloop.synthesis.cores.PARALLEL_ELEMENTS)"),
-    (R, r"100,000 rows × 454 columns", "bench_output.py's table at --contours 50 "
-        "--positions 100000 (position, time, argument 1, 9 per four-bar, chain_break)"),
+    (R, r"1,000,000 rows × 202 columns \(200\s+of them floats", "bench_output.py's table "
+        "at --contours 22 --positions 1000000 (position, time, argument 1, 9 per four-bar, "
+        "chain_break)"),
     (R, r"(at least|more than about) \d+ (ms|s)\b", "a rule of the code (its constant)"),
     (R, r"port 8786", "dask's default port"),
     (R, r"Jacobian columns\) falls to 1e-6", "a rule of the code (its constant, "

@@ -48,9 +48,12 @@ def _frame(data: st.DataObject) -> pd.DataFrame:
     return frame
 
 
-def _written(writer, frame: pd.DataFrame, chunk: int) -> bytes:
+def _written(writer, frame: pd.DataFrame, chunk: int, woven: bool) -> bytes:
+    """The text ``writer`` writes, in chunks of about ``chunk`` values, woven in compiled
+    code (:mod:`mechloop.output.weave`, as for large tables) or joined in Python."""
     with mock.patch.object(tables, "CHUNK_VALUES", chunk), \
-            mock.patch.object(tables, "GATHER_VALUES", 3 * chunk + 1):
+            mock.patch.object(tables, "GATHER_VALUES", 3 * chunk + 1), \
+            mock.patch.object(tables, "_weaving", lambda values: woven):
         handle = io.BytesIO()
         writer(frame, handle)
     return handle.getvalue()
@@ -92,11 +95,11 @@ def _shortest(text: str, value: float) -> None:
     assert digits(text) == digits(repr(value)), (text, repr(value))
 
 
-@settings(max_examples=60, deadline=None)
-@given(st.data(), st.sampled_from([1, 7, 1 << 12]))
-def test_csv_is_the_text_built_value_by_value(data, chunk):
+@settings(max_examples=80, deadline=None)
+@given(st.data(), st.sampled_from([1, 7, 1 << 12]), st.booleans())
+def test_csv_is_the_text_built_value_by_value(data, chunk, woven):
     frame = _frame(data)
-    got = _written(tables.write_csv, frame, chunk)
+    got = _written(tables.write_csv, frame, chunk, woven)
     header = b",".join(str(c).encode() for c in frame.columns)
     lines = [b",".join(_csv_field(v) for v in row) for row in frame.itertuples(index=False)]
     assert got == b"\n".join([header, *lines]) + b"\n"
@@ -114,11 +117,11 @@ def test_csv_is_the_text_built_value_by_value(data, chunk):
                 _shortest(text, value)
 
 
-@settings(max_examples=60, deadline=None)
-@given(st.data(), st.sampled_from([1, 7, 1 << 12]))
-def test_json_is_the_text_built_value_by_value(data, chunk):
+@settings(max_examples=80, deadline=None)
+@given(st.data(), st.sampled_from([1, 7, 1 << 12]), st.booleans())
+def test_json_is_the_text_built_value_by_value(data, chunk, woven):
     frame = _frame(data)
-    got = _written(tables.write_json, frame, chunk)
+    got = _written(tables.write_json, frame, chunk, woven)
     records = [orjson.dumps({str(c): _json_value(v) for c, v in zip(frame.columns, row,
                                                                      strict=True)})
                for row in frame.itertuples(index=False)]

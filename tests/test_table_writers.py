@@ -47,11 +47,14 @@ def _frame(rows: int = 53) -> pd.DataFrame:
 def small_chunks(monkeypatch, request):
     """Chunks of a few rows and gathers of a few chunks (not a whole number of them), so
     that every test crosses chunk and gather boundaries; pieces of a few chunks formatted
-    in this process, or by three forked workers (each test runs both ways)."""
+    in this process (and written by its writing thread), or by three forked workers (each
+    test runs both ways); lines woven in compiled code as for a large table where no
+    column holds strings (the Python joins: test_table_number_format.py)."""
     monkeypatch.setattr(tables, "CHUNK_VALUES", 20)
     monkeypatch.setattr(tables, "GATHER_VALUES", 45)
     monkeypatch.setattr(tables, "PIECE_VALUES", 70)
     monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
+    monkeypatch.setattr(tables, "_weaving", lambda values: True)  # as for a large table
     monkeypatch.setattr(parallel, "PARALLEL_VALUES", 0 if request.param == "forked" else 1 << 62)
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2}, raising=False)
     monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # three idle cores

@@ -76,6 +76,13 @@ class Placement:
     not in it starts as its model says."""
 
     def __init__(self, results: Results, starts: Mapping[int, Complex] | None = None):
+        if any(c.spatial for c in results.model.contours):  # issue 17: no 3-D views yet
+            from mechloop.errors import HintedError
+
+            raise HintedError("position plans, trajectories and animations of a model with "
+                              "spatial contours are not built yet (its points are in 3-D)",
+                              "plot its parameters against the position (plot ... "
+                              "parameters -n b3) or write the table with mechloop solve")
         self.results = results
         self._starts = dict(starts or {})
         self._vectors = {n: vector_motion(results, n) for n in results.model.vectors}

@@ -196,13 +196,6 @@ ENTRIES: list[Entry] = [
     # vectors, contours, links, arguments
     (r"'(?P<v>[^']*)' is not a role", "'{v}' — не роль параметра"),
     (r"did you mean '(?P<v>[^']*)'\?", "возможно, имелось в виду '{v}'?"),
-    (r"contour (?P<c>\d+) has (?P<n>\d+) function parameters? \((?P<list>[^)]*)\); a planar "
-     r"contour needs exactly 2 \(contours solved together as a coupled block: 2 per "
-     r"contour in all, each contour linking to the others' functions\)",
-     lambda m: (f"в контуре {m['c']} искомых параметров ('function'): {m['n']} ("
-                f"{'нет' if m['list'] == 'none' else m['list']}); плоскому контуру нужно ровно 2 "
-                "(для контуров, решаемых вместе связанным блоком, — по 2 на контур, и "
-                "каждый контур ссылается на искомые параметры других)")),
     (r"make all but two of them constants, arguments or links to earlier contours",
      "сделайте все, кроме двух, постоянными, аргументами или ссылками на предыдущие контуры"),
     (r"mark two of its parameters 'function' \(the unknowns of this loop\)",

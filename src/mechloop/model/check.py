@@ -17,11 +17,12 @@ from mechloop.model.indicator import IndicatorValue, indicator_problems
 from mechloop.model.intermediate import check_intermediate
 from mechloop.model.schema import ArgumentRole, LawArgument, LinkRole, Model, TableArgument, Units
 from mechloop.model.signals import MIN_TIME_STEP
+from mechloop.model.spatial import analyze_spatial
 from mechloop.model.structure import Structure, analyze
 from mechloop.model.synthesis import check_synthesis
 from mechloop.model.units import Kind, UnitProblem, to_si, unit_factor
 
-KIND_OF = {"r": "length", "a": "angle"}
+KIND_OF = {"r": "length", "a": "angle", "b": "angle"}
 #: Values of one table reported one by one; the rest are counted.
 MAX_TABLE_PROBLEMS = 5
 
@@ -30,8 +31,8 @@ def argument_kinds(model: Model) -> dict[int, set[str]]:
     """For each argument, the kinds ('length', 'angle') of the parameters it drives."""
     kinds: dict[int, set[str]] = {k: set() for k in model.arguments}
     for vector in model.vectors.values():
-        for letter in "ra":
-            role = vector.r if letter == "r" else vector.a
+        for letter in "rab":  # b: β of a spatial vector (None when absent)
+            role = getattr(vector, letter)
             if isinstance(role, ArgumentRole) and role.argument in kinds:
                 kinds[role.argument].add(KIND_OF[letter])
     return kinds
@@ -45,7 +46,10 @@ def argument_kind(model: Model, number: int) -> Kind:
 
 def check_model(model: Model) -> tuple[Structure, list[Problem]]:
     """Every problem of ``model``, in document order as far as practical."""
-    structure, problems = analyze(model)
+    if any(c.spatial for c in model.contours):  # spatial contours (issue 17)
+        structure, problems = analyze_spatial(model)
+    else:
+        structure, problems = analyze(model)
     problems = _check_units(model) + problems
     problems += _check_arguments(model)
     problems += check_intermediate(model, structure,
@@ -79,8 +83,10 @@ def _check_units(model: Model) -> list[Problem]:
     if problems:
         return problems  # every number below would repeat the same complaint
     for number, vector in model.vectors.items():
-        for letter in "ra":
-            role = vector.r if letter == "r" else vector.a
+        for letter in "rab":  # b: β of a spatial vector (None when absent)
+            role = getattr(vector, letter)
+            if role is None:
+                continue
             kind = KIND_OF[letter]
             default = getattr(model.units, kind)
             path = ("vectors", number, letter)

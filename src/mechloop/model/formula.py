@@ -17,15 +17,22 @@ from mechloop.model.schema import (
     Model,
 )
 from mechloop.model.structure import MODULE_SOLUTIONS, ContourInfo, is_function, param_role
+from mechloop.spatial.contour import MODULES as SPATIAL_MODULES
+
+
+def spatial_branches(module: str) -> int:
+    """Solutions of spatial module ``module`` (2 for a name that is not one: a coupled
+    block, as the planar default)."""
+    return SPATIAL_MODULES[module][3] if module in SPATIAL_MODULES else 2
 
 
 def symbol(name: str) -> str:
-    """'a2' -> 'α2', 'r3' -> 'r3'."""
-    return ("α" if name[0] == "a" else "r") + name[1:]
+    """'a2' -> 'α2', 'r3' -> 'r3', 'b2' -> 'β2' (spatial)."""
+    return {"a": "α", "b": "β"}.get(name[0], "r") + name[1:]
 
 
 def _unit(model: Model, name: str) -> str:
-    return model.units.angle if name[0] == "a" else model.units.length
+    return model.units.angle if name[0] in "ab" else model.units.length
 
 
 def _fmt(value, unit: str) -> str:
@@ -63,7 +70,8 @@ def parametric_formula(model: Model, info: ContourInfo) -> str:
     inputs = [f"{symbol(p)} ({role_text(model, p)})" for p in info.arguments]
     inputs += [symbol(p) for p in info.links]
     lhs = ", ".join(inputs) if inputs else "constants only"
-    variant = info.variant if MODULE_SOLUTIONS.get(info.module, 2) > 1 else 1
+    count = MODULE_SOLUTIONS.get(info.module, spatial_branches(info.module))
+    variant = info.variant if count > 1 else 1
     return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {info.module}, V={variant}"
 
 
@@ -72,7 +80,8 @@ def describe_structure(model: Model) -> str:
     structure = require_valid(model)
     lines = []
     title = model.name or "vector model"
-    lines.append(f"{title}: planar, {len(model.contours)} contour(s), {len(model.vectors)} "
+    kind = "spatial" if any(c.spatial for c in model.contours) else "planar"
+    lines.append(f"{title}: {kind}, {len(model.contours)} contour(s), {len(model.vectors)} "
                  f"vectors, positions 0..{model.positions}")
     if model.time is None:
         lines.append("time: none — derivatives are analogs with respect to argument 1")
@@ -84,9 +93,9 @@ def describe_structure(model: Model) -> str:
     for number, arg in sorted(model.arguments.items()):
         kind = argument_kind(model, number)
         driven = [symbol(f"{letter}{n}") for n, v in sorted(model.vectors.items())
-                  for letter in "ra"
-                  if isinstance(v.r if letter == "r" else v.a, ArgumentRole)
-                  and (v.r if letter == "r" else v.a).argument == number]
+                  for letter in "rab"
+                  if isinstance(getattr(v, letter), ArgumentRole)
+                  and getattr(v, letter).argument == number]
         form = (f"law {arg.law} from position {arg.start[0]} to {arg.end[0]}"
                 if isinstance(arg, LawArgument) else
                 f"intermediate, {arg.intermediate.count} values from "
@@ -98,23 +107,25 @@ def describe_structure(model: Model) -> str:
     for info in structure.ordered():
         lines.append("")
         name = model.contours[info.number - 1].name
+        spatial = model.contours[info.number - 1].spatial
         lines.append(f"contour {info.number}" + (f" — {name}" if name else "")
-                     + f": vectors {', '.join(map(str, info.vectors))}")
+                     + f": vectors {', '.join(map(str, model.contours[info.number - 1].vectors))}")
         link_terms = [f"{symbol(p)} = {role_text(model, p)}" for p in info.links]
-        structure_formula = f"n=2, m={len(info.vectors)}"
+        structure_formula = f"n={3 if spatial else 2}, m={len(info.vectors)}"
         if link_terms:
             structure_formula += "; links: " + ", ".join(link_terms)
         lines.append(f"  structure formula:  {structure_formula}")
         block = next((b for b in structure.blocks if info.number in b.contours), None)
         solutions = (f"{MODULE_SOLUTIONS[info.module]} solution(s)"
                      if info.module in MODULE_SOLUTIONS else
+                     f"{spatial_branches(info.module)} solution(s)" if spatial else
                      f"coupled block {block.number}: contours "
                      f"{', '.join(map(str, block.contours))} solved together for "
                      f"{', '.join(map(symbol, block.unknowns))} by Newton's method")
         lines.append(f"  parametric formula: {parametric_formula(model, info)} "
                      f"({solutions})")
         known = [f"{symbol(f'{letter}{n}')}={role_text(model, f'{letter}{n}')}"
-                 for n in info.vectors for letter in "ra"
+                 for n in info.vectors for letter in ("rab" if spatial else "ra")
                  if f"{letter}{n}" not in info.functions
                  and f"{letter}{n}" not in info.arguments and f"{letter}{n}" not in info.links]
         if known:

@@ -39,6 +39,7 @@ from mechloop.model.dynamic import (
 )
 from mechloop.model.elements import Damper, Spring
 from mechloop.model.gearing import GearMesh
+from mechloop.model.plane import Plane
 from mechloop.model.project import Project
 from mechloop.model.report_info import ReportInfo
 from mechloop.model.roles import FUNCTION
@@ -78,9 +79,9 @@ def set_model_reader(reader: Callable[..., Model]) -> None:
 ParamName = Annotated[
     str,
     Field(
-        pattern=r"^[ra][1-9][0-9]*$",
-        description="a vector parameter: 'r' (length) or 'a' (angle) and the vector number, "
-        "e.g. 'a2' or 'r3'",
+        pattern=r"^[rab][1-9][0-9]*$",
+        description="a vector parameter: 'r' (length), 'a' (angle α) or 'b' (rotation β "
+        "about Y, spatial vectors) and the vector number, e.g. 'a2' or 'r3'",
     ),
 ]
 
@@ -186,6 +187,10 @@ class Vector(_Frozen):
 
     r: Param = Field(description="length: constant, 'function', {argument: K} or {link: ..}")
     a: Param = Field(description="angle α from +X, counter-clockwise: same roles as r")
+    b: Param | None = Field(
+        None, description="spatial vectors only: rotation β about Y (α is then the "
+        "elevation above the XZ plane, the vector r (cos α cos β, sin α, cos α sin β)); "
+        "same roles as r; 0 when absent (mechloop.model.spatial)")
     name: str | None = Field(None, description="optional label (e.g. 'crank')")
 
 
@@ -195,13 +200,28 @@ class Contour(_Frozen):
     A planar contour has exactly two function parameters among its vectors.  The module
     type follows from them (Pl1 ``r,α`` of one vector; Pl2 two lengths; Pl3 a length and
     another vector's angle; Pl4 two angles); "vector 1" of the module is the first listed.
+    A ``spatial`` contour has three (:mod:`mechloop.model.spatial`: modules Pr1–Pr19).
     """
 
     vectors: list[int] = Field(min_length=2, description="vector numbers in the loop")
-    variant: Literal[1, 2, "auto"] = Field(
+    variant: Literal[1, 2, 3, 4, 5, 6, 7, 8, "auto"] = Field(
         1, description="solution variant: 1, 2, or 'auto' (start with 1, then follow "
-        "continuity from the previous position)"
+        "continuity from the previous position); a spatial contour's module has up to 8 "
+        "(1..8)"
     )
+    spatial: bool = Field(
+        False, description="a spatial contour (mechloop.model.spatial): its vectors have "
+        "r, a (α) and b (β), three of them 'function'; a negative vector number in "
+        "'vectors' subtracts that vector")
+    convention: Literal[1, 2] = Field(
+        1, description="a spatial contour's parameter ranges (seed 000 sec. 1.1) for a "
+        "vector whose α and β it both solves: 1 — α a full turn, β a half turn (-90, 90] "
+        "(β = 0: the planar XY contour); 2 — β a full turn, α a half turn [-90, 90] "
+        "(azimuth and elevation)")
+    plane: Plane | None = Field(
+        None, description="a planar contour's plane in a model with spatial contours "
+        "(mechloop.model.plane): {normal: [nx, ny, nz]} or the normal's angles {a: .., "
+        "b: ..}; the XY plane when absent")
     name: str | None = None
     start: Literal["origin"] | TailPoint | HeadPoint | tuple[Scalar, Scalar] = Field(
         "origin", description="where the tail of the first vector lies: 'origin', the tail "

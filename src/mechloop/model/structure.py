@@ -26,6 +26,8 @@ MODULE_SOLUTIONS = {"Pl1": 1, "Pl2": 1, "Pl3": 2, "Pl4": 2}
 def param_role(model: Model, name: str) -> object:
     """The role object of parameter ``name`` ('r3', 'a2') — raises KeyError if absent."""
     vector = model.vectors[int(name[1:])]
+    if name[0] == "b":  # β of a spatial vector (mechloop.model.spatial): 0 when absent
+        return 0.0 if vector.b is None else vector.b
     return vector.r if name[0] == "r" else vector.a
 
 
@@ -143,6 +145,21 @@ def _module_of(functions: list[str]) -> tuple[str, tuple[str, ...]]:
 def analyze(model: Model) -> tuple[Structure, list[Problem]]:
     """Resolve roles, classify contours and order them; collect every problem found."""
     problems: list[Problem] = []
+    for ci, contour in enumerate(model.contours):
+        if contour.convention != 1:
+            problems.append(Problem(("contours", ci, "convention"), f"contour {ci + 1} is "
+                                    "planar; a convention of parameter ranges applies to a "
+                                    "spatial contour", "remove 'convention'"))
+        if contour.plane is not None:
+            problems.append(Problem(("contours", ci, "plane"), f"contour {ci + 1} has a "
+                                    "plane, but no contour of the model is spatial: a plane "
+                                    "places a planar contour beside spatial ones",
+                                    "remove 'plane' (a planar model lies in the XY plane)"))
+    for number, vector in model.vectors.items():
+        if vector.b is not None:
+            problems.append(Problem(("vectors", number, "b"), f"vector {number} has a "
+                                    "rotation β (b), but no contour of the model is spatial",
+                                    "add 'spatial: true' to its contour, or remove 'b'"))
     vectors = model.vectors
 
     for number in vectors:
@@ -208,7 +225,12 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
             module, ordered = "?", tuple(functions)
         else:
             module, ordered = _module_of(functions)
-            if MODULE_SOLUTIONS[module] == 1 and contour.variant != 1:
+            if contour.variant in (3, 4, 5, 6, 7, 8):
+                problems.append(Problem((*path, "variant"),
+                                        f"contour {ci + 1} is module {module}, which has at "
+                                        f"most two solutions; variant {contour.variant!r} "
+                                        "does not apply", "set 'variant' to 1, 2 or 'auto'"))
+            elif MODULE_SOLUTIONS[module] == 1 and contour.variant != 1:
                 problems.append(Problem((*path, "variant"),
                                         f"contour {ci + 1} is module {module}, which has one "
                                         f"solution; variant {contour.variant!r} does not apply",
@@ -296,7 +318,7 @@ def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]
             return None
         target = role.link
         if target[0] != current[0]:
-            kind = {"r": "length", "a": "angle"}
+            kind = {"r": "length", "a": "angle", "b": "angle"}
             problems.append(Problem(path, f"{current} ({kind[current[0]]}) links to "
                                     f"{target} ({kind[target[0]]}); a link joins parameters "
                                     "of the same kind",

@@ -17,6 +17,10 @@ outright, they die writing to a pipe nobody reads).  Nothing is written to a fil
 worker: an atomic write stays atomic.  A failure inside a worker is raised in the parent
 with the worker's traceback.
 
+Without workers (a small table, a busy machine) the pieces are formatted in this process
+and written by a thread of its own (:class:`_Writer`), so that the write — on a busy disk as
+costly as the formatting — runs beside it.
+
 A piece's text is sent as frames: an 8-byte little-endian length, then that many bytes;
 a length of 0 ends the piece, and a length of ``2**63 - 1`` is followed by a frame holding
 a worker's traceback (UTF-8).
@@ -43,6 +47,10 @@ PIPE_BYTES = 1 << 20
 #: Pieces a worker formats ahead of the one the parent is copying from it.
 AHEAD = 3
 
+#: Parts (chunks of rows, about 100 kB of text each) formatted in this process ahead of
+#: the one its writing thread is writing.
+WRITE_AHEAD = 32
+
 _FAILED = (1 << 63) - 1
 
 def _iov_max() -> int:
@@ -56,8 +64,18 @@ def _iov_max() -> int:
 _IOV_MAX = _iov_max()
 _F_SETPIPE_SZ = 1031
 
-#: A piece's text, as an iterator of parts; each part a list of buffers written in a row.
-Render = Callable[[int, int], Iterator[list[bytes | memoryview]]]
+#: A part of a piece's text: a list of buffers written in a row, or a function giving them
+#: (work that does not hold Python's lock, e.g. compiled code: called by the thread that
+#: writes the part, beside the formatting of the next ones).
+Part = list[bytes | memoryview] | Callable[[], list[bytes | memoryview]]
+
+#: A piece's text, as an iterator of parts.
+Render = Callable[[int, int], Iterator[Part]]
+
+
+def buffers(part: Part) -> list[bytes | memoryview]:
+    """The buffers of a part (its function called where it is one)."""
+    return part() if callable(part) else part
 
 
 def workers_for(values: int, pieces: int) -> int:
@@ -118,10 +136,21 @@ def write_ordered(handle: BinaryIO, pieces: Sequence[tuple[int, int]], render: R
     order, into ``handle``: formatted by ``workers`` forked processes, or here when
     ``workers`` is 0."""
     if workers < 2:
-        for start, stop in pieces:
-            for part in render(start, stop):
-                for buffer in part:
-                    handle.write(buffer)
+        if len(pieces) < 2:  # a small table: not worth a thread
+            for start, stop in pieces:
+                for part in render(start, stop):
+                    for buffer in buffers(part):
+                        handle.write(buffer)
+            return
+        writer = _Writer(handle)
+        try:
+            for start, stop in pieces:
+                for part in render(start, stop):
+                    writer.put(part)
+        except BaseException:
+            writer.finish(quiet=True)  # the thread ends before the handle is closed
+            raise
+        writer.finish()
         return
     handle.flush()
     try:
@@ -208,9 +237,9 @@ def _work(write: int, reads: Iterable[int], pieces: Sequence[tuple[int, int]],
             os.close(fd)
         sender = _Sender(write)
         for start, stop in pieces:  # sent as they are (a join would copy them once more)
-            buffers = [b for part in render(start, stop) for b in part if len(b)]
-            size = sum(len(b) for b in buffers)
-            sender.put([size.to_bytes(8, "little"), *buffers] if size else [])
+            texts = [b for part in render(start, stop) for b in buffers(part) if len(b)]
+            size = sum(len(b) for b in texts)
+            sender.put([size.to_bytes(8, "little"), *texts] if size else [])
         sender.finish()
     except BrokenPipeError:
         code = 1  # the parent stopped reading: it has failed or was killed
@@ -265,6 +294,50 @@ class _Sender:
         self.queue.put(None)
         self.thread.join()
         if self.error is not None:
+            raise self.error
+
+
+class _Writer:
+    """A thread writing the parts formatted in this process into ``handle``, so that the
+    write (the copy into the page cache, the waits on a full one: as costly as formatting
+    on a busy disk) runs on another core while the next parts are formatted.  At most
+    WRITE_AHEAD parts wait (memory stays bounded); a failure to write is raised at the next
+    ``put`` or at ``finish``."""
+
+    def __init__(self, handle: BinaryIO):
+        import queue
+        import threading
+
+        self.handle = handle
+        self.queue: queue.Queue[Part | None] = queue.Queue(
+            maxsize=WRITE_AHEAD)
+        self.error: BaseException | None = None
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def _run(self) -> None:
+        try:
+            while (part := self.queue.get()) is not None:
+                for buffer in buffers(part):
+                    self.handle.write(buffer)
+        except BaseException as exc:
+            self.error = exc
+            while self.queue.get() is not None:  # let put() go on until the end
+                pass
+
+    def put(self, part: Part) -> None:
+        """Write a part (its buffers in a row): queued, made (where it is a function) and
+        written by the thread."""
+        if self.error is not None:
+            raise self.error
+        self.queue.put(part)
+
+    def finish(self, *, quiet: bool = False) -> None:
+        """Wait until everything put is written; a failure to write is raised (unless
+        ``quiet``: the caller is raising its own)."""
+        self.queue.put(None)
+        self.thread.join()
+        if self.error is not None and not quiet:
             raise self.error
 
 

@@ -2,8 +2,12 @@
 
 A table of a million rows and thousands of columns is written in chunks of rows, each
 formatted by C code (orjson for the numbers of CSV and JSON, pyarrow for Parquet) and
-written at once, so memory stays bounded by a few chunks.  A large CSV or JSON table is
-formatted on every core, by forked workers each taking pieces of rows in turn
+written at once, so memory stays bounded by a few chunks.  The lines of a CSV or JSON
+chunk of a large table are woven from orjson's texts of its runs of columns in one
+compiled pass (:mod:`mechloop.output.weave`); small tables, chunks with strings or
+objects, and CSV chunks with an infinity are joined in Python, into the same text.  The
+text is written by a thread of its own while the next chunks are formatted.  A large CSV
+or JSON table is formatted on every idle core, by forked workers each taking pieces of rows in turn
 (:mod:`mechloop.output.parallel`).  Every float is written in its shortest form that reads
 back to the same double (bit for bit).  Arrow's C++ CSV writer and polars' writers were
 measured against these (``benchmarks/bench_output.py --ecosystem``): neither formats more
@@ -22,20 +26,24 @@ Formats (as before the writers streamed):
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import os
 from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import TYPE_CHECKING, BinaryIO
 
 import numpy as np
 
 from mechloop.output.atomic import atomic_file
-from mechloop.output.parallel import Render, workers_for, write_ordered
+from mechloop.output.parallel import Part, Render, workers_for, write_ordered
 from mechloop.output.paths import TABLE_SUFFIXES, OutputError
 
 if TYPE_CHECKING:
     import pandas as pd
+
+    from mechloop.output.weave import Weaver
 
 #: File types a table can be written as.
 
@@ -47,6 +55,12 @@ XLSX_COLUMNS = 16_384
 #: small enough for the CPU cache (larger chunks format more slowly).
 CHUNK_VALUES = 1 << 12
 
+#: Fewest values in a table worth weaving its lines in compiled code
+#: (:mod:`mechloop.output.weave`): loading numba and the compiled code takes about half a
+#: CPU-second, about what weaving saves on 10^7 values (smaller tables are joined in
+#: Python, into the same text).
+WEAVE_VALUES = 1 << 23
+
 #: Values gathered from the columns of a run at once (8 MB of doubles).
 GATHER_VALUES = 1 << 20
 
@@ -57,6 +71,11 @@ PIECE_VALUES = 1 << 18
 #: Values in one Parquet row group (about 64 MB of doubles: fewer, larger groups write
 #: faster and read better; the group is held in memory while it is written).
 PARQUET_GROUP_VALUES = 1 << 23
+
+
+def _weaving(values: int) -> bool:
+    """Whether to weave the lines of a table of ``values`` values in compiled code."""
+    return values >= WEAVE_VALUES
 
 
 def check_table_size(rows: int, columns: int, path: str | os.PathLike[str]) -> None:
@@ -125,6 +144,37 @@ class _Columns:
                 self.runs[-1] = (self.runs[-1][0], j + 1, kind)
             else:
                 self.runs.append((j, j + 1, kind))
+        self.widths = [end - first for first, end, _ in self.runs]
+        self.woven = (all(kind != "o" for _, _, kind in self.runs)
+                      and _weaving(self.rows * self.width))
+
+    @functools.cached_property
+    def csv_weaver(self) -> Weaver:
+        """Lines of CSV from the runs' texts: a comma between runs, a newline after a row."""
+        from mechloop.output.weave import Weaver  # numba: only when a table is written
+
+        return Weaver(self.widths, [b""] + [b","] * (len(self.runs) - 1), b"\n",
+                      values=False)
+
+    def texts(self, start: int, stop: int, *, csv: bool) -> list[bytes] | None:
+        """orjson's 2-D text of every run in rows ``start:stop``, for a
+        :class:`~mechloop.output.weave.Weaver`; None when a run holds strings or objects.
+        With ``csv``, NaN (``null``) is dropped (an empty field) and booleans capitalized,
+        and None is returned for an infinity too (orjson writes it as null, like NaN)."""
+        if not self.woven:
+            return None
+        texts = []
+        for run in self.runs:
+            block = self.block(run, start, stop)
+            text = _dump(block)
+            if csv and run[2] == "f" and not np.isfinite(block).all():
+                if np.isinf(block).any():
+                    return None
+                text = text.replace(b"null", b"")
+            elif csv and run[2] == "b":
+                text = text.replace(b"t", b"T").replace(b"f", b"F")
+            texts.append(text)
+        return texts
 
     def step(self) -> int:
         """Rows in one chunk: about CHUNK_VALUES values, at least 16 rows."""
@@ -224,8 +274,16 @@ def _unbracket(items: list[bytes], brackets: int) -> list[bytes]:
     return items
 
 
-def _csv_chunk(columns: _Columns, start: int, stop: int) -> list[bytes | memoryview]:
-    """Rows ``start:stop`` as CSV lines (each ending in a newline)."""
+def _csv_chunk(columns: _Columns, start: int, stop: int) -> Part:
+    """Rows ``start:stop`` as CSV lines (each ending in a newline): woven in one compiled
+    pass (:mod:`mechloop.output.weave`) for a large table unless a column holds strings or
+    objects or a float column an infinity (rare: those chunks are formatted field by
+    field); woven by the thread that writes them (the weaving does not hold Python's
+    lock)."""
+    texts = columns.texts(start, stop, csv=True)
+    if texts is not None:
+        weave = functools.partial(columns.csv_weaver, texts, stop - start)
+        return lambda: [weave()]
     if len(columns.runs) == 1 and columns.runs[0][2] == "f":  # floats only: no line split
         block = columns.block(columns.runs[0], start, stop)
         if not np.isinf(block).any():
@@ -249,8 +307,10 @@ def write_csv(frame: pd.DataFrame, handle: BinaryIO) -> None:
     if not columns.runs:
         handle.write(b"\n" * columns.rows)
         return
+    if columns.woven:
+        columns.csv_weaver  # noqa: B018 (made, and its code compiled, before any fork)
 
-    def render(first: int, last: int) -> Iterator[list[bytes | memoryview]]:
+    def render(first: int, last: int) -> Iterator[Part]:
         for start, stop in columns.chunks(first, last):
             yield _csv_chunk(columns, start, stop)
 
@@ -303,9 +363,21 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
     opener = b"},\n{"
     prefixes = [opener + keys[0] + b":"] + [b"," + key + b":" for key in keys[1:]]
     handle.write(b"[\n")
+    if columns.woven:  # made, and its code compiled, before any fork
+        from mechloop.output.weave import Weaver
 
-    def render(first: int, last: int) -> Iterator[list[bytes | memoryview]]:
+        weaver = Weaver(columns.widths, prefixes, b"", values=True)
+
+    def woven(texts: list[bytes], rows: int, first: bool) -> list[bytes | memoryview]:
+        block = weaver(texts, rows)  # (by the writing thread: compiled, without the lock)
+        return [block[len(opener) - 1:] if first else block]
+
+    def render(first: int, last: int) -> Iterator[Part]:
         for start, stop in columns.chunks(first, last):
+            texts = columns.texts(start, stop, csv=False)  # inf: null, as NaN
+            if texts is not None:  # (columns.woven: the weaver is made)
+                yield functools.partial(woven, texts, stop - start, start == 0)
+                continue
             parts: list[bytes] = [b""] * (2 * (stop - start) * columns.width)
             parts[0::2] = prefixes * (stop - start)
             parts[1::2] = _json_tokens(columns, start, stop)
@@ -318,7 +390,8 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
 def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
     """``frame`` as Parquet (row groups of about 8 million values; dictionary encoding
-    only for columns that are not floats) into ``handle``."""
+    only for columns that are not floats) into ``handle``: a group is encoded and written
+    by a thread while the next is converted from the frame (at most two in memory)."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
@@ -326,7 +399,14 @@ def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
     schema = pa.Schema.from_pandas(named, preserve_index=False)
     step = max(1, PARQUET_GROUP_VALUES // max(1, len(named.columns)))
     coded = [str(c) for c in named.columns if named[c].dtype.kind != "f"]  # few values
-    with pq.ParquetWriter(handle, schema, use_dictionary=coded) as writer:
+    with pq.ParquetWriter(handle, schema, use_dictionary=coded) as writer, \
+            ThreadPoolExecutor(1) as pool:  # a group is encoded and written beside the next
+        writing: Future[None] | None = None  # conversion (both release Python's lock)
         for start in range(0, len(named), step):
-            writer.write_table(pa.Table.from_pandas(named.iloc[start:start + step],
-                                                    schema=schema, preserve_index=False))
+            group = pa.Table.from_pandas(named.iloc[start:start + step], schema=schema,
+                                         preserve_index=False)
+            if writing is not None:
+                writing.result()  # at most two groups in memory
+            writing = pool.submit(writer.write_table, group)
+        if writing is not None:
+            writing.result()

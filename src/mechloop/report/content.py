@@ -209,6 +209,10 @@ def build_document(model: Model, *, lang: str, output: str | None = None,
     before the conclusion; ``warn(text)`` is told, in ``lang``, when the chain breaks,
     so that the report's cycle figures are not valid (the report says so too).
     """
+    if any(c.spatial for c in model.contours):  # issue 17: no 3-D views, no report yet
+        raise HintedError("the report of a model with spatial contours is not built yet "
+                          "(its vector schemes and trajectories are in 3-D)",
+                          "write the table with mechloop solve, or plot its parameters")
     w = words(lang)
     dyn = solve_dynamics(model) if model.bodies else None
     results = dyn.kinematics if dyn is not None else solve(model)

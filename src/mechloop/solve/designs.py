@@ -175,6 +175,14 @@ def solve_designs(model: Model, overrides: Mapping[str, ArrayLike], *,
 
     Returns :class:`DesignResults` with arrays shaped ``(D, P)``, ``P = N + 1``.
     """
+    from mechloop.model.spatial import is_spatial, refuse_spatial
+
+    if is_spatial(model) and positions is None:  # issue 17: mechloop.spatial.solve
+        from mechloop.spatial.solve import solve_spatial_designs
+
+        return solve_spatial_designs(model, require_valid(model), dict(overrides),
+                                     analogs_of=analogs_of)
+    refuse_spatial(model, "solving chosen positions of many designs")
     regular, _ = _solve(model, overrides, None, derivatives=derivatives,
                         chunk_elements=chunk_elements, positions=_chosen(model, positions),
                         analogs_of=analogs_of)
@@ -230,6 +238,9 @@ def solve_designs_at(model: Model, overrides: Mapping[str, ArrayLike], inputs: A
     place in the motion: give such contours a fixed variant.  ``positions`` restricts the
     regular positions as in :func:`solve_designs`.
     """
+    from mechloop.model.spatial import refuse_spatial
+
+    refuse_spatial(model, "solving many designs at once")
     values = np.asarray(inputs, dtype=float)
     if values.ndim != 2:
         raise SolveError(f"inputs need the shape (D, K), got {values.shape}",

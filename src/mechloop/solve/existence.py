@@ -99,6 +99,9 @@ def assembles_throughout(model: Model, overrides: Mapping[str, ArrayLike] | None
     Compiling the model is most of the cost for a few designs: to check many
     populations of one model, build an :class:`ExistenceCheck` once and call it.
     """
+    from mechloop.model.spatial import refuse_spatial
+
+    refuse_spatial(model, "the existence check over the input interval")
     return ExistenceCheck(model)(overrides, samples=samples, intervals=intervals)
 
 

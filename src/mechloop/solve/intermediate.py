@@ -184,6 +184,9 @@ def solve_intermediate(model: Model, *, results: Results | None = None,
     envelopes and a contour whose variant is tracked (``auto``): an envelope point is
     solved at its own position alone, so the variant must be given (1 or 2).
     """
+    from mechloop.model.spatial import refuse_spatial
+
+    refuse_spatial(model, "the solve over an intermediate argument")
     structure = require_valid(model)
     numbers = intermediate_numbers(model)
     if not numbers:

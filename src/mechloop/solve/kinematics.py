@@ -375,6 +375,10 @@ def solve(model: Model, *, block: int = BLOCK, analogs_of: int | None = None,
     structure = require_valid(model)
     if not memory_checked:
         require_memory(model)
+    if any(c.spatial for c in model.contours):  # spatial contours (issue 17)
+        from mechloop.spatial.solve import solve_spatial
+
+        return solve_spatial(model, structure, analogs_of=analogs_of)
     n_pos = model.positions + 1
     time = model_time(model)
     if analogs_of is not None:

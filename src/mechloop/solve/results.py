@@ -140,9 +140,9 @@ class Results:
         """Names of the parameters that are not constant, in vector order (r before a)."""
         names = []
         for number in sorted(self.model.vectors):
-            for letter in "ra":
+            for letter in "rab":  # b (β) only in spatial models
                 name = f"{letter}{number}"
-                if name not in self.constant:
+                if name not in self.constant and (letter != "b" or name in self.values):
                     names.append(name)
         return names
 
@@ -173,7 +173,7 @@ class Results:
                 cols[f"arg{number} [m]"] = values
         for name in self.varying():
             base = "m" if name[0] == "r" else "rad"
-            shown = np.degrees(self.values[name]) if name[0] == "a" else self.values[name]
+            shown = np.degrees(self.values[name]) if name[0] != "r" else self.values[name]
             cols[f"{name} [{'m' if name[0] == 'r' else 'deg'}]"] = shown
             cols[f"d{name} [{base}/{d1}]"] = self.rates[name]
             cols[f"dd{name} [{base}/{d2}]"] = self.accels[name]

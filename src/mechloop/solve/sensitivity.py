@@ -51,6 +51,9 @@ def position_tangents(model: Model, values: Mapping[str, Array],
     Returns name -> tangent ``(V, D, P)`` (SI per unit of the direction); NaN where the
     contour is broken or at a dead point (singular Jacobian), as the velocities are.
     """
+    from mechloop.model.spatial import refuse_spatial
+
+    refuse_spatial(model, "the sensitivity to the dimensions")
     structure = require_valid(model)
     shape = np.broadcast_shapes(*(np.shape(v) for v in values.values()))
     full = (directions, *shape)

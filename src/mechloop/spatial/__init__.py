@@ -41,8 +41,11 @@ Pr20    β_i β_j β_k   ∞         exist.  whether the family exists (indeterm
 
 Exact velocities and accelerations of the unknowns by the 3×3 Jacobian: :mod:`.rates`.
 
-Not yet here: variant choice/continuity over positions, models with spatial contours
-(schema, solver, mixed planar/spatial, coupled blocks), dynamics, views.
+Models with spatial contours: :mod:`.contour` names a contour's module from its three
+unknowns and follows a branch over the positions (a fixed variant, or continuity);
+:mod:`.solve` solves a whole model, spatial and planar contours (any plane) together
+(the model side: :mod:`mechloop.model.spatial`, :mod:`mechloop.model.plane`).  Not yet
+here: coupled spatial blocks, many designs at once, dynamics, views.
 
 Shared helpers: :mod:`.roots` (``a cos θ + b sin θ = c``, quadratics), :mod:`.quartic`
 (real roots of a trigonometric polynomial of any degree by batched companion
@@ -51,7 +54,8 @@ Verified in ``tests/test_spatial_modules.py`` (closure of every branch, the know
 configuration found, a SciPy multi-start oracle for missed roots, the planar modules for
 ``β = 0``, finite differences for :mod:`.rates`).
 
-Owns the modules above; imports only NumPy; knows nothing of models or files.
+The modules above import only NumPy and know nothing of models or files; :mod:`.solve`
+reads models.
 """
 
 from mechloop.spatial.cone import solve_pr5, solve_pr6, solve_pr7

@@ -59,7 +59,7 @@ COLUMN_KINDS = {"m": "length", "deg": "angle", "s": "time", "kg": "mass", "N": "
                 "rad/s": "angular_velocity", "rad/s^2": "angular_acceleration",
                 "m/s": "velocity", "m/s^2": "acceleration"}
 
-_KINEMATIC = re.compile(r"^(d{0,2})([ra])(\d+)$")
+_KINEMATIC = re.compile(r"^(d{0,2})([rab])(\d+)$")  # b: β of a spatial vector
 _COLUMN = re.compile(r"^(.+) \[(.+)\]$")
 _TABLE_HEAD = re.compile(r"^(time|arg\d+)$")
 
@@ -155,7 +155,7 @@ class _Source:
         divisor = {"s": "time", "rad": "angle", "m": "length"}[self.kin.derivative_units()[0]]
         if order == "":
             value = self.kin.value(parameter)
-            return Series(name, continuous_angle(value) if letter == "a" else value, base)
+            return Series(name, continuous_angle(value) if letter != "r" else value, base)
         if order == "d":
             return Series(name, self.kin.rate(parameter), f"{base}/{divisor}")
         return Series(name, self.kin.accel(parameter), f"{base}/{divisor}^2")

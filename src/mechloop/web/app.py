@@ -35,10 +35,19 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
   the key path ``keys`` (``["vectors", 1, "r"]``), every other byte kept
   (:mod:`mechloop.web.edit`), and the plain data of the new text;
   ``POST /api/data`` ``{text}`` — ``{data}``: the text's plain data, as the page's forms
-  read it.
+  read it;
+* ``GET /api/autosave?path=...|example=...`` — the working copy of a model
+  (:mod:`mechloop.web.autosave`): ``{text, time, differs}`` (``text`` null when there is
+  none); ``POST /api/autosave`` ``{text, path|example}`` — keep it (removed when it equals
+  the file); ``POST /api/autosave/clear`` — discard it;
+* ``GET /api/templates`` — the bundled models a new model can start from
+  (:mod:`mechloop.web.templates`); ``GET /api/template?name=...`` — the text of one and the
+  file name it is offered to be saved as.  ``POST /api/save`` with ``template`` also copies
+  the files the model names from beside the template.
 
 Every refusal is JSON ``{"error", "hint", "problems"}`` with a 4xx/5xx status; a model
-error is 422 with every problem located by line.
+error is 422 with every problem located by line.  Messages and fixes are in the page's
+language (:mod:`mechloop.web.language`: the ``X-Mechloop-Lang`` header).
 """
 
 from __future__ import annotations
@@ -58,10 +67,12 @@ from starlette.staticfiles import StaticFiles
 from mechloop.bundled.catalog import examples, examples_dir, find_example
 from mechloop.errors import HintedError, MechloopError, ModelError
 from mechloop.output.atomic import atomic_write_text
-from mechloop.web import exports, work
+from mechloop.web import exports, templates, work
+from mechloop.web.autosave import working_copy
 from mechloop.web.documents import problems, read_model
 from mechloop.web.edit import edit_text, json_data
 from mechloop.web.jobs import JOB_SECONDS, Jobs
+from mechloop.web.language import problems_in, request_language
 from mechloop.web.payload import solution
 from mechloop.web.safety import Guard, WebError, Workspace
 from mechloop.web.views import view_svg
@@ -79,8 +90,8 @@ class _JSON(Response):
         return orjson.dumps(content, option=orjson.OPT_SERIALIZE_NUMPY)
 
 
-def _error(exc: MechloopError, status: int | None = None) -> JSONResponse:
-    items = exc.problems if isinstance(exc, WorkFailed) else problems(exc)
+def _error(exc: MechloopError, status: int | None = None, lang: str = "en") -> JSONResponse:
+    items = problems_in(exc.problems if isinstance(exc, WorkFailed) else problems(exc), lang)
     first = items[0] if items else {"message": str(exc), "hint": ""}
     code = status or getattr(exc, "status", 422 if isinstance(exc, ModelError) else 400)
     return JSONResponse({"error": first["message"], "hint": first["hint"],
@@ -139,7 +150,8 @@ def create_app(folder: str | Path, *, token: str | None = None,
             try:
                 return await handler(request)
             except MechloopError as exc:
-                return _error(exc)
+                return _error(exc, lang=request_language(request.headers,
+                                                         request.query_params))
         return endpoint
 
     async def index(request: Request) -> Response:
@@ -169,7 +181,8 @@ def create_app(folder: str | Path, *, token: str | None = None,
         try:
             await run_in_threadpool(read_model, data.get("text", ""), path, root)
         except MechloopError as exc:
-            return JSONResponse({"ok": False, "problems": problems(exc)})
+            lang = request_language(request.headers, request.query_params)
+            return JSONResponse({"ok": False, "problems": problems_in(problems(exc), lang)})
         return JSONResponse({"ok": True, "problems": []})
 
     async def solve(request: Request) -> Response:
@@ -188,8 +201,51 @@ def create_app(folder: str | Path, *, token: str | None = None,
         if not path.parent.is_dir():
             raise WebError(f"no folder {workspace.relative(path.parent)!r}",
                            "save into an existing folder", 404)
+        template = templates.template(str(data["template"])) if data.get("template") \
+            else None
         await run_in_threadpool(atomic_write_text, path, data.get("text", ""))
-        return JSONResponse({"saved": workspace.relative(path)})
+        answer: dict[str, Any] = {"saved": workspace.relative(path)}
+        if template is not None:  # a new model: the files it names, copied beside it
+            answer["copied"] = await run_in_threadpool(
+                templates.copy_companions, data.get("text", ""), template, path, workspace)
+        working_copy(workspace, path=workspace.relative(path)).clear()
+        return JSONResponse(answer)
+
+    def copy_of(data: Any) -> Any:
+        """The working copy of the model a request names (``path`` or ``example``)."""
+        if data.get("example"):
+            return working_copy(workspace, example=templates.template(str(data["example"])))
+        return working_copy(workspace, path=str(data.get("path", "")))
+
+    async def autosave_get(request: Request) -> Response:
+        copy = copy_of(request.query_params)
+        found = await run_in_threadpool(copy.read)
+        if found is None:
+            return JSONResponse({"text": None, "time": None, "differs": False})
+        text, when = found
+        return JSONResponse({"text": text, "time": when, "differs": copy.differs(text)})
+
+    async def autosave_put(request: Request) -> Response:
+        data = await body(request)
+        copy = copy_of(data)
+        text = data.get("text", "")
+        if not copy.differs(text):  # back to the file: nothing to keep
+            await run_in_threadpool(copy.clear)
+            return JSONResponse({"kept": False})
+        await run_in_threadpool(copy.write, text)
+        return JSONResponse({"kept": True})
+
+    async def autosave_clear(request: Request) -> Response:
+        data = await body(request)
+        return JSONResponse({"cleared": await run_in_threadpool(copy_of(data).clear)})
+
+    async def template_list(request: Request) -> Response:
+        return JSONResponse({"templates": templates.listing()})
+
+    async def template_text(request: Request) -> Response:
+        path = templates.template(request.query_params.get("name", ""))
+        return JSONResponse({"id": path.stem, "file": path.name,
+                             "text": path.read_text(encoding="utf-8")})
 
     def attachment(content: bytes, kind: str, path: Path, suffix: str) -> Response:
         name = (path.stem or "model") + suffix
@@ -268,7 +324,11 @@ def create_app(folder: str | Path, *, token: str | None = None,
         return JSONResponse({"id": job.id})
 
     async def job_status(request: Request) -> Response:
-        return _JSON(jobs.get(request.path_params["job"]).status())
+        answer = jobs.get(request.path_params["job"]).status()
+        answer["problems"] = problems_in(answer["problems"],
+                                         request_language(request.headers,
+                                                          request.query_params))
+        return _JSON(answer)
 
     async def job_file(request: Request) -> Response:
         file = work.job_file(jobs.get(request.path_params["job"]))
@@ -306,6 +366,11 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/validate", guarded(validate), methods=["POST"]),
               Route("/api/solve", guarded(solve), methods=["POST"]),
               Route("/api/save", guarded(save), methods=["POST"]),
+              Route("/api/autosave", guarded(autosave_get)),
+              Route("/api/autosave", guarded(autosave_put), methods=["POST"]),
+              Route("/api/autosave/clear", guarded(autosave_clear), methods=["POST"]),
+              Route("/api/templates", guarded(template_list)),
+              Route("/api/template", guarded(template_text)),
               Route("/api/report", guarded(report), methods=["POST"]),
               Route("/api/table", guarded(table_download), methods=["POST"]),
               Route("/api/figure", guarded(figure), methods=["POST"]),

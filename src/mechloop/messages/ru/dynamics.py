@@ -514,4 +514,11 @@ ENTRIES: list[Entry] = [
      "положения к положению"),
     (_p("the motion of several inputs needs links of ratio 1"),
      "для движения с несколькими входами нужны ссылки с отношением 1"),
+    # spatial contours (dynamics/points.py)
+    (r"position plans, trajectories and animations of a model with spatial contours are not "
+     r"built yet \(its points are in 3-D\)", "планы положений, траектории и анимация модели "
+     "с пространственными контурами пока не реализованы (её точки лежат в пространстве)"),
+    (r"plot its parameters against the position \(plot \.\.\. parameters -n b3\) or write "
+     r"the table with mechloop solve", "постройте графики её параметров по положениям "
+     "('plot ... parameters -n b3') или запишите таблицу командой 'mechloop solve'"),
 ]

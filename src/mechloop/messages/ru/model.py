@@ -66,6 +66,37 @@ def _engine_keys(match: re.Match[str]) -> str:
     return text
 
 
+#: Numbers of function parameters a contour needs (2 planar, 3 spatial; in digits or
+#: words): nominative and genitive.
+_COUNT = {"2": ("два", "двух"), "3": ("три", "трёх"), "two": ("два", "двух"),
+          "three": ("три", "трёх")}
+_KIND_DAT = {"spatial": "пространственному", "planar": "плоскому"}
+#: What ``refuse_spatial`` refuses (model/spatial.py), as the object of «не реализовано».
+_REFUSED = {
+    "the existence check over the input interval": "проверка существования на интервале входа",
+    "solving chosen positions of many designs": "решение выбранных положений многих проектов",
+    "solving many designs at once": "одновременное решение многих проектов",
+    "the sensitivity to the dimensions": "чувствительность к размерам",
+    "the solve over an intermediate argument": "решение по промежуточному аргументу",
+}
+
+
+def _functions_count(match: re.Match[str]) -> str:
+    """"contour 2 has 1 function parameter(s) (r3); a spatial contour needs exactly 3"."""
+    listed = "нет" if match["list"] == "none" else match["list"]
+    kind = _KIND_DAT.get(match["kind"], match["kind"])
+    return (f"в контуре {match['c']} искомых параметров ('function'): {match['n']} "
+            f"({listed}); {kind} контуру нужно ровно {match['want']}")
+
+
+def _refused(match: re.Match[str]) -> str:
+    """"solving many designs at once is not built for a model with spatial contours yet"."""
+    from mechloop.messages.catalogue_ru import translate  # the catalogue holds this module
+
+    what = _REFUSED.get(match["what"]) or translate(match["what"])
+    return f"для модели с пространственными контурами пока не реализовано: {what}"
+
+
 ENTRIES: list[Entry] = [
     # the vector model's checks (model/check.py, model/display.py, model/limits.py)
     (rf"(?P<v>{NAME}) is not a role", "{v} — не роль параметра"),
@@ -529,4 +560,81 @@ ENTRIES: list[Entry] = [
      "или y"),
     (r"give one task: path, function or motion",
      "задайте одну задачу: 'path', 'function' или 'motion'"),
+    # spatial contours (model/plane.py, model/spatial.py, model/structure.py)
+    (r"give the plane's normal \[nx, ny, nz\], or its two angles a and b",
+     "задайте нормаль плоскости [nx, ny, nz] или два её угла a и b"),
+    (r"the plane's normal is zero", "нормаль плоскости нулевая"),
+    (r"'(?P<k>[^']*)' is not solved for a model with spatial contours yet \(the spatial "
+     r"solver does kinematics only\)", "'{k}' пока не решается для модели с "
+     "пространственными контурами (пространственный решатель считает только кинематику)"),
+    (r"remove '(?P<k>[^']*)', or solve the planar part as a separate model",
+     "удалите '{k}' или решите плоскую часть как отдельную модель"),
+    (r"contour (?P<c>\S+) is planar; a convention of parameter ranges applies to a spatial "
+     r"contour", "контур {c} плоский; соглашение о диапазонах параметров ('convention') "
+     "применяется к пространственному контуру"),
+    (r"remove 'convention'", "удалите 'convention'"),
+    (r"contour (?P<c>\S+) is spatial; a plane applies to a planar contour",
+     "контур {c} пространственный; плоскость ('plane') задаётся только плоскому контуру"),
+    (r"remove 'plane', or 'spatial: true'", "удалите 'plane' или 'spatial: true'"),
+    (r"contour (?P<c>\S+) has a plane, but no contour of the model is spatial: a plane "
+     r"places a planar contour beside spatial ones", "у контура {c} задана плоскость "
+     "('plane'), но в модели нет пространственных контуров: плоскость размещает плоский "
+     "контур рядом с пространственными"),
+    (r"remove 'plane' \(a planar model lies in the XY plane\)",
+     "удалите 'plane' (плоская модель лежит в плоскости XY)"),
+    (r"a planar contour lists vector numbers \(a minus sign subtracts a vector only in a "
+     r"spatial contour\)", "плоский контур перечисляет номера векторов (знак минус вычитает "
+     "вектор только в пространственном контуре)"),
+    (r"vector (?P<v>\S+) has a rotation β \(b\) but its contour (?P<c>\S+) is planar \(the "
+     r"XY plane, β = 0\)", "у вектора {v} задано вращение β (b), но его контур {c} плоский "
+     "(плоскость XY, β = 0)"),
+    (r"vector (?P<v>\S+) has a rotation β \(b\), but no contour of the model is spatial",
+     "у вектора {v} задано вращение β (b), но в модели нет пространственных контуров"),
+    (r"add 'spatial: true' to (?P<w>that|its) contour, or remove 'b'",
+     lambda m: f"добавьте 'spatial: true' в {'этот' if m['w'] == 'that' else 'его'} контур "
+     "или удалите 'b'"),
+    (r"contour (?P<c>\S+) has (?P<n>\S+) function parameter\(s\) \((?P<list>[^()]*)\); a "
+     r"(?P<kind>\w+) contour needs exactly (?P<want>\S+)", _functions_count),
+    (r"mark (?P<n>\S+) of its parameters 'function' \(the unknowns of this loop\)",
+     lambda m: f"отметьте {_COUNT.get(m['n'], (m['n'],))[0]} его параметра как 'function' "
+     "(неизвестные этого контура)"),
+    (r"make all but (?P<n>\S+) of them constants, arguments or links to earlier contours",
+     lambda m: f"сделайте все, кроме {_COUNT.get(m['n'], (m['n'], m['n']))[1]}, "
+     "постоянными, аргументами или ссылками на предыдущие контуры"),
+    (r"contour (?P<c>\S+) has the three rotations (?P<list>.+?) unknown \(module Pr20\): it "
+     r"has infinitely many solutions \(a one-parameter family\)", "в контуре {c} неизвестны "
+     "все три вращения {list} (модуль Pr20): у него бесконечно много решений "
+     "(однопараметрическое семейство)"),
+    (r"give one of these β a value \(a constant, an argument or a link\): the other two are "
+     r"then module Pr18/Pr19 or the planar Pl4 in the XZ plane", "задайте одному из этих β "
+     "значение (постоянную, аргумент или ссылку): тогда два других решаются модулем "
+     "Pr18/Pr19 или плоским модулем Pl4 в плоскости XZ"),
+    (r"contour (?P<c>\S+) is module (?P<m>\S+), which has (?P<n>\S+) solution\(s\); variant "
+     r"(?P<v>\S+) does not apply", "контур {c} — модуль {m}, число его решений: {n}; "
+     "вариант {v} неприменим"),
+    (r"contour (?P<c>\S+) is module (?P<m>\S+), which has at most two solutions; variant "
+     r"(?P<v>\S+) does not apply", "контур {c} — модуль {m}, у которого не больше двух "
+     "решений; вариант {v} неприменим"),
+    (r"set 'variant' to 1\.\.(?P<n>\S+) or 'auto'",
+     "задайте 'variant' от 1 до {n} или 'auto'"),
+    (r"set 'variant' to 1, 2 or 'auto'", "задайте 'variant': 1, 2 или 'auto'"),
+    (r"remove 'guess' and choose the branch with 'variant'",
+     "удалите 'guess' и выберите ветвь решения ключом 'variant'"),
+    (r"contour (?P<c>\S+) links to one of its own functions: a non-elementary module, which "
+     r"is not solved in spatial models yet", "контур {c} ссылается на один из своих же "
+     "искомых параметров: это неэлементарный модуль, а в пространственных моделях он пока "
+     "не решается"),
+    (r"link to a parameter an earlier contour solves, an argument or a constant",
+     "сошлитесь на параметр, который находит предыдущий контур, на аргумент или "
+     "постоянную"),
+    (r"contours (?P<list>.+?) need each other's functions: a coupled block, which is not "
+     r"solved in spatial models yet", "контурам {list} нужны искомые параметры друг друга: "
+     "это связанный блок, а в пространственных моделях он пока не решается"),
+    (r"break the cycle \(make one of the linked parameters a constant or an argument\), or "
+     r"solve the model as planar", "разорвите цикл (сделайте один из связанных параметров "
+     "постоянной или аргументом) или решайте модель как плоскую"),
+    (r"(?P<what>.+?) is not built for a model with spatial contours yet", _refused),
+    (r"solve it with mechloop\.solve \(mechloop solve\), or vary its dimensions with "
+     r"mechloop sweep", "решите её функцией 'mechloop.solve' ('mechloop solve') или "
+     "варьируйте её размеры командой 'mechloop sweep'"),
 ]

@@ -420,4 +420,6 @@ ENTRIES: list[Entry] = [
     (r"a grid needs a two-parameter sweep; this one has (?P<n>\S+)",
      "для сетки нужен перебор двух параметров, а здесь их {n}"),
     (r"sweep two parameters", "перебирайте два параметра"),
+    # spatial contours (spatial/solve.py)
+    (r"pass 1-D arrays of one length", "передайте одномерные массивы одной длины"),
 ]

@@ -18,11 +18,13 @@ const state = {
   timer: null,         // playing
   structure: null,     // the answer of api/structure
   version: 0,          // of the text: answers to older texts are dropped
+  unsaved: null,       // a new model not saved yet: {template, file} (newmodel.js)
 };
 
 async function api(path, options) {
   const headers = Object.assign({}, (options && options.headers) || {});
   if (TOKEN) headers["X-Mechloop-Token"] = TOKEN;
+  headers["X-Mechloop-Lang"] = LANG;  // the server's error messages in the page's language
   try {
     return await fetch(path, Object.assign({}, options, { headers }));
   } catch (error) {  // the server stopped or the network failed: said, not thrown
@@ -114,6 +116,7 @@ function renderProblems() {
     list.appendChild(item);
   }
   renderGutter();
+  highlighter.mark(state.problems.map((p) => p.line));
 }
 
 let pending = null;
@@ -280,7 +283,8 @@ function render() {
   drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
   if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
   drawPlot($("plot"), solution,
-    plotted().map((name) => solution.columns.find((c) => c.name === name)), k);
+    plotted().map((name) => solution.columns.find((c) => c.name === name)), k,
+    plotZoom.rangeFor(solution.count - 1, k));
   let label = t("position", { k, n: solution.count - 1 });
   if (solution.time) label += ", " + t("time", { t: format(solution.time[k]) });
   $("position-label").textContent = label;
@@ -489,9 +493,7 @@ function jobOpen() {
   $("save-path").value = name + "_synthesized.yaml";
   state.solution = null;
   state.position = 0;
-  $("editor").value = job.result.text;
-  $("editor").scrollTop = 0;
-  edited();
+  mechloopEditor.setText(job.result.text);  // one undo goes back to the model
   status("jobOpened", null, "ok");
 }
 
@@ -546,25 +548,37 @@ async function open(choice) {
   }
   state.solution = null;
   state.position = 0;
-  $("editor").value = answer.text;
-  $("editor").scrollTop = 0;
-  edited();
+  state.unsaved = null;
+  document.body.dataset.unsaved = "";
+  await autosave.open(state.source, answer.text);
 }
 
-async function save() {
-  const path = $("save-path").value.trim();
+// Save the editor's text as ``name`` (else the file field's); a new model asks its name.
+async function save(name) {
+  if (state.unsaved && typeof name !== "string") {
+    newModel.ask();
+    return;
+  }
+  const path = typeof name === "string" ? name : $("save-path").value.trim();
   if (!path) {
     status("unsaved", null, "error");
     return;
   }
   status("saving", null);
-  const response = await postJSON("api/save", { path, text: $("editor").value });
+  const text = $("editor").value;
+  const request = { path, text };
+  if (state.unsaved) request.template = state.unsaved.template;
+  const response = await postJSON("api/save", request);
   const answer = await read(response);
   if (!response.ok) {
     status("failed", { error: answer.error }, "error");
     return;
   }
   await loadList();
+  await autosave.saved(state.source, { path: answer.saved }, text);
+  state.unsaved = null;
+  document.body.dataset.unsaved = "";
+  $("save-path").value = answer.saved;
   state.source = { path: answer.saved };
   $("model-select").value = "path:" + answer.saved;
   status("saved", { path: answer.saved }, "ok");
@@ -702,7 +716,21 @@ function setLanguage(lang) {
     render();
   }
   renderStructure();
+  newModel.fill();
+  autosave.show();
   if (window.mechloopForms) window.mechloopForms.draw();
+  if (state.problems.length) recheck();
+}
+
+// The problems said again in the new language (the server says them in the page's).
+async function recheck() {
+  const version = state.version;
+  const response = await postJSON("api/validate",
+    Object.assign({ text: $("editor").value }, state.source));
+  const answer = await read(response);
+  if (version !== state.version || !response.ok || answer.ok) return;
+  state.problems = answer.problems;
+  renderProblems();
 }
 
 // ------------------------------------------------------------------ start
@@ -755,6 +783,7 @@ window.addEventListener("DOMContentLoaded", async () => {
   for (const button of document.querySelectorAll("button.lang")) {
     button.addEventListener("click", () => setLanguage(button.dataset.lang));
   }
+  newModel.list();
   const listed = await loadList();
   const first = query.get("path") ? "path:" + query.get("path")
     : query.get("example") ? "example:" + query.get("example")

@@ -200,7 +200,9 @@ const AXIS_WIDTH = 58;  // px of one y-axis with its labels
 // Up to six columns over the positions, one y-axis per unit (the first unit's axis on the
 // left, the next on the right, and so on outwards), the slider's position marked on every
 // curve; the first curve's marker is #plot-marker, every marker carries its value.
-function drawPlot(svg, solution, columns, k) {
+// ``range``: the positions shown [from, to] (zoomed; all when not given); the frame of the
+// plot is kept as svg.plotFrame for the hover values (plotzoom.js).
+function drawPlot(svg, solution, columns, k, range) {
   clear(svg);
   columns = columns.filter(Boolean);
   if (!columns.length) return;
@@ -212,9 +214,13 @@ function drawPlot(svg, solution, columns, k) {
   const left = AXIS_WIDTH * count("left") + 6, right = AXIS_WIDTH * count("right") + 12;
   const top = 12 + 14 * Math.ceil(columns.length / 3), bottom = 34;
   const n = solution.count - 1;
-  const x = (i) => left + (n > 0 ? i / n : 0) * (width - left - right);
+  const [i0, i1] = range || [0, n];
+  const x = (i) => left + (i1 > i0 ? (i - i0) / (i1 - i0) : 0) * (width - left - right);
+  svg.dataset.from = i0;
+  svg.dataset.to = i1;
+  const shown = (i) => i >= Math.floor(i0) && i <= Math.ceil(i1);
   const axes = el("g", { class: "axes", "font-size": 10, fill: "#333" }, svg);
-  for (const i of ticks(0, n, 8)) {
+  for (const i of ticks(i0, i1, 8)) {
     el("line", { x1: x(i), x2: x(i), y1: top, y2: height - bottom, stroke: "#e3e3e3" }, axes);
     el("text", { x: x(i), y: height - bottom + 13, "text-anchor": "middle" }, axes)
       .textContent = format(i);
@@ -224,7 +230,7 @@ function drawPlot(svg, solution, columns, k) {
   const scales = {};
   units.forEach((unit, j) => {
     const finite = columns.filter((c) => c.unit === unit)
-      .flatMap((c) => c.values.filter((v) => known(v)));
+      .flatMap((c) => c.values.filter((v, i) => known(v) && shown(i)));
     let low = finite.length ? Math.min(...finite) : 0;
     let high = finite.length ? Math.max(...finite) : 1;
     if (high - low < 1e-12 * Math.max(1, Math.abs(high))) { low -= 1; high += 1; }
@@ -254,14 +260,21 @@ function drawPlot(svg, solution, columns, k) {
   });
   el("rect", { x: left, y: top, width: width - left - right, height: height - top - bottom,
     fill: "none", stroke: "#888" }, axes);
-  el("line", { x1: x(k), x2: x(k), y1: top, y2: height - bottom, stroke: "#d62728",
-    "stroke-dasharray": "4 3", class: "cursor" }, svg);
+  const clip = el("clipPath", { id: svg.id + "-clip" }, el("defs", {}, svg));
+  el("rect", { x: left, y: top - 5, width: width - left - right,
+    height: height - top - bottom + 10 }, clip);
+  const inside = el("g", { "clip-path": `url(#${svg.id}-clip)` }, svg);
+  svg.plotFrame = { left, right, top, bottom, width, height, i0, i1, n, x, scales, columns };
+  if (shown(k)) {
+    el("line", { x1: x(k), x2: x(k), y1: top, y2: height - bottom, stroke: "#d62728",
+      "stroke-dasharray": "4 3", class: "cursor" }, inside);
+  }
   columns.forEach((column, j) => {
     const y = scales[column.unit], color = CURVE_COLORS[j];
     // the curve, broken where a value is unknown
     let path = "", pen = false;
     column.values.forEach((v, i) => {
-      if (known(v)) {
+      if (known(v) && shown(i)) {
         path += `${pen ? "L" : "M"}${x(i).toFixed(2)},${y(v).toFixed(2)} `;
         pen = true;
       } else {
@@ -269,14 +282,14 @@ function drawPlot(svg, solution, columns, k) {
       }
     });
     el("path", { d: path, fill: "none", stroke: color, "stroke-width": 1.8,
-      class: "curve", "data-name": column.name }, svg);
+      class: "curve", "data-name": column.name }, inside);
     const v = column.values[k];
     const legend = el("text", { x: 8 + (j % 3) * ((width - 16) / 3),
       y: 11 + 14 * Math.floor(j / 3), "font-size": 11, fill: color, class: "legend",
       "data-name": column.name }, svg);
     legend.textContent = `${columnText(column.name)} = ${format(v === null ? NaN : v)} `
       + unitText(column.unit);
-    if (known(v)) {
+    if (known(v) && shown(k)) {
       const marker = el("circle", { cx: x(k), cy: y(v), r: 4.5, fill: color,
         stroke: "#d62728", class: "marker", "data-name": column.name, "data-position": k,
         "data-value": v }, svg);
