@@ -238,3 +238,17 @@ def test_a_job_past_its_time_limit_is_stopped_and_says_so(tmp_path):
     assert done["state"] == "failed" and not done["cancelled"]
     assert done["problems"][0]["message"] == "the job took longer than 1 s and was stopped"
     assert done["elapsed"] < 30
+
+
+def test_the_refusals_and_problems_come_in_the_pages_language(client):
+    ru = {"X-Mechloop-Lang": "ru"}
+    answer = client.post("/api/jobs", headers=ru, json={
+        "text": _text(ENGINE), "example": ENGINE, "kind": "sweep",
+        "vary": ["a=1:2:21", "b=1:2:20"], "collect": ["x:max"]})
+    assert answer.status_code == 400
+    assert answer.json()["error"] == ("в параметрическом анализе 420 вариантов; страница "
+                                      f"выполняет не больше {MAX_SWEEP_DESIGNS}")
+    job = _start(client, "simulation", four_bar(12))
+    _wait(client, job, _finished)
+    done = client.get(f"/api/jobs/{job}", headers=ru).json()
+    assert done["problems"][0]["message"] == "в модели нет раздела 'simulate:'"
