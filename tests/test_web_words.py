@@ -34,6 +34,9 @@ def _asked_keys() -> set[str]:
         keys |= set(re.findall(r'\b(?:busy|done|word): "(\w+)"', script))
         for pair in re.findall(r'state\.timer \? "(\w+)" : "(\w+)"', script):
             keys |= set(pair)
+    script = (STATIC / "work.js").read_text(encoding="utf-8")  # the background work
+    keys |= set(re.findall(r'\b(?:t|status)\("(\w+)"', script))
+    keys |= set(re.findall(r'"((?:work|anim|sweep|sim)[A-Z]\w*)"', script))
     for name in ("forms.js", "drag.js"):  # their words: literal keys of WORDS
         script = (STATIC / name).read_text(encoding="utf-8")
         keys |= set(re.findall(r'\bt\("(\w+)"', script))

@@ -26,6 +26,10 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
   a background job (:mod:`mechloop.web.jobs`), ``{id}``; ``GET /api/jobs/{id}`` — its
   state, progress, best design so far and result; ``POST /api/jobs/{id}/cancel`` — stop
   it, keeping the best;
+* ``POST /api/jobs`` with ``kind`` ``animation`` ``{format, fps?}``, ``sweep``
+  ``{vary, collect, lang}`` or ``simulation`` ``{duration?, cycles?, lang}``
+  (:mod:`mechloop.web.work`); ``GET /api/jobs/{id}/file`` — the file a finished one made
+  (the animation; the table of a sweep or a simulation as CSV);
 * ``POST /api/edit`` ``{text, path|example, keys, value | delete: true | key}`` —
   ``{text, data}``: the text with one value set, one entry deleted or one key renamed at
   the key path ``keys`` (``["vectors", 1, "r"]``), every other byte kept
@@ -63,7 +67,7 @@ from starlette.staticfiles import StaticFiles
 from mechloop.bundled.catalog import examples, examples_dir, find_example
 from mechloop.errors import HintedError, MechloopError, ModelError
 from mechloop.output.atomic import atomic_write_text
-from mechloop.web import exports, templates
+from mechloop.web import exports, templates, work
 from mechloop.web.autosave import working_copy
 from mechloop.web.documents import problems, read_model
 from mechloop.web.edit import edit_text, json_data
@@ -311,9 +315,11 @@ def create_app(folder: str | Path, *, token: str | None = None,
     async def job_start(request: Request) -> Response:
         data = await body(request)
         path, root = source(data)
-        options = {"iterations": _number(data, "iterations", int),
-                   "time": _number(data, "time", float)}
-        job = await run_in_threadpool(jobs.start, str(data.get("kind", "synthesis")),
+        kind = str(data.get("kind", "synthesis"))
+        options = (work.job_options(kind, data) if kind != "synthesis" else
+                   {"iterations": _number(data, "iterations", int),
+                    "time": _number(data, "time", float)})
+        job = await run_in_threadpool(jobs.start, kind,
                                       data.get("text", ""), path, root, options)
         return JSONResponse({"id": job.id})
 
@@ -323,6 +329,10 @@ def create_app(folder: str | Path, *, token: str | None = None,
                                          request_language(request.headers,
                                                           request.query_params))
         return _JSON(answer)
+
+    async def job_file(request: Request) -> Response:
+        file = work.job_file(jobs.get(request.path_params["job"]))
+        return attachment(file["content"], file["type"], Path("model"), file["suffix"])
 
     async def job_cancel(request: Request) -> Response:
         job = await run_in_threadpool(jobs.cancel, request.path_params["job"])
@@ -371,6 +381,7 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/data", guarded(plain_data), methods=["POST"]),
               Route("/api/jobs/{job}", guarded(job_status)),
               Route("/api/jobs/{job}/cancel", guarded(job_cancel), methods=["POST"]),
+              Route("/api/jobs/{job}/file", guarded(job_file)),
               Mount("/static", StaticFiles(directory=STATIC), name="static")]
     @contextlib.asynccontextmanager
     async def lifespan(app: Any) -> Any:

@@ -14,8 +14,13 @@ same happens; a child that does not answer within :data:`GRACE_SECONDS` after th
 killed.  At most :data:`MAX_JOBS` jobs run at once (another start is refused, 429), and
 :meth:`Jobs.stop_all` (the server's shutdown) kills every child.
 
-The result is the synthesized model's text, as ``mechloop synthesize -o best.yaml`` writes
-it (a group file is written back as a group file), with the run's summary.
+An animation, a sweep or a simulation runs the same way (:mod:`mechloop.web.work`); its
+file (the animation, the table) is kept apart from the state the page polls
+(:attr:`Job.file`), for ``GET /api/jobs/{id}/file``.
+
+The result of a synthesis is the synthesized model's text, as ``mechloop synthesize -o
+best.yaml`` writes it (a group file is written back as a group file), with the run's
+summary.
 """
 
 from __future__ import annotations
@@ -147,6 +152,7 @@ class Job:
     result: dict[str, Any] | None = None
     problems: list[dict[str, Any]] = field(default_factory=list)
     cancelled: bool = False
+    file: dict[str, Any] | None = None  # an animation, a table: content, type, suffix
     lock: threading.Lock = field(default_factory=threading.Lock)
 
     def status(self) -> dict[str, Any]:
@@ -172,18 +178,24 @@ class Jobs:
 
     def start(self, kind: str, text: str, path: Path, root: Path,
               options: dict[str, Any]) -> Job:
-        """Start a job (``kind``: ``synthesis``); refused (429) when :data:`MAX_JOBS`
-        run."""
-        if kind != "synthesis":
-            raise WebError(f"no job kind {kind!r}", "use synthesis", 400)
+        """Start a job (``kind``: ``synthesis``, or one of :data:`mechloop.web.work.KINDS`
+        with its checked ``options``); refused (429) when :data:`MAX_JOBS` run."""
+        from mechloop.web import work
+
+        if kind != "synthesis" and kind not in work.KINDS:
+            raise WebError(f"no job kind {kind!r}", f"use synthesis, {', '.join(work.KINDS)}",
+                           400)
+        target, args = ((_synthesis_child, ()) if kind == "synthesis"
+                        else (work.child, (kind,)))
         with self.lock:
             if len(self.running()) >= self.max_jobs:
                 raise WebError("another job is running",
                                "wait for it to finish, or cancel it", 429)
             context = _context()
             parent, child = context.Pipe(duplex=False)
-            process = context.Process(target=_synthesis_child,
-                                      args=(child, text, str(path), str(root), options),
+            process = context.Process(target=target,
+                                      args=(child, *args, text, str(path), str(root),
+                                            options),
                                       daemon=True)
             try:
                 process.start()
@@ -254,11 +266,17 @@ class Jobs:
                         job.diagram = value.pop("diagram", job.diagram)
                         job.progress = value
                     elif kind == "done":
+                        job.file = value.pop("file", None)
                         job.result = value
                         job.diagram = value.get("diagram") or job.diagram
                         job.state = "done"
                         return
                     elif kind == "error":
+                        if job.kind != "synthesis" and not job.cancelled and \
+                                time.monotonic() >= deadline:
+                            from mechloop.web.work import timed_out
+
+                            value = timed_out(job.seconds)
                         job.problems = value
                         job.state = "failed"
                         return

@@ -14,7 +14,8 @@ import re
 from mechloop.messages.ru.base import Entry, quoted
 
 #: The formats a request names (``no report format 'odt'``).
-_FORMATS = {"report": "отчёта", "table": "таблицы", "figure": "рисунка"}
+_FORMATS = {"report": "отчёта", "table": "таблицы", "figure": "рисунка",
+            "animation": "анимации"}
 
 
 def _request(match: re.Match[str]) -> str:
@@ -180,4 +181,37 @@ ENTRIES: list[Entry] = [
      "папка автосохранения ведёт за пределы папки"),
     (r"remove the symbolic link \.mechloop", "удалите символическую ссылку .mechloop"),
     (r"pick a model from the list", "выберите модель из списка"),
+    # the animation, sweep and simulation jobs (web/work.py)
+    (r"use synthesis, (?P<list>.+)",
+     lambda m: "используйте одно из: " + quoted("synthesis, " + m["list"])),
+    (r"(?P<k>'[^']*'|\S+) is not a whole number", "{k} — не целое число"),
+    (r"give a whole number of (?P<k>\S+)", "укажите целое число {k}"),
+    (r"(?P<k>'[^']*'|\S+) is (?P<v>\S+), more than (?P<n>\S+)",
+     "{k} равно {v}, это больше {n}"),
+    (r"give (?P<k>\S+) of at most (?P<n>\S+)", "задайте {k} не больше {n}"),
+    (r"(?P<k>'[^']*'|\S+) is not a list of texts", "{k} — не список строк"),
+    (r"send e\.g\. (?P<ex>\{.+\})", "пришлите, например, {ex}"),
+    (r"(?P<n>\d+) parameters to vary; a sweep varies one or (?P<m>\d+)",
+     "параметров для изменения: {n}; параметрический анализ изменяет один или {m}"),
+    (r"vary one parameter, or two for a grid",
+     "изменяйте один параметр или два (для сетки)"),
+    (r"the sweep has (?P<n>\d+) designs; the page runs at most (?P<m>\d+)",
+     "в параметрическом анализе {n} вариантов; страница выполняет не больше {m}"),
+    (r"use fewer values, or run mechloop sweep from the command line",
+     "возьмите меньше значений или запустите 'mechloop sweep' из командной строки"),
+    (r"(?P<n>\d+) quantities to collect; at most (?P<m>\d+)",
+     "величин для сбора: {n}; допускается не больше {m}"),
+    (r"collect fewer quantities", "соберите меньше величин"),
+    (r"the job was cancelled", "задание отменено"),
+    (r"start it again to get its result",
+     "запустите его снова, чтобы получить результат"),
+    (r"the job is still running", "задание ещё выполняется"),
+    (r"download its file when it is done", "скачайте его файл, когда оно завершится"),
+    (r"the job made no file", "задание не создало файла"),
+    (r"an animation, a sweep or a simulation that finished makes one",
+     "файл создают завершённые анимация, параметрический анализ или моделирование"),
+    (r"the job took longer than (?P<n>\S+) s and was stopped",
+     "задание длилось дольше {n} с и было остановлено"),
+    (r"use fewer values, fewer positions or a shorter duration",
+     "возьмите меньше значений, меньше положений или меньшую длительность"),
 ]
