@@ -479,8 +479,8 @@ COURSE_DIAGRAM = "the assumed indicator diagram behind the gas-force tables (che
     "tests/test_course_models_loads.py)"
 # (document or None for any, pattern, why it is not a result)
 INPUTS: list[tuple[str | None, str, str]] = [
-    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|GOST 2\.105|KHK Gear Technical Reference \(sec\. "
-           r"4\.3", "a cited standard or reference"),
+    (None, r"ISO 21771|ISO 53|DIN 3960|GOST 16532-70|GOST 2\.105|"
+           r"KHK Gear Technical Reference \(sec\. 4\.3", "a cited standard or reference"),
     ("planetary_choice.yaml", r"within 1 %", "the example's search.tolerance (0.01)"),
     (R, r"z 21/43 with\s+shifts 0\.4380/0\.0426", "the printed inputs of the Kos example "
         "(tests/test_gears_published.py)"),
