@@ -97,6 +97,14 @@ def _solved(driver) -> str:
     return driver.execute_script("return document.body.dataset.solved || ''")
 
 
+def _fresh(driver, base: str, path: str) -> None:
+    """Discard the working copies of ``path`` (the server's and the page's) that earlier
+    edits left, so the page opens the file itself."""
+    _post(base, "/api/autosave/clear", {"path": path})
+    driver.get(base + "/")
+    driver.execute_script("window.localStorage.clear()")
+
+
 def _open(driver, url: str) -> None:
     driver.get(url)
     _wait(driver, _solved, "the model was not solved")
@@ -214,8 +222,10 @@ def test_a_chain_break_is_shown_where_it_occurs(browser, server):
 
 def test_russian_and_english_screens_and_the_report(browser, server, downloads):
     base, _ = server
+    _fresh(browser, base, "crank_slider.yaml")  # no working copy left by the tests above
     _open(browser, base + "/?path=crank_slider.yaml&lang=en")
     browser.find_element(By.ID, "slider").send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * 12)
+    assert not browser.find_element(By.ID, "restore-bar").is_displayed()
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-en.png"))
     browser.find_element(By.ID, "lang-ru").click()

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from selenium.common.exceptions import StaleElementReferenceException
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
@@ -39,6 +40,17 @@ def _tab(driver, tab: str) -> None:
     driver.find_element(By.CSS_SELECTOR, f"#form-tabs button[data-tab='{tab}']").click()
     _wait(driver, lambda d: d.find_element(By.ID, "forms").is_displayed()
           and d.find_elements(By.CSS_SELECTOR, "#forms fieldset"), f"no {tab} form")
+
+
+def _again(driver, action, message: str):
+    """``action(driver)`` retried while the forms redraw under it (a re-solve replaces
+    their elements: a stale element is tried again, found anew)."""
+    def attempt(d):
+        try:
+            return action(d)
+        except StaleElementReferenceException:
+            return False
+    return _wait(driver, attempt, message)
 
 
 def _field(driver, keys: str):
@@ -118,16 +130,20 @@ def test_an_argument_row_and_a_csv_import(browser, server, tmp_path):  # noqa: F
     assert "  1: {table: {0: 0, 72: 180}}       # argument 1:" in text
     table = tmp_path / "turn.csv"
     table.write_text("position;angle\n0;0\n36;90,5\n72;360\n", encoding="utf-8")
-    browser.find_element(By.CSS_SELECTOR, "#forms input.form-csv").send_keys(str(table))
+    _again(browser, lambda d: d.find_element(By.CSS_SELECTOR, "#forms input.form-csv")
+           .send_keys(str(table)) or True, "no CSV import")
     imported = _changed(browser, text)
     assert "  1: {table: {0: 0, 36: 90.5, 72: 360}}" in imported
     assert imported.count("\n") == SLIDER.count("\n")  # in place: no other line changed
     _wait(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#forms tr[data-position='36']"),
           "the imported row is not in the form")
-    browser.find_element(By.CSS_SELECTOR, "#forms tr[data-position='36'] .form-delete").click()
+    _again(browser, lambda d: d.find_element(
+        By.CSS_SELECTOR, "#forms tr[data-position='36'] .form-delete").click() or True,
+           "no delete")
     assert "  1: {table: {0: 0, 72: 360}}" in _changed(browser, imported)
     _tab(browser, "time")
-    assert _field(browser, '["time","rpm"]').get_property("value") == "3000"
+    _again(browser, lambda d: _field(d, '["time","rpm"]').get_property("value") == "3000",
+           "the time form does not show 3000 rpm")
     browser.find_element(By.ID, "lang-ru").click()
     _wait(browser, lambda d: "Время модели" in d.find_element(By.ID, "forms").text,
           "the form is not in Russian")
