@@ -38,12 +38,14 @@ from mechloop.model.plane import plane_axes
 from mechloop.model.roles import is_function
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.spatial import contour_signs, plane_normal
-from mechloop.model.structure import ContourInfo, Structure, param_role
+from mechloop.model.structure import COUPLED, ContourInfo, Structure, param_role
 from mechloop.model.units import to_si
+from mechloop.modules.coupled import DEAD, JUMP, NO_CONVERGENCE, OK, REASONS
 from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl3, solve_pl4
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import BREAK_REASONS, DEAD_POINT, SINGULAR_SIN, unwrap_angles
 from mechloop.solve.results import ChainBreak, Results
+from mechloop.spatial.block import solve_coupled
 from mechloop.spatial.contour import classify, follow_branch, run_module
 from mechloop.spatial.rates import accelerations, rates
 from mechloop.spatial.vector import unit
@@ -191,6 +193,9 @@ class _Solved:
     dead: dict[int, NDArray[np.bool_]]
     sign: dict[int, NDArray[np.int8]]
     broken: NDArray[np.bool_]
+    #: per coupled block (by its first contour): the status of every position
+    #: (:data:`mechloop.modules.coupled.OK`, ...)
+    status: dict[int, NDArray[np.int8]] = field(default_factory=dict)
 
 
 def _solve_all(model: Model, structure: Structure, args: dict[int, Signal],
@@ -199,7 +204,17 @@ def _solve_all(model: Model, structure: Structure, args: dict[int, Signal],
     broken = np.zeros(params.shape, dtype=bool)
     out = _Solved(params, {}, {}, {}, broken)
     with np.errstate(all="ignore"):
-        for info in structure.ordered():
+        by_number = {info.number: info for info in structure.contours}
+        for block in structure.blocks:
+            if block.coupled:  # solved together (mechloop.spatial.block)
+                status, sign = solve_coupled(model, structure, block, params, SINGULAR_SIN)
+                out.status[block.contours[0]] = status
+                for n in block.contours:
+                    out.no_solution[n] = (status == NO_CONVERGENCE) | (status == JUMP)
+                    out.dead[n], out.sign[n] = status == DEAD, sign
+                broken |= status != OK
+                continue
+            info = by_number[block.contours[0]]
             no_solution, dead, sign = _solve_contour(model, info, params)
             out.no_solution[info.number], out.dead[info.number] = no_solution, dead
             out.sign[info.number] = sign
@@ -239,6 +254,18 @@ def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None 
     breaks: list[ChainBreak] = []
     seen = np.zeros_like(broken)
     for info in structure.ordered():
+        if info.number in solved.status:  # a coupled block: its breaks by status
+            status = solved.status[info.number]
+            block = next(b for b in structure.blocks if b.contours[0] == info.number)
+            for code in (NO_CONVERGENCE, DEAD, JUMP):
+                mask = (status == code) & ~seen
+                if mask.any():
+                    breaks.append(ChainBreak(info.number, COUPLED, np.flatnonzero(mask),
+                                             REASONS[code], contours=block.contours))
+            seen |= status != OK
+            continue
+        if info.module == COUPLED:
+            continue
         no_solution, dead = solved.no_solution[info.number], solved.dead[info.number]
         for reason, mask in ((_break_reason(info), no_solution & ~seen),
                              (DEAD_POINT, dead & ~no_solution & ~seen)):
