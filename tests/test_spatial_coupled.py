@@ -299,3 +299,27 @@ def test_a_guess_on_a_contour_solved_alone_is_still_refused():
     with pytest.raises(ModelError) as info:
         model_from_data(data)
     assert "a guess applies only to a coupled block" in str(info.value)
+
+
+def test_designs_of_a_coupled_spatial_block_in_one_pass_are_the_designs_one_by_one():
+    """``solve_designs`` over a coupled spatial block: each row (a constant and a link
+    delta varied) is the solve of that design's model."""
+    from mechloop.solve.designs import solve_designs
+
+    data, _ = _coupled_pair(0, sweep=20, positions=10)
+    model = model_from_data(copy.deepcopy(data))
+    delta = data["vectors"][6]["a"]["delta"]
+    over = {"r1": data["vectors"][1]["r"] + np.array([0.0, 0.01, -0.02]),
+            "a6": np.radians(delta + np.array([0.0, 0.5, -0.5]))}
+    many = solve_designs(model, over)
+    assert many.broken.shape == (3, model.positions + 1) and not many.broken.any()
+    for row in range(3):
+        one = copy.deepcopy(data)
+        one["vectors"][1]["r"] = float(over["r1"][row])
+        one["vectors"][6]["a"]["delta"] = float(np.degrees(over["a6"][row]))
+        want = _solve(one)
+        for name in UNKNOWNS:
+            for what in ("values", "rates", "accels"):
+                np.testing.assert_allclose(getattr(many, what)[name][row],
+                                           getattr(want, what)[name], rtol=1e-12,
+                                           atol=1e-12, err_msg=f"{name} {what} {row}")

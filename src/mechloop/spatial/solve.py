@@ -1,8 +1,8 @@
 """Positions, velocities and accelerations of a model with spatial contours (issue 17).
 
-The contours are solved one after another in the order of
-:func:`mechloop.model.spatial.analyze_spatial`; each is one call of its module over the
-whole array of positions:
+The blocks are solved one after another in the order of
+:func:`mechloop.model.spatial.analyze_spatial`; each is one call over the whole array of
+positions:
 
 * a spatial contour by its module Pr1–Pr19 (:mod:`mechloop.spatial.contour`): every branch
   at once, then the variant's branch (fixed, or followed by continuity from position 0
@@ -11,7 +11,12 @@ whole array of positions:
   :mod:`mechloop.model.plane`, solved in that plane's axes) by its module Pl1–Pl4, its
   rates by the same 3×3 systems with a unit Z vector of unknown length 0 as the third
   unknown (its column is ``(0, 0, 1)``: the Z row gives 0 and the XY rows are exactly
-  the planar 2×2 system).
+  the planar 2×2 system);
+* a coupled block (contours that need each other's functions, or a contour linking to
+  one of its own) by Newton's method with continuation on its raw closure equations,
+  its rates by the block Jacobian (:mod:`mechloop.spatial.block`), its breaks by the
+  planar coupled solver's statuses (no assembly near the previous one, a dead point, a
+  jump to another assembly).
 
 A negative vector number in a spatial contour subtracts that vector: the closure is
 multiplied by the sign of the module's vector ``i`` (so its length keeps the module's
