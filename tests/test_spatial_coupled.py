@@ -233,11 +233,16 @@ def _assert_same(spatial, planar, names, rtol: float = COUPLED_RTOL) -> None:
             assert np.nanmax(np.abs(got - want)) <= rtol * scale, (name, what)
 
 
-@pytest.mark.parametrize("contours", [(0, 1), (0,)], ids=["spatial", "mixed"])
-def test_planar_triad_written_as_spatial_gives_the_planar_coupled_results(contours):
+@pytest.mark.parametrize("contours, plane", [((0, 1), None), ((0,), None),
+                                             ((0,), [0, 0.6, 0.8])],
+                         ids=["spatial", "mixed", "mixed-tilted-plane"])
+def test_planar_triad_written_as_spatial_gives_the_planar_coupled_results(contours, plane):
     data = _triad_data(sweep=-120, n=24)
     planar = _solve(data)
-    spatial = _solve(_spatial_triad(data, contours))
+    written = _spatial_triad(data, contours)
+    if plane is not None:  # the planar contour in a tilted plane: solved in its own axes
+        written["contours"][1]["plane"] = {"normal": plane}
+    spatial = _solve(written)
     assert spatial.structure.blocks[0].coupled and not planar.broken.any()
     _assert_same(spatial, planar, ["a1", "a3", "a6", "a7", "a2", "a8"], COUPLED_RTOL)
     assert np.abs(spatial.values["b4"]).max() < 1e-12
