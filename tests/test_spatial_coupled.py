@@ -14,6 +14,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 import yaml
 from hypothesis import HealthCheck, given, settings
@@ -328,3 +329,20 @@ def test_designs_of_a_coupled_spatial_block_in_one_pass_are_the_designs_one_by_o
                 np.testing.assert_allclose(getattr(many, what)[name][row],
                                            getattr(want, what)[name], rtol=1e-12,
                                            atol=1e-12, err_msg=f"{name} {what} {row}")
+
+
+def test_a_coupled_spatial_model_through_the_cli(tmp_path):
+    data, _ = _coupled_pair(0, sweep=20, positions=10)
+    path = tmp_path / "pair.yaml"
+    path.write_text(yaml.safe_dump(data), encoding="utf-8")
+    runner = CliRunner()
+    assert runner.invoke(app, ["check", str(path)]).exit_code == 0
+    info = runner.invoke(app, ["info", str(path)])
+    assert info.exit_code == 0
+    assert "coupled block 1: contours 1, 2 solved together for α2, β2, r3, β5, β6, r7" in (
+        " ".join(info.output.split()))
+    out = tmp_path / "pair.csv"
+    assert runner.invoke(app, ["solve", str(path), "-o", str(out)]).exit_code == 0
+    written = pd.read_csv(out)
+    frame = _solve(data).to_frame()
+    np.testing.assert_allclose(written["r3 [m]"], frame["r3 [m]"], rtol=1e-15)
