@@ -118,7 +118,8 @@ def describe_structure(model: Model) -> str:
         block = next((b for b in structure.blocks if info.number in b.contours), None)
         solutions = (f"{MODULE_SOLUTIONS[info.module]} solution(s)"
                      if info.module in MODULE_SOLUTIONS else
-                     f"{spatial_branches(info.module)} solution(s)" if spatial else
+                     f"{spatial_branches(info.module)} solution(s)"
+                     if spatial and info.module != "coupled" else
                      f"coupled block {block.number}: contours "
                      f"{', '.join(map(str, block.contours))} solved together for "
                      f"{', '.join(map(symbol, block.unknowns))} by Newton's method")

@@ -620,19 +620,6 @@ ENTRIES: list[Entry] = [
     (r"set 'variant' to 1, 2 or 'auto'", "задайте 'variant': 1, 2 или 'auto'"),
     (r"remove 'guess' and choose the branch with 'variant'",
      "удалите 'guess' и выберите ветвь решения ключом 'variant'"),
-    (r"contour (?P<c>\S+) links to one of its own functions: a non-elementary module, which "
-     r"is not solved in spatial models yet", "контур {c} ссылается на один из своих же "
-     "искомых параметров: это неэлементарный модуль, а в пространственных моделях он пока "
-     "не решается"),
-    (r"link to a parameter an earlier contour solves, an argument or a constant",
-     "сошлитесь на параметр, который находит предыдущий контур, на аргумент или "
-     "постоянную"),
-    (r"contours (?P<list>.+?) need each other's functions: a coupled block, which is not "
-     r"solved in spatial models yet", "контурам {list} нужны искомые параметры друг друга: "
-     "это связанный блок, а в пространственных моделях он пока не решается"),
-    (r"break the cycle \(make one of the linked parameters a constant or an argument\), or "
-     r"solve the model as planar", "разорвите цикл (сделайте один из связанных параметров "
-     "постоянной или аргументом) или решайте модель как плоскую"),
     (r"(?P<what>.+?) is not built for a model with spatial contours yet", _refused),
     (r"solve it with mechloop\.solve \(mechloop solve\), or vary its dimensions with "
      r"mechloop sweep", "решите её функцией 'mechloop.solve' ('mechloop solve') или "

@@ -422,4 +422,9 @@ ENTRIES: list[Entry] = [
     (r"sweep two parameters", "перебирайте два параметра"),
     # spatial contours (spatial/solve.py)
     (r"pass 1-D arrays of one length", "передайте одномерные массивы одной длины"),
+    # coupled blocks of spatial contours (spatial/blocks.py)
+    (r"contour (?P<c>\S+) is solved in a coupled block, whose variant is 1 \(a negative "
+     r"Jacobian determinant\) or 2 \(positive\); variant (?P<v>\S+) does not apply",
+     "контур {c} решается в связанном блоке, у которого вариант 1 (отрицательный "
+     "определитель матрицы Якоби) или 2 (положительный); вариант {v} неприменим"),
 ]
