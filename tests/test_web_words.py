@@ -34,7 +34,7 @@ def _asked_keys() -> set[str]:
         keys |= set(re.findall(r'\b(?:busy|done|word): "(\w+)"', script))
         for pair in re.findall(r'state\.timer \? "(\w+)" : "(\w+)"', script):
             keys |= set(pair)
-    for name in ("forms.js", "drag.js"):  # their words: literal keys of WORDS
+    for name in ("forms.js", "drag.js", "units.js"):  # their words: literal keys of WORDS
         script = (STATIC / name).read_text(encoding="utf-8")
         keys |= set(re.findall(r'\bt\("(\w+)"', script))
         keys |= set(re.findall(r'"((?:form|drag)[A-Z]\w*|tab_\w+)"', script))

@@ -1,7 +1,9 @@
 """A solved model as the page draws it: the vector diagram of every position (the same
 geometry as :mod:`mechloop.views.plan`: :func:`~mechloop.views.plan.plan_scene`, its ground
 points, parameter marks and limits), the chain breaks, and the results table in the model's
-display units (:mod:`mechloop.output.display`).
+display units (:mod:`mechloop.output.display`), rounded to its precision, which
+``precision`` names (``{"digits": 3}``, ``{"decimals": 2}`` or ``{}``) for the page to
+print the numbers with.
 
 Arrays are NumPy, of shape ``(P,)`` over the positions ``0..N``; an unknown value (a chain
 break) is NaN here and ``null`` in the JSON (orjson), with ``broken`` saying why.
@@ -82,6 +84,17 @@ def table(results: Results | DynamicResults, model: Model) -> list[dict[str, Any
     return columns
 
 
+def precision(model: Model) -> dict[str, int]:
+    """The precision the numbers of ``model``'s table are rounded to and printed with:
+    ``{"digits": n}``, ``{"decimals": n}`` or ``{}`` (every digit)."""
+    shown = resolve(model.display)
+    if shown is not None and shown.digits is not None:
+        return {"digits": shown.digits}
+    if shown is not None and shown.decimals is not None:
+        return {"decimals": shown.decimals}
+    return {}
+
+
 def solution(model: Model, solved: Results | DynamicResults | None = None) -> dict[str, Any]:
     """Everything the page shows of a solved model (see the module docstring)."""
     solved = solve_model(model) if solved is None else solved
@@ -91,4 +104,5 @@ def solution(model: Model, solved: Results | DynamicResults | None = None) -> di
                "positions": np.asarray(b.positions, dtype=np.int64)} for b in kin.breaks]
     return {"name": model.name or "", "count": scene.count, "dynamics": bool(model.bodies),
             "time": kin.time, "broken": np.asarray(kin.broken, dtype=bool),
-            "breaks": breaks, "diagram": diagram(scene), "columns": table(solved, model)}
+            "breaks": breaks, "diagram": diagram(scene), "columns": table(solved, model),
+            "precision": precision(model)}

@@ -304,7 +304,8 @@ function render() {
     row.dataset.name = c.name;
     row.insertCell().textContent = columnText(c.name);
     const value = row.insertCell();
-    value.textContent = format(c.values[k] === null ? NaN : c.values[k]);
+    value.textContent = formatPrecise(c.values[k] === null ? NaN : c.values[k],
+      solution.precision);
     value.className = "number";
     row.insertCell().textContent = unitText(c.unit);
   }
