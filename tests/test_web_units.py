@@ -2,7 +2,7 @@
 kind of the model's ``display:`` section, the units its schema lists (then the views'
 further examples), each a unit of its kind, the default unit the tables use, and the
 precision ranges of the schema; the solve answer carries the model's precision and the
-table rounded to it in the chosen unit."""
+table in the chosen unit, every digit for the curves and rounded to it for the table."""
 
 from __future__ import annotations
 
@@ -75,6 +75,7 @@ def test_the_defaults_are_the_units_of_a_table_without_a_display(client):
 def test_the_solve_carries_the_precision_and_the_rounded_table(client):
     plain = client.post("/api/solve", json={"path": "crank_slider.yaml", "text": SLIDER})
     assert plain.json()["precision"] == {}
+    assert not any("shown" in c for c in plain.json()["columns"])  # every digit shown
     r3 = next(c for c in plain.json()["columns"] if c["name"] == "r3")["values"]
     for unit, precision, shown in (
             ("mm", {"digits": 3}, lambda v: float(f"{v * 1e3:.3g}")),
@@ -86,4 +87,7 @@ def test_the_solve_carries_the_precision_and_the_rounded_table(client):
         assert answer["precision"] == precision
         column = next(c for c in answer["columns"] if c["name"] == "r3")
         assert column["unit"] == unit
-        assert column["values"] == pytest.approx([shown(v) for v in r3], rel=1e-15)
+        factor = {"mm": 1e3, "cm": 1e2}[unit]  # the curves: converted, every digit
+        assert column["values"] == pytest.approx([v * factor for v in r3], rel=1e-15)
+        assert column["shown"] == pytest.approx([shown(v) for v in r3], rel=1e-15)
+        assert column["shown"] != pytest.approx(column["values"], rel=1e-9)
