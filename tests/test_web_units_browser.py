@@ -2,8 +2,8 @@
 ``test_web_browser.py``: one server and one browser for this module): millimetres for
 lengths and three significant digits, chosen in the tab, write ``display: {length: mm,
 digits: 3}`` into the YAML text; the results table then shows the slider's length in mm
-with three significant digits, the API's number converted and rounded; undo takes the
-section away again and the table is back in metres."""
+with three significant digits, the API's number converted and rounded; decimals in
+place of digits; undo takes the section away again and the table is back in metres."""
 
 from __future__ import annotations
 
@@ -85,7 +85,14 @@ def test_millimetres_and_three_digits_chosen_in_the_units_tab(browser, server): 
         assert Select(box).first_selected_option.get_attribute("value") == chosen
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-units.png"))
-    for text in (SLIDER + "display: {length: mm, digits: 6}\n",
+    _choose(browser, '["display","precision"]', "decimals")  # digits out, decimals in
+    _changed_to(browser, SLIDER + "display: {length: mm, decimals: 3}\n")
+    _settled(browser)
+    value, unit = _row(browser, "r3")
+    assert unit == "mm" and re.fullmatch(r"\d+\.\d{3}", value), value
+    assert float(value) == round(r3 * 1000, 3)
+    for text in (SLIDER + "display: {length: mm}\n", done,
+                 SLIDER + "display: {length: mm, digits: 6}\n",
                  SLIDER + "display: {length: mm}\n", SLIDER):
         browser.find_element(By.ID, "undo").click()
         _changed_to(browser, text)
