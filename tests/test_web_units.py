@@ -6,6 +6,7 @@ table in the chosen unit, every digit for the curves and rounded to it for the t
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pydantic
@@ -91,3 +92,17 @@ def test_the_solve_carries_the_precision_and_the_rounded_table(client):
         assert column["values"] == pytest.approx([v * factor for v in r3], rel=1e-15)
         assert column["shown"] == pytest.approx([shown(v) for v in r3], rel=1e-15)
         assert column["shown"] != pytest.approx(column["values"], rel=1e-9)
+
+
+def test_every_unit_offered_has_its_russian_name(client):
+    """The Units tab names each unit in the page's language (i18n.js's UNITS_RU); ``g0``,
+    the standard gravity, is a symbol in both."""
+    from mechloop.web.app import STATIC
+
+    script = (STATIC / "i18n.js").read_text(encoding="utf-8")
+    start = script.index("const UNITS_RU")
+    block = script[start:script.index("};", start)]
+    named = set(re.findall(r'"([^"]+)":', block)) | set(re.findall(r"[\s,{](\w+):", block))
+    answer = client.get("/api/units").json()
+    offered = {u for k in answer["kinds"] for u in [*k["units"], k["default"]]}
+    assert offered - named == {"g0"}

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 import pytest
+from selenium.common.exceptions import StaleElementReferenceException
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
@@ -32,9 +33,17 @@ def _text(driver) -> str:
 
 
 def _choose(driver, keys: str, value: str) -> None:
-    box = _wait(driver, lambda d: d.find_elements(
-        By.CSS_SELECTOR, f"#forms select[data-keys='{keys}']"), f"no choice {keys}")[0]
-    Select(box).select_by_value(value)
+    """Choose ``value`` at ``keys`` in the tab (again if the tab was drawn anew from the
+    edited text under the pointer: the choice on the new one)."""
+    def chosen(d) -> bool:
+        try:
+            boxes = d.find_elements(By.CSS_SELECTOR, f"#forms select[data-keys='{keys}']")
+            if boxes:
+                Select(boxes[0]).select_by_value(value)
+            return bool(boxes)
+        except StaleElementReferenceException:
+            return False
+    _wait(driver, chosen, f"no choice {keys}")
 
 
 def _changed_to(driver, text: str) -> None:
@@ -48,8 +57,10 @@ def _settled(driver) -> None:
 
 
 def _row(driver, name: str) -> tuple[str, str]:
-    cells = driver.find_elements(By.CSS_SELECTOR, f"#results tr[data-name='{name}'] td")
-    return cells[1].text, cells[2].text
+    """The value and unit shown for ``name`` in the results table (read at once)."""
+    return tuple(driver.execute_script(
+        "return [...document.querySelectorAll(`#results tr[data-name='${arguments[0]}'] td`)]"
+        ".slice(1).map((c) => c.textContent)", name))
 
 
 def test_millimetres_and_three_digits_chosen_in_the_units_tab(browser, server):  # noqa: F811

@@ -81,10 +81,10 @@
       row.insertCell().textContent = KINDS[kind] ? t(KINDS[kind]) : kind;
       const choice = node("select", { class: "form-choice form-unit",
         dataset: { keys: JSON.stringify(["display", kind]) } }, row.insertCell());
-      option(choice, "", t("formUnitDefault", { unit: standard }));
+      option(choice, "", t("formUnitDefault", { unit: unitText(standard) }));
       const named = current[kind] === undefined || current[kind] === null
         ? "" : String(current[kind]);
-      for (const unit of offered) option(choice, unit, unit);
+      for (const unit of offered) option(choice, unit, unitText(unit));
       if (named && !offered.includes(named)) option(choice, named, named);  // typed in
       choice.value = named;
       choice.addEventListener("change", () => {
