@@ -113,3 +113,22 @@ def test_millimetres_and_three_digits_chosen_in_the_units_tab(browser, server): 
     box = browser.find_element(By.CSS_SELECTOR,
                                "#forms select[data-keys='[\"display\",\"length\"]']")
     assert Select(box).first_selected_option.get_attribute("value") == ""  # default again
+
+
+def test_two_quick_choices_make_one_section(browser, server):  # noqa: F811
+    """The second choice, made before the first edit is back, is decided from the text the
+    first one left: both units in one new section (not the second replacing it)."""
+    base, _ = server
+    _open(browser, base + "/?path=crank_slider.yaml")
+    browser.find_element(By.CSS_SELECTOR, "#form-tabs button[data-tab='units']").click()
+    _wait(browser, lambda d: d.find_elements(
+        By.CSS_SELECTOR, "#forms select[data-keys='[\"display\",\"moment\"]']"), "no tab")
+    browser.execute_script("""
+        for (const [kind, unit] of [["force", "kN"], ["moment", "kN*m"]]) {
+          const box = document.querySelector(`#forms select[data-keys='["display","${kind}"]']`);
+          box.value = unit; box.dispatchEvent(new Event("change"));
+        }""")
+    _changed_to(browser, SLIDER + "display: {force: kN, moment: kN*m}\n")
+    for text in (SLIDER + "display: {force: kN}\n", SLIDER):
+        browser.find_element(By.ID, "undo").click()
+        _changed_to(browser, text)

@@ -59,6 +59,7 @@
       return null;
     }
     showProblem("");
+    forms.asked += 1;  // a reading of the text before this edit, still on its way, is old
     forms.data = answer.data;
     return answer.text;
   }

@@ -19,7 +19,7 @@
   const MODES = { "": "formPrecisionAll", digits: "formPrecisionDigits",
     decimals: "formPrecisionDecimals" };
   const START = { digits: 6, decimals: 3 };  // the count a newly chosen mode starts with
-  const units = { choices: null, asked: null };
+  const units = { choices: null, asked: null, chain: Promise.resolve(null) };
 
   function forms() {
     return window.mechloopForms;
@@ -44,18 +44,28 @@
     return section && typeof section === "object" && !Array.isArray(section) ? section : null;
   }
 
+  // The edits of this tab, one after another, each deciding what to change from the data
+  // the one before it left (two quick choices on a model without the section: one
+  // section with both).
+  function later(step) {
+    units.chain = units.chain.then(step).catch(() => null);
+    return units.chain;
+  }
+
   // Sets ``key`` of the section to ``value``, adding the section when it is not there.
   function set(key, value) {
-    if (!display()) return forms().edit(["display"], { value: { [key]: value } });
-    return forms().edit(["display", key], { value });
+    return later(() => (display() ? forms().edit(["display", key], { value })
+      : forms().edit(["display"], { value: { [key]: value } })));
   }
 
   // Removes ``key``; the section goes with its last key.
   function unset(key) {
-    const section = display();
-    if (!section || !(key in section)) return Promise.resolve(null);
-    const others = Object.keys(section).filter((k) => k !== key);
-    return forms().edit(others.length ? ["display", key] : ["display"], { delete: true });
+    return later(() => {
+      const section = display();
+      if (!section || !(key in section)) return null;
+      const others = Object.keys(section).filter((k) => k !== key);
+      return forms().edit(others.length ? ["display", key] : ["display"], { delete: true });
+    });
   }
 
   function option(box, value, text) {
@@ -96,8 +106,8 @@
     const row = node("div", { class: "form-row" }, exact);
     const mode = current.digits !== undefined && current.digits !== null ? "digits"
       : current.decimals !== undefined && current.decimals !== null ? "decimals" : "";
-    select(row, ["display", "precision"], mode, MODES, async (next) => {
-      if (mode) await unset(mode);  // the section may go with it: set() then sees that
+    select(row, ["display", "precision"], mode, MODES, (next) => {
+      if (mode) unset(mode);  // the section may go with it: set() then adds it again
       if (next) set(next, START[next]);
     });
     if (mode) {
