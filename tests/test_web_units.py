@@ -6,6 +6,8 @@ table in the chosen unit, every digit for the curves and rounded to it for the t
 
 from __future__ import annotations
 
+import csv
+import io
 import re
 from pathlib import Path
 
@@ -16,7 +18,7 @@ from starlette.testclient import TestClient
 from mechloop.model.display import UNIT_FIELDS, DisplaySection
 from mechloop.model.units import registry
 from mechloop.views.display import BASE_KINDS, DERIVED_EXAMPLES
-from mechloop.web.app import create_app
+from mechloop.web.app import STATIC, create_app
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 SLIDER = (EXAMPLES / "crank_slider.yaml").read_text(encoding="utf-8")
@@ -97,8 +99,6 @@ def test_the_solve_carries_the_precision_and_the_rounded_table(client):
 def test_every_unit_offered_has_its_russian_name(client):
     """The Units tab names each unit in the page's language (i18n.js's UNITS_RU); ``g0``,
     the standard gravity, is a symbol in both."""
-    from mechloop.web.app import STATIC
-
     script = (STATIC / "i18n.js").read_text(encoding="utf-8")
     start = script.index("const UNITS_RU")
     block = script[start:script.index("};", start)]
@@ -106,3 +106,15 @@ def test_every_unit_offered_has_its_russian_name(client):
     answer = client.get("/api/units").json()
     offered = {u for k in answer["kinds"] for u in [*k["units"], k["default"]]}
     assert offered - named == {"g0"}
+
+
+def test_the_table_download_follows_the_section(client):
+    """What the tab writes reaches the downloads: the CSV in mm with three digits."""
+    plain = client.post("/api/solve", json={"path": "crank_slider.yaml", "text": SLIDER})
+    r3 = next(c for c in plain.json()["columns"] if c["name"] == "r3")["values"]
+    text = SLIDER + "display: {length: mm, digits: 3}\n"
+    answer = client.post("/api/table", json={"path": "crank_slider.yaml", "text": text,
+                                             "format": "csv"})
+    assert answer.status_code == 200
+    rows = list(csv.DictReader(io.StringIO(answer.text)))
+    assert [float(row["r3 [mm]"]) for row in rows] == [float(f"{v * 1e3:.3g}") for v in r3]
