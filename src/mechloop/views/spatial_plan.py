@@ -343,8 +343,6 @@ def draw_position(ax: Axes, scene: SpatialScene, position: int, which: str = "3d
         (dots,) = ax.plot(*coords, ls="", marker="o", ms=4, mfc="0.75", mec="k", mew=0.7,
                           alpha=alpha, zorder=4, gid="joints")
         drawn.append(dots)
-    if scene.results.broken[position]:
-        drawn.append(_break_note(ax, scene, position))
     return drawn
 
 
@@ -385,14 +383,16 @@ def draw_ground(ax: Axes, scene: SpatialScene, which: str = "3d") -> None:
             zorder=2, gid="ground")
 
 
-def _break_note(ax: Axes, scene: SpatialScene, position: int) -> Artist:
+def _break_note(figure: Figure, scene: SpatialScene, position: int) -> Artist:
+    """One note across the figure: the chain breaks here, and why."""
     reasons = [f"contour {b.contour} ({b.module}):\n{b.reason}"
                for b in scene.results.breaks if position in b.positions]
     text = "\n".join([f"chain break at position {position}", *reasons])
-    place = ax.text2D if isinstance(ax, Axes3D) else ax.text
-    return place(0.5, 0.5, text, transform=ax.transAxes, ha="center", va="center",
-                 fontsize=8, color="tab:red", zorder=10, wrap=True, gid="chain break",
-                 bbox={"boxstyle": "round", "fc": "white", "ec": "tab:red"})
+    note = figure.text(0.5, 0.5, text, ha="center", va="center", fontsize=9,
+                       color="tab:red", zorder=10, wrap=True, gid="chain break",
+                       bbox={"boxstyle": "round", "fc": "white", "ec": "tab:red"})
+    note.set_in_layout(False)
+    return note
 
 
 def _legend_handles(scene: SpatialScene) -> list[Artist]:
@@ -456,8 +456,12 @@ def stage(scene: SpatialScene, box: Array, *, views: str, elev: float, azim: flo
 
 
 def _draw_all(st: Stage, scene: SpatialScene, position: int, **style: Any) -> list[Artist]:
-    return [a for which, ax in st.panels.items()
-            for a in draw_position(ax, scene, position, which, **style)]
+    """The position in every panel, and the note of a chain break there."""
+    drawn = [a for which, ax in st.panels.items()
+             for a in draw_position(ax, scene, position, which, **style)]
+    if scene.results.broken[position]:
+        drawn.append(_break_note(st.figure, scene, position))
+    return drawn
 
 
 # ------------------------------------------------------------------------------- the views
