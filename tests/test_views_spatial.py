@@ -106,6 +106,11 @@ def test_the_drawn_arrows_are_the_solved_vectors_in_3d_and_in_each_projection(pa
     FigureCanvasAgg(figure).draw()
     ax = panels["3d"]
     assert (ax.elev, ax.azim) == (35, -20)
+    # the same scale on the three axes: each side of the box as long as its data span
+    # (matplotlib keeps the box in its view order: with Y up, the sides of z, x, y)
+    spans = np.roll(np.ptp([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()], axis=1), 1)
+    box = np.asarray(ax.get_box_aspect())
+    np.testing.assert_allclose(box / spans, box[0] / spans[0], rtol=1e-9)
     for arrow in arrows.values():
         xs, ys, _ = proj3d.proj_transform(*np.stack([arrow.tail3d, arrow.head3d], 1), ax.M)
         (ta, tb), (ha, hb) = arrow._posA_posB  # matplotlib has no public getter
