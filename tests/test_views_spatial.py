@@ -272,3 +272,16 @@ def test_the_cli_draws_spatial_plans_and_animations(tmp_path):
     with Image.open(out) as image:
         assert image.n_frames == 4  # positions 0..3; 4 closes the turn
     assert "(4 frames)" in result.output
+
+
+def test_spatial_plans_in_russian_have_no_english_words():
+    from test_views_russian import english, user_names
+
+    results = _broken_rssr()
+    names = user_names(results.model)
+    broken = int(np.flatnonzero(results.broken)[0])
+    for figure in (plot_spatial_plan(results, broken),
+                   plot_spatial_trajectories(results, [{"tail": 2}, {"vector": 2,
+                                                                     "share": 0.5}]),
+                   plot_spatial_overlay(results, views="3d")):
+        assert not english(figure, names)
