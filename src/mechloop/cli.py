@@ -576,6 +576,13 @@ def plot(
                       ] = False,
     lang: Annotated[str | None, typer.Option(help="language of the figure's texts and the "
                     "messages: en or ru (default: MECHLOOP_LANG, else en)")] = None,
+    elev: Annotated[float, typer.Option(help="plan, overlay, trajectories of a spatial "
+                    "model: the viewing elevation, deg")] = 20.0,
+    azim: Annotated[float, typer.Option(help="plan, overlay, trajectories of a spatial "
+                    "model: the viewing azimuth about the Y axis, deg")] = 30.0,
+    views: Annotated[str, typer.Option(help="plan, overlay, trajectories of a spatial "
+                     "model: all (the 3-D view and the projections XY, ZY, XZ) or 3d")
+                     ] = "all",
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -593,6 +600,7 @@ def plot(
     ```
     """
     from mechloop.model.load import load_model
+    from mechloop.model.spatial import is_spatial
     from mechloop.output.display import plot_display, resolve
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
@@ -630,7 +638,10 @@ def plot(
         raise ViewError(f"'{kind}' needs a model with bodies",
                         "add bodies (see examples/crank_slider_dynamics.yaml)")
     listed = _split(names)
-    if kind == "plan":
+    if kind in ("plan", "overlay", "trajectories") and is_spatial(m):  # issue 17: in 3-D
+        figure = _spatial_plot(results, kind, position or 0, _split(points), elev=elev,
+                               azim=azim, views=views)
+    elif kind == "plan":
         figure = plans.plot_plan(results, position or 0)
     elif kind == "overlay":
         figure = plans.plot_overlay(results)
@@ -699,6 +710,12 @@ def animate(
     fps: Annotated[float | None, typer.Option(help="frames per second, 1/s (default: "
                                               "from the model time, at least 20 ms a "
                                               "frame)")] = None,
+    elev: Annotated[float, typer.Option(help="a spatial model: the viewing elevation, "
+                                        "deg")] = 20.0,
+    azim: Annotated[float, typer.Option(help="a spatial model: the viewing azimuth about "
+                                        "the Y axis, deg")] = 30.0,
+    views: Annotated[str, typer.Option(help="a spatial model: all (the 3-D view and the "
+                                       "projections XY, ZY, XZ) or 3d")] = "all",
     force: Force = False,
 ) -> None:
     """Animate a cycle ("cinema"): one frame per position.
@@ -710,6 +727,7 @@ def animate(
     ```
     """
     from mechloop.model.load import load_model
+    from mechloop.model.spatial import is_spatial
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views.animation import ANIMATION_SUFFIXES
     from mechloop.views.animation import animate as make_animation
@@ -725,7 +743,13 @@ def animate(
             frames[0] = total
             bar.update(task, completed=done, total=total)
 
-        make_animation(results, output, fps=fps, progress=advance)
+        if is_spatial(m):  # issue 17: the 3-D plan and its projections
+            from mechloop.views.spatial_animation import animate_spatial
+
+            animate_spatial(results, output, fps=fps, progress=advance, elev=elev,
+                            azim=azim, views=views)
+        else:
+            make_animation(results, output, fps=fps, progress=advance)
     out.print(f"wrote {output} ({frames[0]} frames)")
 
 
@@ -1486,6 +1510,21 @@ def serve(
 
     run(target, host=host, port=port, browser=browser, solve_seconds=time_limit,
         say=lambda text: out.print(text, markup=False))
+
+
+def _spatial_plot(results, kind: str, position: int, points: list[str], *, elev: float,
+                  azim: float, views: str):
+    """The plan, overlay or trajectories of a spatial model, in 3-D (issue 17)."""
+    from mechloop.views import spatial_plan
+
+    if kind == "plan":
+        return spatial_plan.plot_spatial_plan(results, position, views=views, elev=elev,
+                                              azim=azim)
+    if kind == "overlay":
+        return spatial_plan.plot_spatial_overlay(results, views=views, elev=elev, azim=azim)
+    return spatial_plan.plot_spatial_trajectories(results, [_point(p) for p in points],
+                                                  position=position, views=views,
+                                                  elev=elev, azim=azim)
 
 
 if __name__ == "__main__":  # pragma: no cover

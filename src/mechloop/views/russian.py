@@ -106,6 +106,20 @@ RUSSIAN_WORDS: dict[str, str] = {
     "ground": "стойка",
     "joint": "шарнир",
     "of 0..": "из 0..",
+    # 3-D plans of spatial models (views/spatial_plan.py)
+    "front view": "вид спереди",
+    "side view": "вид сбоку",
+    "top view": "вид сверху",
+    "3-D view": "объёмный вид",
+    "elev": "возвышение",
+    "azim": "азимут",
+    "joint (vector end)": "шарнир (конец вектора)",
+    "head of": "конец вектора",
+    "tail of": "начало вектора",
+    "module": "модуль",
+    "has no real solution on the chosen variant (the vectors cannot close the loop in "
+    "space)": "не имеет действительного решения на выбранном варианте (векторы не "
+              "замыкают контур в пространстве)",
     # structure (views/formula.py, mechloop.model.formula.describe_structure)
     "vector model": "векторная модель",
     "planar": "плоская",
