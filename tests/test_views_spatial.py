@@ -28,6 +28,7 @@ import mechloop
 from mechloop.cli import app
 from mechloop.dynamics.points import Placement
 from mechloop.model.load import model_from_data
+from mechloop.model.schema import LinkRole
 from mechloop.views.figure import ViewError
 from mechloop.views.plan import plot_plan
 from mechloop.views.spatial_animation import animate_spatial
@@ -82,7 +83,16 @@ def _columns(results, number: int, position: int) -> np.ndarray:
     if f"x{number} [m]" in frame:
         return scale * np.array([frame[f"{k}{number} [m]"].iloc[position] for k in "xyz"])
     vector = results.model.vectors[number]
-    r, a, b = float(vector.r), math.radians(vector.a), math.radians(vector.b or 0.0)
+
+    def value(v, letter: str) -> float:  # a number, or a link to a constant (r3 = r1)
+        own = getattr(v, letter) or 0.0
+        if isinstance(own, LinkRole):
+            source = results.model.vectors[int(own.link[1:])]
+            return own.ratio * value(source, own.link[0]) + own.delta
+        return float(own)
+
+    r, a, b = value(vector, "r"), math.radians(value(vector, "a")), \
+        math.radians(value(vector, "b"))
     return r * np.array([math.cos(a) * math.cos(b), math.sin(a), math.cos(a) * math.sin(b)])
 
 
