@@ -72,8 +72,10 @@ PointOn = Annotated[
 ]
 
 #: A moment of inertia, or ``rod``: a slender rod about its middle, ``m·l²/12`` with ``l``
-#: the length of the vector that carries the centre (KDAM's m→Js button).
-Inertia = Scalar | Literal["rod"]
+#: the length of the vector that carries the centre (KDAM's m→Js button); in a model with
+#: spatial contours also ``[Jx, Jy, Jz]`` (principal moments in the body's frame) or the
+#: 3×3 tensor (:mod:`mechloop.spatial.bodies`).
+Inertia = Scalar | Literal["rod"] | list[Scalar] | list[list[Scalar]]
 
 
 class MassPart(_Frozen):
@@ -254,6 +256,9 @@ class Force(_Frozen):
     angle: Scalar = Field(0.0, description="direction (angle units): from +X, or from "
                           "vector 'along'")
     along: int | None = Field(None, description="the force follows this vector's direction")
+    direction: tuple[Number, Number, Number] | None = Field(
+        None, description="in a model with spatial contours: the force's direction [x, y, "
+        "z] (any length; normalized)")
     when: When | None = Field(None, description="act only while a parameter's rate has "
                               "this sign (default: always)")
     name: str | None = None
@@ -264,6 +269,9 @@ class Moment(_Frozen):
 
     body: int = Field(ge=1, description="the body the moment acts on")
     value: LoadValue = Field(description="moment over positions (moment units)")
+    axis: tuple[Number, Number, Number] | None = Field(
+        None, description="in a model with spatial contours: the moment's axis [x, y, z] "
+        "(any length; normalized; default Z, counter-clockwise in XY)")
     when: When | None = Field(None, description="act only while a parameter's rate has "
                               "this sign (default: always)")
     name: str | None = None

@@ -47,8 +47,8 @@ from mechloop.model.units import UnitProblem, to_si
 from mechloop.spatial.contour import classify
 
 #: Sections of a model file that the spatial solver does not read yet.
-UNSUPPORTED = ("bodies", "joints", "gears", "forces", "moments", "gravity", "springs",
-               "dampers", "machine", "envelopes", "simulate", "synthesis", "project")
+UNSUPPORTED = ("joints", "gears", "springs", "dampers",
+               "machine", "envelopes", "simulate", "synthesis", "project")
 LETTERS = "rab"
 
 
@@ -83,7 +83,8 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
         value = getattr(model, key)
         if value:
             problems.append(Problem((key,), f"'{key}' is not solved for a model with spatial "
-                                    "contours yet (the spatial solver does kinematics only)",
+                                    "contours yet (their dynamics reads bodies, forces, moments "
+                                    "and gravity only)",
                                     f"remove '{key}', or solve the planar part as a "
                                     "separate model"))
     spatial_vectors: set[int] = set()
