@@ -242,3 +242,17 @@ def test_planar_models_refuse_what_applies_in_space(change, where):
         solve_dynamics(model_from_data(data))
     problem = next(p for p in info.value.problems if p.path == where)
     assert "spatial contours" in problem.message and problem.hint
+
+
+def test_the_planar_force_analysis_refuses_a_spatial_model_with_the_fix(tmp_path):
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+    from mechloop.errors import SolveError
+
+    with pytest.raises(SolveError, match="not built for a model with spatial contours") as info:
+        solve_dynamics(model_from_data(_dense_example(12)))
+    assert "mechloop solve" in info.value.hint
+    result = CliRunner().invoke(app, ["plot", str(EXAMPLE), "reduced", "-o",
+                                      str(tmp_path / "j.png")])
+    assert result.exit_code == 2 and "spatial contours" in result.output, result.output

@@ -534,4 +534,10 @@ ENTRIES: list[Entry] = [
      "тензор инерции задаётся для звена модели с пространственными контурами"),
     (_p("give one moment of inertia (about the axis normal to the plane)"),
      "задайте один момент инерции (относительно оси, перпендикулярной плоскости)"),
+    (_p("the force analysis with reactions, the machine motion and the planar plots of the "
+        "dynamics are not built for a model with spatial contours yet"),
+     "силовой расчёт с реакциями, движение машины и плоские графики динамики пока не "
+     "реализованы для модели с пространственными контурами"),
+    (_p("write its dynamics by virtual power with mechloop solve"),
+     "запишите её динамику по принципу возможных мощностей командой 'mechloop solve'"),
 ]
