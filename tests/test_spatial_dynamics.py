@@ -256,3 +256,15 @@ def test_the_planar_force_analysis_refuses_a_spatial_model_with_the_fix(tmp_path
     result = CliRunner().invoke(app, ["plot", str(EXAMPLE), "reduced", "-o",
                                       str(tmp_path / "j.png")])
     assert result.exit_code == 2 and "spatial contours" in result.output, result.output
+
+
+def test_chain_breaks_leave_their_rows_empty_and_the_others_whole():
+    data = _dense_example(72)
+    data["vectors"][2]["r"] = 75  # too short a coupler for part of the turn
+    res = solve_spatial_dynamics(model_from_data(data))
+    frame = res.to_frame()
+    broken = frame["chain_break"].to_numpy()
+    assert 0 < broken.sum() < broken.size
+    values = frame.drop(columns="chain_break").to_numpy(float)
+    assert np.isfinite(values[~broken]).all()
+    assert np.isnan(frame["M_bal_vp [N*m]"].to_numpy()[broken]).all()

@@ -66,6 +66,16 @@ class Mechanism3:
                 for b, (vectors, second) in self.bodies.items()}
 
 
+def balancing_name(kin, argument: int, several: bool) -> tuple[str, str]:
+    """Column stem and unit of the balancing load of ``argument`` (numbered when the
+    model has ``several`` arguments), as in the planar table."""
+    kind = kin.argument_kinds[argument]
+    stem = "M_bal" if kind == "angle" else "F_bal"
+    if several:
+        stem += str(argument)
+    return stem, "N*m" if kind == "angle" else "N"
+
+
 @dataclass(frozen=True)
 class SpatialDynamics:
     """A solved spatial dynamic model (SI, arrays ``(P,)`` or ``(3, P)``)."""
@@ -83,11 +93,8 @@ class SpatialDynamics:
     center: Motion3 | None = None
 
     def balancing_name(self, argument: int) -> tuple[str, str]:
-        kind = self.kinematics.argument_kinds[argument]
-        stem = "M_bal" if kind == "angle" else "F_bal"
-        if len(self.balancing) > 1:
-            stem += str(argument)
-        return stem, "N*m" if kind == "angle" else "N"
+        """Column stem and unit of the balancing load of ``argument``."""
+        return balancing_name(self.kinematics, argument, len(self.balancing) > 1)
 
     def to_frame(self) -> pd.DataFrame:
         """The kinematic table, then the balancing loads by virtual power (``_vp``), the
@@ -270,9 +277,9 @@ def solve_spatial_dynamics(model: Model) -> SpatialDynamics:
             powers[f.name] = powers.get(f.name, 0.0) + _dot(f.force, place.point(f.at).v)
         for m in moments:
             powers[m.name] = powers.get(m.name, 0.0) + _dot(m.moment, frames[m.body].omega)
-        names = SpatialDynamics(kin, mech, frames, {}, balancing, None, kinetic, {}, static)
         for k, q in balancing.items():
-            powers[names.balancing_name(k)[0]] = q * argument_rate(kin, k)
+            stem = balancing_name(kin, k, len(balancing) > 1)[0]
+            powers[stem] = q * argument_rate(kin, k)
     centers = _centers(mech, place)
     moving = [m for m in mech.masses if m.mass > 0]
     center = _center_of(moving, place) if moving else None
