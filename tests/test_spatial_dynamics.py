@@ -268,3 +268,28 @@ def test_chain_breaks_leave_their_rows_empty_and_the_others_whole():
     values = frame.drop(columns="chain_break").to_numpy(float)
     assert np.isfinite(values[~broken]).all()
     assert np.isnan(frame["M_bal_vp [N*m]"].to_numpy()[broken]).all()
+
+
+def test_energy_balance_with_two_inputs():
+    """A telescopic coupler (its length argument 2, a harmonic stroke over the cycle):
+    ``dT/dt = Σ F·v + Σ M·ω + M_bal1 φ̇ + F_bal2 ṙ2``, ``dT/dt`` by 6th-order central
+    differences over a fine grid (the stroke makes the cycle non-periodic)."""
+    n = 1440
+    data = _dense_example(n)
+    data["time"] = {"rpm": 600}
+    data["arguments"][2] = {"law": "harmonic", "start": [0, 105], "end": [n, 125]}
+    data["vectors"][2]["r"] = {"argument": 2}
+    data["bodies"][2] = {"vectors": [2], "mass": 0.3, "inertia": [0, 3e-4, 3e-4],
+                         "center": {"vector": 2, "along": 30}}
+    data["forces"].append({"name": "Q", "body": 2, "at": {"vector": 2, "along": 30},
+                           "value": 20, "direction": [0, 0, 1]})
+    res = solve_spatial_dynamics(model_from_data(data))
+    assert res.reduced is None and {"M_bal1", "F_bal2"} <= set(res.powers)
+    step = 0.1 / n
+    weights = np.array([-1 / 60, 3 / 20, -3 / 4, 0, 3 / 4, -3 / 20, 1 / 60])
+    d_kinetic = np.convolve(res.kinetic_energy, weights[::-1], mode="valid") / step
+    power = sum(res.powers.values())[3:-3]
+    scale = np.abs(d_kinetic).max()
+    assert np.abs(d_kinetic - power).max() <= 1e-9 * scale
+    assert scale > 0.3 * max(np.abs(p).max() for p in res.powers.values())
+    assert "F_bal2_vp [N]" in res.to_frame().columns
