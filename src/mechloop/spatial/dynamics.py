@@ -62,6 +62,7 @@ class Mechanism3:
     masses: tuple[SpatialMass, ...]
 
     def frames(self, results) -> dict[int, Frame]:
+        """Every body's frame from ``results`` (time derivatives or analogs)."""
         return {b: body_frame(results, vectors, second=second)
                 for b, (vectors, second) in self.bodies.items()}
 
@@ -78,7 +79,14 @@ def balancing_name(kin, argument: int, several: bool) -> tuple[str, str]:
 
 @dataclass(frozen=True)
 class SpatialDynamics:
-    """A solved spatial dynamic model (SI, arrays ``(P,)`` or ``(3, P)``)."""
+    """A solved spatial dynamic model (SI, arrays ``(P,)`` or ``(3, P)``).
+
+    ``kinematics``: the :class:`~mechloop.spatial.solve.SpatialResults`; ``frames``: every
+    moving body's frame, ω and ε; ``centers``: each body's centre of mass; ``balancing``:
+    the balancing load of every argument by virtual power (N·m or N); ``reduced``:
+    ``(J_red, dJ_red/dq, M_red)`` for a one-argument model, else None;
+    ``kinetic_energy`` (J); ``powers``: the power (W) of every load and balancing load by
+    name (they sum to dT/dt); ``static``: no model time (no inertia terms)."""
 
     kinematics: object  # SpatialResults
     mechanism: Mechanism3
