@@ -25,6 +25,7 @@ from mechloop.cli import app
 from mechloop.errors import ModelError
 from mechloop.model.load import model_from_data
 from mechloop.spatial.contour import classify, follow_branch
+from mechloop.spatial.dynamics import solve_spatial_dynamics
 
 ROOT = Path(__file__).resolve().parents[1]
 SPATIAL = ROOT / "examples" / "spatial"
@@ -289,7 +290,9 @@ def test_example_through_the_cli(path, tmp_path):
     result = runner.invoke(app, ["solve", str(path), "-o", str(out)])
     assert result.exit_code == 0, result.output
     written = pd.read_csv(out)
-    frame = mechloop.solve(mechloop.load_model(path)).to_frame()
+    model = mechloop.load_model(path)
+    frame = (solve_spatial_dynamics(model) if model.bodies else mechloop.solve(model)
+             ).to_frame()
     assert list(written.columns) == list(frame.columns)
     for column in ("b3 [deg]", "x2 [m]", "dz2 [m/s]", "ddy2 [m/s^2]"):
         assert column in written.columns or any(  # the swashplate's turning vector is 1
@@ -368,10 +371,10 @@ def test_rotation_on_a_planar_contour_and_unsupported_sections_are_refused():
         model_from_data(copy.deepcopy(data))
     assert "add 'spatial: true'" in str(info.value)
     spatial = _data(SPATIAL / "rssr.yaml")
-    spatial["gravity"] = {"g": 9.81}
+    spatial["joints"] = {"O": {"bodies": [0, 1], "at": {"tail": 1}}}  # no reactions yet
     with pytest.raises(ModelError) as info:
         model_from_data(spatial)
-    assert "'gravity' is not solved for a model with spatial contours" in str(info.value)
+    assert "'joints' is not solved for a model with spatial contours" in str(info.value)
 
 
 def test_old_models_keep_their_schema_meaning():

@@ -120,7 +120,9 @@ def check(model: ModelPath) -> None:
     n_vec = len(m.vectors)
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
             f"{len(m.arguments)} argument(s), positions 0..{m.positions}")
-    if m.bodies:
+    if m.bodies and any(c.spatial for c in m.contours):  # issue 17: spatial dynamics
+        text += f"; {len(_spatial_dynamics(m, model).mechanism.bodies)} moving bodies"
+    elif m.bodies:
         mech = _dynamics(m, model).mechanism
         text += (f"; {len(mech.bodies)} moving bodies, {len(mech.pairs)} pairs "
                  f"({', '.join(p.name for p in mech.pairs)}), {len(mech.drives)} drive(s)")
@@ -134,6 +136,18 @@ def _dynamics(m, path: Path) -> DynamicResults:
 
     try:
         return solve_dynamics(m)
+    except ModelError as exc:
+        raise locate(exc, path) from None
+
+
+def _spatial_dynamics(m, path: Path):
+    """Solve the dynamics of a loaded model with spatial contours (issue 17); model
+    problems name the file and line."""
+    from mechloop.model.load import locate
+    from mechloop.spatial.dynamics import solve_spatial_dynamics
+
+    try:
+        return solve_spatial_dynamics(m)
     except ModelError as exc:
         raise locate(exc, path) from None
 
@@ -225,7 +239,13 @@ def solve(
         check_table_size(m.positions + 1, 0, output)
     extra = _intermediate_outputs(m, output)
     _outputs(model, force, *((path, SUFFIXES) for path in extra))
-    if m.bodies:
+    if m.bodies and any(c.spatial for c in m.contours):  # issue 17: spatial dynamics
+        dynamic = _spatial_dynamics(m, model)
+        results, frame = dynamic.kinematics, dynamic.to_frame()
+        if dynamic.static:
+            err.print("[yellow]note:[/] the model has no time: the analysis is static "
+                      "(no inertia loads)")
+    elif m.bodies:
         dynamic = _dynamics(m, model)
         results, frame = dynamic.kinematics, dynamic.to_frame()
         if dynamic.static:

@@ -16,8 +16,10 @@ link to any other of its kind (α to α or to a planar angle, β to β), so plan
 contours are chained freely.  Contours are solved one after another in dependency order;
 contours that need each other's functions, or a contour linking to one of its own, form a
 coupled block solved by Newton's method (:mod:`mechloop.spatial.blocks`,
-:mod:`mechloop.spatial.block`).  The sections the spatial solver does not read
-(dynamics, synthesis, envelopes, ...) are refused.
+:mod:`mechloop.spatial.block`).  Bodies, forces, moments and gravity are read by the
+spatial dynamics (:mod:`mechloop.spatial.dynamics`); the sections nothing reads for a
+spatial model yet (:data:`UNSUPPORTED`: joints, springs, machine motion, synthesis, ...)
+are refused.
 
 :func:`analyze_spatial` (called by :func:`mechloop.model.check.check_model` for a model
 with a spatial contour, in place of :func:`mechloop.model.structure.analyze`) returns the
@@ -46,8 +48,8 @@ from mechloop.spatial.blocks import coupled_blocks
 from mechloop.spatial.contour import classify
 
 #: Sections of a model file that the spatial solver does not read yet.
-UNSUPPORTED = ("bodies", "joints", "gears", "forces", "moments", "gravity", "springs",
-               "dampers", "machine", "envelopes", "simulate", "synthesis", "project")
+UNSUPPORTED = ("joints", "gears", "springs", "dampers",
+               "machine", "envelopes", "simulate", "synthesis", "project")
 LETTERS = "rab"
 
 
@@ -82,7 +84,8 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
         value = getattr(model, key)
         if value:
             problems.append(Problem((key,), f"'{key}' is not solved for a model with spatial "
-                                    "contours yet (the spatial solver does kinematics only)",
+                                    "contours yet (their dynamics reads bodies, forces, moments "
+                                    "and gravity only)",
                                     f"remove '{key}', or solve the planar part as a "
                                     "separate model"))
     spatial_vectors: set[int] = set()
