@@ -216,7 +216,7 @@ def test_a_design_that_breaks_is_reported_not_raised():
 @pytest.mark.parametrize(("path", "words"), [
     ("tim.rpm", ["has no key 'tim'", "time", "vectors", "bodies"]),
     ("vectors.9.r", ["vectors has no key '9'", "1, 2, 3, 4"]),
-    ("vectors.1.radius", ["vectors.1 has no key 'radius'", "r, a, name"]),
+    ("vectors.1.radius", ["vectors.1 has no key 'radius'", "r, a, b, name"]),
     ("forces.3.value", ["forces is a list of 1 item(s)", "0..0"]),
     ("machine.delta", ["machine is not set in this model", "add 'machine:'"]),
     ("vectors.1", ["group of settings", "vectors.1.r"]),
