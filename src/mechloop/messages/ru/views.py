@@ -288,4 +288,7 @@ ENTRIES: list[Entry] = [
      "не реализован (её векторные схемы и траектории пространственные)"),
     (r"write the table with mechloop solve, or plot its parameters",
      "запишите таблицу командой 'mechloop solve' или постройте графики её параметров"),
+    # the language of mechloop info / structure (cli.py)
+    (r"no text language (?P<v>'[^']*'|\S+)", "нет языка текста {v}"),
+    (r"use --lang en or --lang ru", "укажите --lang en или --lang ru"),
 ]
