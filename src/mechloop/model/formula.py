@@ -81,7 +81,8 @@ def parametric_formula(model: Model, info: ContourInfo, lang: str = "en") -> str
     lhs = ", ".join(inputs) if inputs else WORDS[lang]["constants only"]
     count = MODULE_SOLUTIONS.get(info.module, spatial_branches(info.module))
     variant = info.variant if count > 1 else 1
-    return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {info.module}, V={variant}"
+    module = WORDS[lang].get(f"module {info.module}", info.module)  # coupled: Russian
+    return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {module}, V={variant}"
 
 
 def describe_structure(model: Model, lang: str = "en") -> str:

@@ -71,6 +71,7 @@ WORDS: dict[str, dict[str, str]] = {
         "function": "искомый",
         "arg": "арг. {number}{offset}",
         "constants only": "только постоянные",
+        "module coupled": "блок",
     },
 }
 
