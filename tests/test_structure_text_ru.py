@@ -187,3 +187,26 @@ def test_web_structure_in_russian(tmp_path):
     assert said["mechanism"]["explanation"] == "W = 1 равно числу входов."
     assert said["mechanism"]["notes"][0].startswith("зубчатое зацепление звеньев 1 и 2")
     assert said["mechanism"]["formula"] == english["mechanism"]["formula"]
+
+
+def test_simulation_events_in_russian():
+    """Every kind of event: English as it always was (the literal text), Russian without
+    Latin words and with the same numbers."""
+    import math
+
+    from mechloop.dynamics.motors import RPM
+    from mechloop.dynamics.simulate import Event
+    from mechloop.dynamics.simulate_words import RUSSIAN_KINDS
+
+    at = math.radians(123.456789)
+    for kind in RUSSIAN_KINDS:
+        event = Event(kind, 1.25, math.radians(90.5), 1450.5 * RPM,
+                      at if kind == "chain break ahead" else None)
+        english, said = event.describe(), event.describe("ru")
+        assert english.startswith(f"{kind}: t = 1.25 s, angle 90.5 deg, speed 1450.5 rpm")
+        assert said.startswith(f"{RUSSIAN_KINDS[kind]}: t = 1,25 с, угол 90,5°, скорость "
+                               "1450,5 об/мин")
+        assert latin_words(said) == [] and numbers(said) == numbers(english)
+    assert Event("chain break ahead", 1.25, math.radians(90.5), 0.0, at).describe() \
+        .endswith(" — the run stops at the last position before the break; the chain "
+                  "breaks at angle 123.45679 deg, 32.96 deg further on")
