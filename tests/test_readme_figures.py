@@ -467,6 +467,8 @@ FIGURES: list[tuple[str, str, tuple]] = [
                                      "test_the_sun_planet_pair_from_its_printed_shifts")),
     (R, r"the planar results to (?P<fig>1e-12)", ("test", "tests/test_spatial_models.py::"
      "test_planar_four_bar_written_as_spatial_gives_the_planar_results")),
+    (R, r"planar coupled results to (?P<fig>1e-10)", ("test", "tests/test_spatial_coupled.py::"
+     "test_planar_triad_written_as_spatial_gives_the_planar_coupled_results")),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row

@@ -302,7 +302,8 @@ def test_a_tall_figure_fits_the_page_with_its_caption(tmp_path):
     ("1.5e-3", True), ("2.0E+06", True), ("1 234.5", True), ("12%", True), (".5", True),
     ("", False), ("r3", False), ("1-2", False), ("—", False), ("12 mm", False),
     ("argument", False), ("1.2.3", False), ("0 … 360", True), ("342.54 … 371.54", True),
-    ("−5...5", True), ("10–20", True), ("0 … r3", False), ("… 5", False)])
+    ("−5...5", True), ("10–20", True), ("0 … r3", False), ("… 5", False),
+    ("−2,3·10⁴", True), ("1,5·10⁻⁵", True), ("·10⁴", False)])
 def test_numbers_are_recognised(text, number):
     assert is_number(text) is number
 

@@ -190,9 +190,10 @@ def test_typesetter_words_are_in_the_documents_language(sample):
 
 def test_numeric_cells_are_told_from_words():
     for cell in ["12", "−12.25", "-0.5", "+3", "1.5e-3", "2E+05", "3,75", ".5", " 7 ",
-                 "1\u202f234.5", "12%", "inf", "−inf"]:
+                 "1\u202f234.5", "12%", "inf", "−inf", "−2,3·10⁴", "1,5·10⁻⁵"]:
         assert is_number(cell), cell
-    for cell in ["", "—", "r3", "12 mm", "1.2.3", "e5", "-", "argument", "12 / 4", "1e", "1 2"]:
+    for cell in ["", "—", "r3", "12 mm", "1.2.3", "e5", "-", "argument", "12 / 4", "1e", "1 2",
+                 "·10⁴", "2·10"]:
         assert not is_number(cell), cell
 
 

@@ -129,13 +129,14 @@ def test_the_users_names_stay_as_written():
         plt.close(figure)
 
 
-def test_translation_takes_whole_words_and_leaves_symbols_and_units():
+def test_translation_takes_whole_words_and_leaves_symbols_and_names_units_in_russian():
     assert russian("positions 0..72; position 5") == "положения 0..72; положение 5"
-    assert russian("time [s]") == "время [s]"
-    assert russian("RA_to_a2 [deg]") == "RA_to_a2 [deg]"  # a symbol: not 'to' in it
+    assert russian("time [s]") == "время [с]"  # GOST 8.417's designation
+    assert russian("RA_to_a2 [deg]") == "RA_to_a2 [°]"  # a symbol: not 'to' in it
     assert russian("timer, ground4") == "timer, ground4"  # not a word of ours
     assert russian("reduced load") == "приведённая нагрузка"  # the phrase, not 'load' alone
-    assert russian("dJ_red [kg*m^2/rad]") == "dJ_red [kg*m^2/rad]"
+    assert russian("dJ_red [kg*m^2/rad]") == "dJ_red [кг·м²/рад]"
+    assert russian("x [px], y [a.u.]") == "x [px], y [a.u.]"  # not units mechloop prints
 
 
 @pytest.mark.parametrize(("kind", "extra", "title"), [

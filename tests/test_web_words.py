@@ -37,7 +37,7 @@ def _asked_keys() -> set[str]:
     script = (STATIC / "work.js").read_text(encoding="utf-8")  # the background work
     keys |= set(re.findall(r'\b(?:t|status)\("(\w+)"', script))
     keys |= set(re.findall(r'"((?:work|anim|sweep|sim)[A-Z]\w*)"', script))
-    for name in ("forms.js", "drag.js"):  # their words: literal keys of WORDS
+    for name in ("forms.js", "drag.js", "units.js"):  # their words: literal keys of WORDS
         script = (STATIC / name).read_text(encoding="utf-8")
         keys |= set(re.findall(r'\bt\("(\w+)"', script))
         keys |= set(re.findall(r'"((?:form|drag)[A-Z]\w*|tab_\w+)"', script))

@@ -120,7 +120,9 @@ def check(model: ModelPath) -> None:
     n_vec = len(m.vectors)
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
             f"{len(m.arguments)} argument(s), positions 0..{m.positions}")
-    if m.bodies:
+    if m.bodies and any(c.spatial for c in m.contours):  # issue 17: spatial dynamics
+        text += f"; {len(_spatial_dynamics(m, model).mechanism.bodies)} moving bodies"
+    elif m.bodies:
         mech = _dynamics(m, model).mechanism
         text += (f"; {len(mech.bodies)} moving bodies, {len(mech.pairs)} pairs "
                  f"({', '.join(p.name for p in mech.pairs)}), {len(mech.drives)} drive(s)")
@@ -134,6 +136,18 @@ def _dynamics(m, path: Path) -> DynamicResults:
 
     try:
         return solve_dynamics(m)
+    except ModelError as exc:
+        raise locate(exc, path) from None
+
+
+def _spatial_dynamics(m, path: Path):
+    """Solve the dynamics of a loaded model with spatial contours (issue 17); model
+    problems name the file and line."""
+    from mechloop.model.load import locate
+    from mechloop.spatial.dynamics import solve_spatial_dynamics
+
+    try:
+        return solve_spatial_dynamics(m)
     except ModelError as exc:
         raise locate(exc, path) from None
 
@@ -238,7 +252,13 @@ def solve(
         check_table_size(m.positions + 1, 0, output)
     extra = _intermediate_outputs(m, output)
     _outputs(model, force, *((path, SUFFIXES) for path in extra))
-    if m.bodies:
+    if m.bodies and any(c.spatial for c in m.contours):  # issue 17: spatial dynamics
+        dynamic = _spatial_dynamics(m, model)
+        results, frame = dynamic.kinematics, dynamic.to_frame()
+        if dynamic.static:
+            err.print("[yellow]note:[/] the model has no time: the analysis is static "
+                      "(no inertia loads)")
+    elif m.bodies:
         dynamic = _dynamics(m, model)
         results, frame = dynamic.kinematics, dynamic.to_frame()
         if dynamic.static:
@@ -589,6 +609,13 @@ def plot(
                       ] = False,
     lang: Annotated[str | None, typer.Option(help="language of the figure's texts and the "
                     "messages: en or ru (default: MECHLOOP_LANG, else en)")] = None,
+    elev: Annotated[float, typer.Option(help="plan, overlay, trajectories of a spatial "
+                    "model: the viewing elevation, deg")] = 20.0,
+    azim: Annotated[float, typer.Option(help="plan, overlay, trajectories of a spatial "
+                    "model: the viewing azimuth about the Y axis, deg")] = 30.0,
+    views: Annotated[str, typer.Option(help="plan, overlay, trajectories of a spatial "
+                     "model: all (the 3-D view and the projections XY, ZY, XZ) or 3d")
+                     ] = "all",
     force: Force = False,
 ) -> None:
     """Draw one view of a model to an image file.
@@ -606,6 +633,7 @@ def plot(
     ```
     """
     from mechloop.model.load import load_model
+    from mechloop.model.spatial import is_spatial
     from mechloop.output.display import plot_display, resolve
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views import curves, dynamics, formula
@@ -643,7 +671,10 @@ def plot(
         raise ViewError(f"'{kind}' needs a model with bodies",
                         "add bodies (see examples/crank_slider_dynamics.yaml)")
     listed = _split(names)
-    if kind == "plan":
+    if kind in ("plan", "overlay", "trajectories") and is_spatial(m):  # issue 17: in 3-D
+        figure = _spatial_plot(results, kind, position or 0, _split(points), elev=elev,
+                               azim=azim, views=views)
+    elif kind == "plan":
         figure = plans.plot_plan(results, position or 0)
     elif kind == "overlay":
         figure = plans.plot_overlay(results)
@@ -712,6 +743,12 @@ def animate(
     fps: Annotated[float | None, typer.Option(help="frames per second, 1/s (default: "
                                               "from the model time, at least 20 ms a "
                                               "frame)")] = None,
+    elev: Annotated[float, typer.Option(help="a spatial model: the viewing elevation, "
+                                        "deg")] = 20.0,
+    azim: Annotated[float, typer.Option(help="a spatial model: the viewing azimuth about "
+                                        "the Y axis, deg")] = 30.0,
+    views: Annotated[str, typer.Option(help="a spatial model: all (the 3-D view and the "
+                                       "projections XY, ZY, XZ) or 3d")] = "all",
     force: Force = False,
 ) -> None:
     """Animate a cycle ("cinema"): one frame per position.
@@ -723,6 +760,7 @@ def animate(
     ```
     """
     from mechloop.model.load import load_model
+    from mechloop.model.spatial import is_spatial
     from mechloop.solve.kinematics import solve as solve_model
     from mechloop.views.animation import ANIMATION_SUFFIXES
     from mechloop.views.animation import animate as make_animation
@@ -738,7 +776,13 @@ def animate(
             frames[0] = total
             bar.update(task, completed=done, total=total)
 
-        make_animation(results, output, fps=fps, progress=advance)
+        if is_spatial(m):  # issue 17: the 3-D plan and its projections
+            from mechloop.views.spatial_animation import animate_spatial
+
+            animate_spatial(results, output, fps=fps, progress=advance, elev=elev,
+                            azim=azim, views=views)
+        else:
+            make_animation(results, output, fps=fps, progress=advance)
     out.print(f"wrote {output} ({frames[0]} frames)")
 
 
@@ -1495,6 +1539,21 @@ def serve(
 
     run(target, host=host, port=port, browser=browser, solve_seconds=time_limit,
         say=lambda text: out.print(text, markup=False))
+
+
+def _spatial_plot(results, kind: str, position: int, points: list[str], *, elev: float,
+                  azim: float, views: str):
+    """The plan, overlay or trajectories of a spatial model, in 3-D (issue 17)."""
+    from mechloop.views import spatial_plan
+
+    if kind == "plan":
+        return spatial_plan.plot_spatial_plan(results, position, views=views, elev=elev,
+                                              azim=azim)
+    if kind == "overlay":
+        return spatial_plan.plot_spatial_overlay(results, views=views, elev=elev, azim=azim)
+    return spatial_plan.plot_spatial_trajectories(results, [_point(p) for p in points],
+                                                  position=position, views=views,
+                                                  elev=elev, azim=azim)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -199,6 +199,11 @@ def compile_mechanism(model: Model, *, memory_checked: bool = False
     """The kinematics of ``model``, where its vectors lie, and its mechanism (bodies,
     masses, pairs, drives: :func:`~mechloop.dynamics.mechanism.build_mechanism`);
     ``memory_checked`` as for :func:`~mechloop.solve.kinematics.solve`."""
+    if any(c.spatial for c in model.contours):  # issue 17: virtual power only
+        raise SolveError("the force analysis with reactions, the machine motion and the "
+                         "planar plots of the dynamics are not built for a model with "
+                         "spatial contours yet",
+                         "write its dynamics by virtual power with mechloop solve")
     kin = solve(model, memory_checked=memory_checked)
     placement = Placement(kin)
     return kin, placement, build_mechanism(model, placement)

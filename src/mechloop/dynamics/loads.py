@@ -257,6 +257,11 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
             problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
                                     f"use one of {sorted(mechanism.bodies)}"))
             continue
+        if load.direction is not None:  # a 3-D direction: spatial models (issue 17)
+            problems.append(Problem((*path, "direction"), "a 3-D direction applies to a "
+                                    "force in a model with spatial contours",
+                                    "give the direction in the plane with 'angle'"))
+            continue
         if isinstance(load.value, IndicatorValue):  # the gas force of an indicator diagram
             value = indicator_force(model, load.value, mechanism, state, designs,
                                     (*path, "value"), problems)
@@ -295,6 +300,11 @@ def build_loads(model: Model, mechanism: Mechanism, placement: Placement,
         if load.body not in mechanism.bodies:
             problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
                                     f"use one of {sorted(mechanism.bodies)}"))
+            continue
+        if load.axis is not None:  # a 3-D axis: spatial models (issue 17)
+            problems.append(Problem((*path, "axis"), "an axis applies to a moment in a "
+                                    "model with spatial contours", "remove 'axis' (a "
+                                    "planar moment turns about Z, counter-clockwise)"))
             continue
         value = _load_values(model, load.value, "moment", units.moment, time, n_pos,
                              designs, state, (*path, "value"), problems)

@@ -595,6 +595,12 @@ def _masses(model: Model, results, problems, designs: int = 1) -> list[Mass]:
                                         "in the body", f"put the centre at {{tail: {v}}} or "
                                         "along/across from it"))
                 continue
+            if isinstance(inertia, list):  # a 3×3 tensor: spatial models (issue 17)
+                problems.append(Problem((*where, "inertia"), "an inertia tensor applies to "
+                                        "a body of a model with spatial contours",
+                                        "give one moment of inertia (about the axis normal "
+                                        "to the plane)"))
+                continue
             if inertia == "rod":
                 if sliding:
                     problems.append(Problem((*where, "inertia"), "'rod' needs a vector of "

@@ -225,7 +225,11 @@ def _quantities(model: Model) -> list[tuple[tuple, float | str, Kind]]:
                for i, part in enumerate(body.parts)]
     for path, item in masses:
         out.append(((*path, "mass"), item.mass, "mass"))
-        if item.inertia != "rod":
+        if isinstance(item.inertia, list):  # a tensor (spatial models): each entry
+            out += [((*path, "inertia", i, *([j] if isinstance(row, list) else [])), x,
+                     "inertia") for i, row in enumerate(item.inertia)
+                    for j, x in enumerate(row if isinstance(row, list) else [row])]
+        elif item.inertia != "rod":
             out.append(((*path, "inertia"), item.inertia, "inertia"))
     holders = [(("joints", name), joint) for name, joint in (model.joints or {}).items()]
     holders.append((("friction",), model.friction))

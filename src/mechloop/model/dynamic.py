@@ -74,14 +74,18 @@ PointOn = Annotated[
 #: A moment of inertia, or ``rod``: a slender rod about its middle, ``m·l²/12`` with ``l``
 #: the length of the vector that carries the centre (KDAM's m→Js button).
 Inertia = Scalar | Literal["rod"]
+#: A body's inertia: :data:`Inertia`, or in a model with spatial contours ``[Jx, Jy, Jz]``
+#: (principal moments in the body's frame) or the 3×3 tensor (:mod:`mechloop.spatial.bodies`).
+BodyInertia = Inertia | list[Scalar] | list[list[Scalar]]
 
 
 class MassPart(_Frozen):
     """A lumped mass of a body: mass, moment of inertia about its own centre, centre."""
 
     mass: Scalar = Field(description="mass (mass units)")
-    inertia: Inertia = Field(0.0, description="moment of inertia about the part's centre "
-                             "of mass (inertia units), or 'rod' for m·l²/12")
+    inertia: BodyInertia = Field(0.0, description="moment of inertia about the part's centre "
+                             "of mass (inertia units), or 'rod' for m·l²/12; with spatial "
+                             "contours a tensor [Jx, Jy, Jz] or 3×3 in the body frame")
     center: PointOn = Field(description="centre of mass, on one of the body's vectors")
 
 
@@ -96,8 +100,9 @@ class Body(_Frozen):
     vectors: list[int] = Field(min_length=1, description="vectors fixed in this body")
     name: str | None = None
     mass: Scalar = Field(0.0, description="mass (mass units)")
-    inertia: Inertia = Field(0.0, description="moment of inertia about the centre of mass "
-                             "(inertia units), or 'rod' for m·l²/12")
+    inertia: BodyInertia = Field(0.0, description="moment of inertia about the centre of mass "
+                             "(inertia units), or 'rod' for m·l²/12; with spatial contours a "
+                             "tensor [Jx, Jy, Jz] or 3×3 in the body frame")
     center: PointOn | None = Field(None, description="centre of mass (required with a mass)")
     parts: list[MassPart] = Field(default_factory=list, description="further lumped masses")
     ends: dict[int, Literal["tail", "head"]] = Field(
@@ -254,6 +259,9 @@ class Force(_Frozen):
     angle: Scalar = Field(0.0, description="direction (angle units): from +X, or from "
                           "vector 'along'")
     along: int | None = Field(None, description="the force follows this vector's direction")
+    direction: tuple[Number, Number, Number] | None = Field(
+        None, description="in a model with spatial contours: the force's direction [x, y, "
+        "z] (any length; normalized)")
     when: When | None = Field(None, description="act only while a parameter's rate has "
                               "this sign (default: always)")
     name: str | None = None
@@ -264,6 +272,9 @@ class Moment(_Frozen):
 
     body: int = Field(ge=1, description="the body the moment acts on")
     value: LoadValue = Field(description="moment over positions (moment units)")
+    axis: tuple[Number, Number, Number] | None = Field(
+        None, description="in a model with spatial contours: the moment's axis [x, y, z] "
+        "(any length; normalized; default Z, counter-clockwise in XY)")
     when: When | None = Field(None, description="act only while a parameter's rate has "
                               "this sign (default: always)")
     name: str | None = None

@@ -140,7 +140,7 @@ def describe_structure(model: Model, lang: str = "en") -> str:
         solutions = (words["solutions"].format(count=MODULE_SOLUTIONS[info.module])
                      if info.module in MODULE_SOLUTIONS else
                      words["solutions"].format(count=spatial_branches(info.module))
-                     if spatial else
+                     if spatial and info.module != "coupled" else
                      words["block"].format(number=block.number,
                                            contours=", ".join(map(str, block.contours)),
                                            unknowns=", ".join(map(symbol, block.unknowns))))

@@ -14,9 +14,12 @@ plane, or in the contour's ``plane``, :mod:`mechloop.model.plane`) and are solve
 planar modules Pl1–Pl4 in their plane's axes; every parameter may
 link to any other of its kind (α to α or to a planar angle, β to β), so planar and spatial
 contours are chained freely.  Contours are solved one after another in dependency order;
-contours that need each other (a coupled block) are not solved in spatial models yet and
-are refused with that message, as are the sections the spatial solver does not read
-(dynamics, synthesis, envelopes, ...).
+contours that need each other's functions, or a contour linking to one of its own, form a
+coupled block solved by Newton's method (:mod:`mechloop.spatial.blocks`,
+:mod:`mechloop.spatial.block`).  Bodies, forces, moments and gravity are read by the
+spatial dynamics (:mod:`mechloop.spatial.dynamics`); the sections nothing reads for a
+spatial model yet (:data:`UNSUPPORTED`: joints, springs, machine motion, synthesis, ...)
+are refused.
 
 :func:`analyze_spatial` (called by :func:`mechloop.model.check.check_model` for a model
 with a spatial contour, in place of :func:`mechloop.model.structure.analyze`) returns the
@@ -27,15 +30,12 @@ problem, located, with its fix.
 
 from __future__ import annotations
 
-from graphlib import CycleError, TopologicalSorter
-
 from mechloop.errors import Problem
 from mechloop.model.plane import Plane, normal_of
 from mechloop.model.roles import is_function
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import (
     MODULE_SOLUTIONS,
-    BlockInfo,
     ContourInfo,
     LinkChain,
     Structure,
@@ -44,11 +44,12 @@ from mechloop.model.structure import (
     param_role,
 )
 from mechloop.model.units import UnitProblem, to_si
+from mechloop.spatial.blocks import coupled_blocks
 from mechloop.spatial.contour import classify
 
 #: Sections of a model file that the spatial solver does not read yet.
-UNSUPPORTED = ("bodies", "joints", "gears", "forces", "moments", "gravity", "springs",
-               "dampers", "machine", "envelopes", "simulate", "synthesis", "project")
+UNSUPPORTED = ("joints", "gears", "springs", "dampers",
+               "machine", "envelopes", "simulate", "synthesis", "project")
 LETTERS = "rab"
 
 
@@ -83,7 +84,8 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
         value = getattr(model, key)
         if value:
             problems.append(Problem((key,), f"'{key}' is not solved for a model with spatial "
-                                    "contours yet (the spatial solver does kinematics only)",
+                                    "contours yet (their dynamics reads bodies, forces, moments "
+                                    "and gravity only)",
                                     f"remove '{key}', or solve the planar part as a "
                                     "separate model"))
     spatial_vectors: set[int] = set()
@@ -155,6 +157,7 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
 
     owner: dict[str, int] = {}
     infos: list[ContourInfo] = []
+    closed_only: dict[int, list[Problem]] = {}  # problems of a contour solved alone
     for ci, contour in enumerate(model.contours):
         numbers = [abs(n) if contour.spatial else n for n in contour.vectors]
         numbers = [n for n in numbers if n in vectors]
@@ -165,7 +168,9 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
         for f in names:
             owner[f] = ci + 1
         info, more = _classify(ci, contour, found, names)
-        problems += more
+        alone = [p for p in more if p.path[2:3] or "(module Pr20)" in p.message]
+        problems += [p for p in more if p not in alone]
+        closed_only[ci + 1] = alone
         needs: set[int] = set()
         arguments, link_names = [], []
         for n in numbers:
@@ -192,15 +197,9 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
                                         "contour solves", f"add vector {root[1:]} to a "
                                         "contour"))
         infos[ci] = _with(info, needs=tuple(sorted(needs)))
-    order = _order(infos, problems)
-    block_of = {n: i + 1 for i, n in enumerate(order)}
-    final = tuple(_with(info, block=block_of.get(info.number, 0)) for info in infos)
-    blocks = tuple(BlockInfo(number=block_of[n], contours=(n,),
-                             unknowns=final[n - 1].functions,
-                             needs=tuple(block_of[m] for m in final[n - 1].needs),
-                             coupled=False, variant=final[n - 1].variant)
-                   for n in order)
-    return Structure(contours=final, order=tuple(order), links=links, owner=owner,
+    final, blocks = coupled_blocks(model, infos, closed_only, problems)
+    order = tuple(n for b in blocks for n in b.contours)
+    return Structure(contours=final, order=order, links=links, owner=owner,
                      blocks=blocks), problems
 
 
@@ -255,29 +254,6 @@ def _classify(ci: int, contour, found: list[tuple[int, str]], names: list[str]
                                 "block", "remove 'guess' and choose the branch with "
                                 "'variant'"))
     return (module, ordered), problems
-
-
-def _order(infos: list[ContourInfo], problems: list[Problem]) -> list[int]:
-    """Contour numbers in solving order (each after those it needs)."""
-    graph = {info.number: set(info.needs) - {info.number} for info in infos}
-    for info in infos:
-        if info.number in info.needs and info.module != "?":
-            problems.append(Problem(("contours", info.number - 1), f"contour {info.number} "
-                                    "links to one of its own functions: a non-elementary "
-                                    "module, which is not solved in spatial models yet",
-                                    "link to a parameter an earlier contour solves, an "
-                                    "argument or a constant"))
-    try:
-        return list(TopologicalSorter(graph).static_order())
-    except CycleError as exc:
-        cycle = exc.args[1]
-        problems.append(Problem(("contours", cycle[0] - 1), "contours "
-                                f"{', '.join(map(str, sorted(set(cycle))))} need each "
-                                "other's functions: a coupled block, which is not solved in "
-                                "spatial models yet",
-                                "break the cycle (make one of the linked parameters a "
-                                "constant or an argument), or solve the model as planar"))
-        return [info.number for info in infos]
 
 
 def refuse_spatial(model: Model, what: str) -> None:

@@ -25,7 +25,7 @@ SIZES = (12, 11, 10, 9, 8)
 #: Left and right margin inside a cell, twentieths of a point (1.5 mm).
 CELL_MARGIN = 85
 
-_ONE = r"[+-]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][+-]?\d+)?%?"
+_ONE = r"[+-]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][+-]?\d+|·10[⁻⁺]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)?%?"
 #: One number, or a range of two ('0 … 360', '0.15...0.25', '10–20').
 _NUMBER = re.compile(rf"{_ONE}(?:(?:…|\.\.\.?|–){_ONE})?")
 _SPACES = re.compile(r"[\s\u00a0\u2009\u202f]")

@@ -37,12 +37,13 @@ FIGURE_ROOM = 60.0
 
 #: What a line may break at: white space and zero-width spaces.
 _WORDS = re.compile(r"[\s\u200b]+")
-_NUMBER = re.compile(r"[+\-−]?(\d[\d\u00a0\u202f]*([.,]\d*)?|[.,]\d+)([eE][+\-−]?\d+)?%?")
+_NUMBER = re.compile(r"[+\-−]?(\d[\d\u00a0\u202f]*([.,]\d*)?|[.,]\d+)"
+                     r"([eE][+\-−]?\d+|·10[⁻⁺]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)?%?")
 
 
 def is_number(cell: str) -> bool:
-    """Whether a table cell is a number ('12', '−0.25', '1.5e-3', '3,75'): it is set
-    right-aligned."""
+    """Whether a table cell is a number ('12', '−0.25', '1.5e-3', '3,75', '−2,3·10⁴'): it
+    is set right-aligned."""
     text = cell.strip()
     return bool(_NUMBER.fullmatch(text)) or text.lstrip("+-−").lower() in ("inf", "∞")
 

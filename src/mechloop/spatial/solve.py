@@ -1,8 +1,8 @@
 """Positions, velocities and accelerations of a model with spatial contours (issue 17).
 
-The contours are solved one after another in the order of
-:func:`mechloop.model.spatial.analyze_spatial`; each is one call of its module over the
-whole array of positions:
+The blocks are solved one after another in the order of
+:func:`mechloop.model.spatial.analyze_spatial`; each is one call over the whole array of
+positions:
 
 * a spatial contour by its module Pr1–Pr19 (:mod:`mechloop.spatial.contour`): every branch
   at once, then the variant's branch (fixed, or followed by continuity from position 0
@@ -11,7 +11,12 @@ whole array of positions:
   :mod:`mechloop.model.plane`, solved in that plane's axes) by its module Pl1–Pl4, its
   rates by the same 3×3 systems with a unit Z vector of unknown length 0 as the third
   unknown (its column is ``(0, 0, 1)``: the Z row gives 0 and the XY rows are exactly
-  the planar 2×2 system).
+  the planar 2×2 system);
+* a coupled block (contours that need each other's functions, or a contour linking to
+  one of its own) by Newton's method with continuation on its raw closure equations,
+  its rates by the block Jacobian (:mod:`mechloop.spatial.block`), its breaks by the
+  planar coupled solver's statuses (no assembly near the previous one, a dead point, a
+  jump to another assembly).
 
 A negative vector number in a spatial contour subtracts that vector: the closure is
 multiplied by the sign of the module's vector ``i`` (so its length keeps the module's
@@ -38,12 +43,14 @@ from mechloop.model.plane import plane_axes
 from mechloop.model.roles import is_function
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.spatial import contour_signs, plane_normal
-from mechloop.model.structure import ContourInfo, Structure, param_role
+from mechloop.model.structure import COUPLED, ContourInfo, Structure, param_role
 from mechloop.model.units import to_si
+from mechloop.modules.coupled import DEAD, JUMP, NO_CONVERGENCE, OK, REASONS
 from mechloop.modules.planar import solve_pl1, solve_pl2, solve_pl3, solve_pl4
 from mechloop.solve.inputs import Signal, model_arguments, model_time
 from mechloop.solve.kinematics import BREAK_REASONS, DEAD_POINT, SINGULAR_SIN, unwrap_angles
 from mechloop.solve.results import ChainBreak, Results
+from mechloop.spatial.block import solve_coupled
 from mechloop.spatial.contour import classify, follow_branch, run_module
 from mechloop.spatial.rates import accelerations, rates
 from mechloop.spatial.vector import unit
@@ -191,6 +198,9 @@ class _Solved:
     dead: dict[int, NDArray[np.bool_]]
     sign: dict[int, NDArray[np.int8]]
     broken: NDArray[np.bool_]
+    #: per coupled block (by its first contour): the status of every position
+    #: (:data:`mechloop.modules.coupled.OK`, ...)
+    status: dict[int, NDArray[np.int8]] = field(default_factory=dict)
 
 
 def _solve_all(model: Model, structure: Structure, args: dict[int, Signal],
@@ -199,7 +209,17 @@ def _solve_all(model: Model, structure: Structure, args: dict[int, Signal],
     broken = np.zeros(params.shape, dtype=bool)
     out = _Solved(params, {}, {}, {}, broken)
     with np.errstate(all="ignore"):
-        for info in structure.ordered():
+        by_number = {info.number: info for info in structure.contours}
+        for block in structure.blocks:
+            if block.coupled:  # solved together (mechloop.spatial.block)
+                status, sign = solve_coupled(model, structure, block, params, SINGULAR_SIN)
+                out.status[block.contours[0]] = status
+                for n in block.contours:
+                    out.no_solution[n] = (status == NO_CONVERGENCE) | (status == JUMP)
+                    out.dead[n], out.sign[n] = status == DEAD, sign
+                broken |= status != OK
+                continue
+            info = by_number[block.contours[0]]
             no_solution, dead, sign = _solve_contour(model, info, params)
             out.no_solution[info.number], out.dead[info.number] = no_solution, dead
             out.sign[info.number] = sign
@@ -239,6 +259,18 @@ def solve_spatial(model: Model, structure: Structure, *, analogs_of: int | None 
     breaks: list[ChainBreak] = []
     seen = np.zeros_like(broken)
     for info in structure.ordered():
+        if info.number in solved.status:  # a coupled block: its breaks by status
+            status = solved.status[info.number]
+            block = next(b for b in structure.blocks if b.contours[0] == info.number)
+            for code in (NO_CONVERGENCE, DEAD, JUMP):
+                mask = (status == code) & ~seen
+                if mask.any():
+                    breaks.append(ChainBreak(info.number, COUPLED, np.flatnonzero(mask),
+                                             REASONS[code], contours=block.contours))
+            seen |= status != OK
+            continue
+        if info.module == COUPLED:
+            continue
         no_solution, dead = solved.no_solution[info.number], solved.dead[info.number]
         for reason, mask in ((_break_reason(info), no_solution & ~seen),
                              (DEAD_POINT, dead & ~no_solution & ~seen)):

@@ -262,3 +262,17 @@ def _save_html(frames: Iterator[NDArray[np.uint8]], size: tuple[int, int], targe
         for frame in frames:
             image.set_data(frame)
             writer.grab_frame()
+
+
+def write_frames(frames: Iterator[NDArray[np.uint8]], size: tuple[int, int], target: Path,
+                 interval_ms: float) -> None:
+    """Write RGBA frames of ``size`` pixels (even, for H.264) to ``target`` by its suffix
+    (``.gif``, ``.mp4``, ``.html``), one every ``interval_ms``, as :func:`animate` does
+    (used by the 3-D plans of :mod:`mechloop.views.spatial_animation`)."""
+    suffix = target.suffix.lower()
+    if suffix == ".gif":
+        _save_gif(frames, target, gif_delay(interval_ms))
+    elif suffix == ".mp4":
+        _save_mp4(frames, size, target, interval_ms)
+    else:
+        _save_html(frames, size, target, interval_ms)

@@ -108,6 +108,11 @@ def plan_scene(results: Results | DynamicResults, *, length_unit: str | None = N
     if isinstance(results, DynamicResults):
         kin, placement, dynamic = results.kinematics, results.placement, results
     elif isinstance(results, Results):
+        if any(c.spatial for c in results.model.contours):  # issue 17: drawn in 3-D
+            raise ViewError("a model with spatial contours is drawn in 3-D, not in the plane",
+                            "use plot_spatial_plan, plot_spatial_overlay or "
+                            "plot_spatial_trajectories of mechloop.views.spatial_plan, or "
+                            "animate_spatial of mechloop.views.spatial_animation")
         kin, placement, dynamic = results, Placement(results), None
     else:
         raise ViewError(f"cannot draw a plan of {type(results).__name__}",

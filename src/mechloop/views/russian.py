@@ -25,6 +25,7 @@ from matplotlib.text import Text
 from mechloop.modules.coupled import DEAD, JUMP, NO_CONVERGENCE, REASONS
 from mechloop.solve.kinematics import BREAK_REASONS, DEAD_POINT, OVERFLOW
 from mechloop.views.decimal_mark import localize_ticks, localized
+from mechloop.views.unit_words import RUSSIAN_UNITS, unit_text
 
 #: Why the chain breaks (the solver's sentences) in Russian.
 BREAK_WORDS: dict[str, str] = {
@@ -105,6 +106,20 @@ RUSSIAN_WORDS: dict[str, str] = {
     "ground": "стойка",
     "joint": "шарнир",
     "of 0..": "из 0..",
+    # 3-D plans of spatial models (views/spatial_plan.py)
+    "front view": "вид спереди",
+    "side view": "вид сбоку",
+    "top view": "вид сверху",
+    "3-D view": "объёмный вид",
+    "elev": "возвышение",
+    "azim": "азимут",
+    "joint (vector end)": "шарнир (конец вектора)",
+    "head of": "конец вектора",
+    "tail of": "начало вектора",
+    "module": "модуль",
+    "has no real solution on the chosen variant (the vectors cannot close the loop in "
+    "space)": "не имеет действительного решения на выбранном варианте (векторы не "
+              "замыкают контур в пространстве)",
     # structure (views/formula.py, mechloop.model.formula.describe_structure)
     "vector model": "векторная модель",
     "planar": "плоская",
@@ -208,6 +223,20 @@ def keep_names(figure: Figure, names: Iterable[str]) -> Figure:
     return figure
 
 
+#: A unit in brackets after a quantity's name ('M_bal [N*m]', 'ω [rad/s]').
+_UNIT_BRACKETS = re.compile(r"\[([A-Za-z][A-Za-z0-9*/^()·\-]*)\]")
+
+
+def _russian_unit(match: re.Match[str]) -> str:
+    """A bracketed unit in its Russian designation (GOST 8.417) when every name in it is
+    a unit mechloop prints; anything else as it is."""
+    unit = match.group(1)
+    names = re.findall(r"[A-Za-z_]+", unit)
+    if not all(n in RUSSIAN_UNITS or n in ("deg", "degree") for n in names):
+        return match.group(0)
+    return f"[{unit_text(unit, 'ru')}]"
+
+
 def russian(text: str, names: Iterable[str] = ()) -> str:
     """``text`` with every phrase of :data:`RUSSIAN_WORDS` put in Russian, the user's
     ``names`` (of two characters or more) in it left as they are, and its numbers
@@ -221,6 +250,8 @@ def russian(text: str, names: Iterable[str] = ()) -> str:
     'Run up to the break, положение 5'
     >>> russian("t = 0.25 s, position 3")
     't = 0,25 s, положение 3'
+    >>> russian("M_bal [N*m], ω [rad/s], x [px]")
+    'M_bal [Н·м], ω [рад/с], x [px]'
     """
     kept: list[str] = []
 
@@ -234,7 +265,8 @@ def russian(text: str, names: Iterable[str] = ()) -> str:
     spelled = [rf"(?<!\w){n}(?!\w)" for n in spelled if n]
     if spelled:
         text = re.sub("|".join(spelled), hide, text)
-    text = localized(_pattern().sub(lambda match: RUSSIAN_WORDS[match.group(0)], text), "ru")
+    text = _pattern().sub(lambda match: RUSSIAN_WORDS[match.group(0)], text)
+    text = localized(_UNIT_BRACKETS.sub(_russian_unit, text), "ru")
     return re.sub("\x00(\\d+)\x00", lambda match: kept[int(match.group(1))], text)
 
 

@@ -42,7 +42,10 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
   the file); ``POST /api/autosave/clear`` — discard it;
 * ``GET /api/templates`` — the bundled models a new model can start from
   (:mod:`mechloop.web.templates`); ``GET /api/template?name=...`` — the text of one and the
-  file name it is offered to be saved as.  ``POST /api/save`` with ``template`` also copies
+  file name it is offered to be saved as;
+* ``GET /api/units`` — the choices of the Units tab: each kind of quantity of the
+  ``display:`` section with its units and default unit, the ranges of ``digits`` and
+  ``decimals`` (:mod:`mechloop.web.units`).  ``POST /api/save`` with ``template`` also copies
   the files the model names from beside the template.
 
 Every refusal is JSON ``{"error", "hint", "problems"}`` with a 4xx/5xx status; a model
@@ -75,6 +78,7 @@ from mechloop.web.jobs import JOB_SECONDS, Jobs
 from mechloop.web.language import problems_in, request_language
 from mechloop.web.payload import solution
 from mechloop.web.safety import Guard, WebError, Workspace
+from mechloop.web.units import unit_choices
 from mechloop.web.views import view_svg
 from mechloop.web.worker import REPORT_SECONDS, SOLVE_SECONDS, WorkFailed, run_limited
 
@@ -362,6 +366,9 @@ def create_app(folder: str | Path, *, token: str | None = None,
         return JSONResponse({"data": await run_in_threadpool(
             json_data, data.get("text", ""), file_name(data))})
 
+    async def units(request: Request) -> Response:
+        return JSONResponse(await run_in_threadpool(unit_choices))
+
     routes = [Route("/", index),
               Route("/api/models", guarded(models)),
               Route("/api/model", guarded(model)),
@@ -381,6 +388,7 @@ def create_app(folder: str | Path, *, token: str | None = None,
               Route("/api/jobs", guarded(job_start), methods=["POST"]),
               Route("/api/edit", guarded(edit), methods=["POST"]),
               Route("/api/data", guarded(plain_data), methods=["POST"]),
+              Route("/api/units", guarded(units)),
               Route("/api/jobs/{job}", guarded(job_status)),
               Route("/api/jobs/{job}/cancel", guarded(job_cancel), methods=["POST"]),
               Route("/api/jobs/{job}/file", guarded(job_file)),

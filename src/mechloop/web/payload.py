@@ -1,7 +1,9 @@
 """A solved model as the page draws it: the vector diagram of every position (the same
 geometry as :mod:`mechloop.views.plan`: :func:`~mechloop.views.plan.plan_scene`, its ground
 points, parameter marks and limits), the chain breaks, and the results table in the model's
-display units (:mod:`mechloop.output.display`).
+display units (:mod:`mechloop.output.display`), with its numbers rounded to the model's
+precision, which ``precision`` names (``{"digits": 3}``, ``{"decimals": 2}`` or ``{}``)
+for the page to print them with.
 
 Arrays are NumPy, of shape ``(P,)`` over the positions ``0..N``; an unknown value (a chain
 break) is NaN here and ``null`` in the JSON (orjson), with ``broken`` saying why.
@@ -16,7 +18,7 @@ import numpy as np
 
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.model.schema import Model
-from mechloop.output.display import apply_display, resolve
+from mechloop.output.display import apply_display, resolve, round_frame
 from mechloop.solve.kinematics import solve
 from mechloop.solve.results import Results
 from mechloop.views.plan import PlanScene, parameter_roles, plan_scene, scene_limits
@@ -69,17 +71,35 @@ def diagram(scene: PlanScene) -> dict[str, Any]:
 
 def table(results: Results | DynamicResults, model: Model) -> list[dict[str, Any]]:
     """The results table in the display units of ``model`` (its ``display:`` section):
-    one item per column, ``name``, ``unit`` and ``values`` (shape (P,))."""
-    frame = apply_display(results.to_frame(), resolve(model.display))
+    one item per column, ``name``, ``unit`` and ``values`` (shape (P,), every digit: the
+    plots' curves), and with a precision in the section ``shown``, the values rounded to
+    it as the table files write them (:func:`~mechloop.output.display.round_frame`)."""
+    shown = resolve(model.display)
+    frame = apply_display(results.to_frame(), shown, ".parquet")  # converted, not rounded
+    rounded = round_frame(frame, shown) if shown is not None and shown.rounds(".csv") \
+        else None
     columns = []
     for header in frame.columns:
         match = _HEADER.match(str(header))
         name, unit = (match.group(1), match.group(2)) if match else (str(header), "")
         if name in _NOT_RESULTS:
             continue
-        columns.append({"name": name, "unit": unit,
-                        "values": frame[header].to_numpy(dtype=float)})
+        column = {"name": name, "unit": unit, "values": frame[header].to_numpy(dtype=float)}
+        if rounded is not None:
+            column["shown"] = rounded[header].to_numpy(dtype=float)
+        columns.append(column)
     return columns
+
+
+def precision(model: Model) -> dict[str, int]:
+    """The precision the numbers of ``model``'s table are rounded to and printed with:
+    ``{"digits": n}``, ``{"decimals": n}`` or ``{}`` (every digit)."""
+    shown = resolve(model.display)
+    if shown is not None and shown.digits is not None:
+        return {"digits": shown.digits}
+    if shown is not None and shown.decimals is not None:
+        return {"decimals": shown.decimals}
+    return {}
 
 
 def solution(model: Model, solved: Results | DynamicResults | None = None) -> dict[str, Any]:
@@ -91,4 +111,5 @@ def solution(model: Model, solved: Results | DynamicResults | None = None) -> di
                "positions": np.asarray(b.positions, dtype=np.int64)} for b in kin.breaks]
     return {"name": model.name or "", "count": scene.count, "dynamics": bool(model.bodies),
             "time": kin.time, "broken": np.asarray(kin.broken, dtype=bool),
-            "breaks": breaks, "diagram": diagram(scene), "columns": table(solved, model)}
+            "breaks": breaks, "diagram": diagram(scene), "columns": table(solved, model),
+            "precision": precision(model)}

@@ -521,4 +521,23 @@ ENTRIES: list[Entry] = [
     (r"plot its parameters against the position \(plot \.\.\. parameters -n b3\) or write "
      r"the table with mechloop solve", "постройте графики её параметров по положениям "
      "('plot ... parameters -n b3') или запишите таблицу командой 'mechloop solve'"),
+    # what applies only in space, refused in a planar model (dynamics/loads.py, mechanism.py)
+    (_p("a 3-D direction applies to a force in a model with spatial contours"),
+     "направление в пространстве задаётся для силы в модели с пространственными контурами"),
+    (_p("give the direction in the plane with 'angle'"),
+     "задайте направление в плоскости углом 'angle'"),
+    (_p("an axis applies to a moment in a model with spatial contours"),
+     "ось задаётся для момента в модели с пространственными контурами"),
+    (_p("remove 'axis' (a planar moment turns about Z, counter-clockwise)"),
+     "удалите 'axis' (плоский момент действует вокруг Z, против часовой стрелки)"),
+    (_p("an inertia tensor applies to a body of a model with spatial contours"),
+     "тензор инерции задаётся для звена модели с пространственными контурами"),
+    (_p("give one moment of inertia (about the axis normal to the plane)"),
+     "задайте один момент инерции (относительно оси, перпендикулярной плоскости)"),
+    (_p("the force analysis with reactions, the machine motion and the planar plots of the "
+        "dynamics are not built for a model with spatial contours yet"),
+     "силовой расчёт с реакциями, движение машины и плоские графики динамики пока не "
+     "реализованы для модели с пространственными контурами"),
+    (_p("write its dynamics by virtual power with mechloop solve"),
+     "запишите её динамику по принципу возможных мощностей командой 'mechloop solve'"),
 ]

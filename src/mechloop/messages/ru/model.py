@@ -564,9 +564,10 @@ ENTRIES: list[Entry] = [
     (r"give the plane's normal \[nx, ny, nz\], or its two angles a and b",
      "задайте нормаль плоскости [nx, ny, nz] или два её угла a и b"),
     (r"the plane's normal is zero", "нормаль плоскости нулевая"),
-    (r"'(?P<k>[^']*)' is not solved for a model with spatial contours yet \(the spatial "
-     r"solver does kinematics only\)", "'{k}' пока не решается для модели с "
-     "пространственными контурами (пространственный решатель считает только кинематику)"),
+    (r"'(?P<k>[^']*)' is not solved for a model with spatial contours yet \(their "
+     r"dynamics reads bodies, forces, moments and gravity only\)", "'{k}' пока не решается "
+     "для модели с пространственными контурами (их динамика учитывает только звенья, "
+     "силы, моменты и силу тяжести)"),
     (r"remove '(?P<k>[^']*)', or solve the planar part as a separate model",
      "удалите '{k}' или решите плоскую часть как отдельную модель"),
     (r"contour (?P<c>\S+) is planar; a convention of parameter ranges applies to a spatial "
@@ -620,19 +621,6 @@ ENTRIES: list[Entry] = [
     (r"set 'variant' to 1, 2 or 'auto'", "задайте 'variant': 1, 2 или 'auto'"),
     (r"remove 'guess' and choose the branch with 'variant'",
      "удалите 'guess' и выберите ветвь решения ключом 'variant'"),
-    (r"contour (?P<c>\S+) links to one of its own functions: a non-elementary module, which "
-     r"is not solved in spatial models yet", "контур {c} ссылается на один из своих же "
-     "искомых параметров: это неэлементарный модуль, а в пространственных моделях он пока "
-     "не решается"),
-    (r"link to a parameter an earlier contour solves, an argument or a constant",
-     "сошлитесь на параметр, который находит предыдущий контур, на аргумент или "
-     "постоянную"),
-    (r"contours (?P<list>.+?) need each other's functions: a coupled block, which is not "
-     r"solved in spatial models yet", "контурам {list} нужны искомые параметры друг друга: "
-     "это связанный блок, а в пространственных моделях он пока не решается"),
-    (r"break the cycle \(make one of the linked parameters a constant or an argument\), or "
-     r"solve the model as planar", "разорвите цикл (сделайте один из связанных параметров "
-     "постоянной или аргументом) или решайте модель как плоскую"),
     (r"(?P<what>.+?) is not built for a model with spatial contours yet", _refused),
     (r"solve it with mechloop\.solve \(mechloop solve\), or vary its dimensions with "
      r"mechloop sweep", "решите её функцией 'mechloop.solve' ('mechloop solve') или "

@@ -62,6 +62,10 @@ _EXPONENTS = {"compression exponent": "показатель политропы �
 _NOT_SOLVED = {"rates": "скорости (первые производные)",
                "accelerations": "ускорения (вторые производные)"}
 
+#: The ends of a vector as the spatial dynamics' messages name them.
+_END = {"tail": "начало", "head": "конец"}
+
+
 ENTRIES: list[Entry] = [
     # the bundled examples (mechloop examples, mechloop new)
     (r"the bundled examples are not installed", "встроенные примеры не установлены"),
@@ -422,4 +426,74 @@ ENTRIES: list[Entry] = [
     (r"sweep two parameters", "перебирайте два параметра"),
     # spatial contours (spatial/solve.py)
     (r"pass 1-D arrays of one length", "передайте одномерные массивы одной длины"),
+    # coupled blocks of spatial contours (spatial/blocks.py)
+    (r"contour (?P<c>\S+) is solved in a coupled block, whose variant is 1 \(a negative "
+     r"Jacobian determinant\) or 2 \(positive\); variant (?P<v>\S+) does not apply",
+     "контур {c} решается в связанном блоке, у которого вариант 1 (отрицательный "
+     "определитель матрицы Якоби) или 2 (положительный); вариант {v} неприменим"),
+    # spatial dynamics (spatial/bodies.py, spatial/loads.py, spatial/dynamics.py)
+    (r"vectors (?P<a>\S+) and (?P<b>\S+) of body (?P<n>\S+) turn relative to each other, so "
+     r"they are not fixed in one body", "векторы {a} и {b} звена {n} поворачиваются друг "
+     "относительно друга, поэтому они не закреплены в одном звене"),
+    (r"list in a body only vectors that move together \(split it into bodies\)",
+     "указывайте в звене только векторы, движущиеся вместе (разделите его на звенья)"),
+    (r"'rod' needs the centre on the body's first vector \(the rod's axis, e1\), of constant "
+     r"length", "для 'rod' центр масс должен лежать на первом векторе звена (оси стержня, "
+     "e1) постоянной длины"),
+    (r"give the tensor: inertia: \[Jx, Jy, Jz\]", "задайте тензор: inertia: [Jx, Jy, Jz]"),
+    (r"a body of a model with spatial contours needs its inertia tensor, not one moment of "
+     r"inertia", "звену модели с пространственными контурами нужен тензор инерции, а не "
+     "один момент инерции"),
+    (r"give inertia: \[Jx, Jy, Jz\] \(principal, in the body frame\) or the 3×3 tensor "
+     r"\[\[Jxx, Jxy, Jxz\], \[Jxy, Jyy, Jyz\], \[Jxz, Jyz, Jzz\]\]",
+     "задайте inertia: [Jx, Jy, Jz] (главные моменты в системе координат звена) или "
+     "тензор 3×3 [[Jxx, Jxy, Jxz], [Jxy, Jyy, Jyz], [Jxz, Jyz, Jzz]]"),
+    (r"an inertia tensor is \[Jx, Jy, Jz\] or 3 rows of 3",
+     "тензор инерции — это [Jx, Jy, Jz] или 3 строки по 3 числа"),
+    (r"give inertia: \[Jx, Jy, Jz\] or \[\[Jxx, Jxy, Jxz\], \[Jxy, Jyy, Jyz\], \[Jxz, Jyz, "
+     r"Jzz\]\]", "задайте inertia: [Jx, Jy, Jz] или [[Jxx, Jxy, Jxz], [Jxy, Jyy, Jyz], "
+     "[Jxz, Jyz, Jzz]]"),
+    (r"an inertia tensor is symmetric \(Jxy = Jyx, \.\.\.\)",
+     "тензор инерции симметричен (Jxy = Jyx, ...)"),
+    (r"make the rows and columns equal", "сделайте строки равными столбцам"),
+    (r"these moments of inertia belong to no body \(each principal moment is ≥ 0 and at most "
+     r"the sum of the other two\)", "таких моментов инерции не бывает ни у какого тела "
+     "(каждый главный момент ≥ 0 и не больше суммы двух других)"),
+    (r"check the values and their signs", "проверьте значения и их знаки"),
+    (r"body (?P<n>\S+) lists vector (?P<v>\S+), which is not defined",
+     "в звене {n} указан вектор {v}, который не задан"),
+    (r"'across' has no side in a model with spatial contours",
+     "у 'across' нет стороны в модели с пространственными контурами"),
+    (r"place the centre on the vector \(share or along\)",
+     "поместите центр масс на вектор ('share' или 'along')"),
+    (r"vector (?P<v>\S+) changes length, so this point is not fixed in the body",
+     "вектор {v} меняет длину, поэтому эта точка не закреплена в звене"),
+    (r"put the centre at the (?P<end>\S+) of vector (?P<v>\S+), or on a vector of "
+     r"constant length", lambda m: "поместите центр масс в "
+     f"{_END.get(m['end'], m['end'])} вектора {m['v']} или на вектор постоянной длины"),
+    (r"the vectors of body (?P<n>\S+) are parallel, so its spin about them is not known: its "
+     r"tensor must be symmetric about them", "векторы звена {n} параллельны, поэтому его "
+     "вращение вокруг них неизвестно: тензор должен быть симметричен относительно них"),
+    (r"give inertia: \[J_axis, J, J\] \(J_axis about the vectors' line\)",
+     "задайте inertia: [J_axis, J, J] (J_axis — относительно линии векторов)"),
+    (r"the model has no moving body", "в модели нет подвижных звеньев"),
+    (r"list the moving bodies with their vectors",
+     "перечислите подвижные звенья с их векторами"),
+    (r"a direction needs a non-zero component",
+     "у направления должна быть ненулевая составляющая"),
+    (r"give \[x, y, z\] with at least one component not 0",
+     "задайте [x, y, z], где хотя бы одна составляющая не 0"),
+    (r"expressions and indicator diagrams are not read for a model with spatial contours "
+     r"yet", "выражения и индикаторные диаграммы пока не читаются для модели с "
+     "пространственными контурами"),
+    (r"give a number, a table or law over the positions, or a table over a parameter \{of: "
+     r"a1, table: \[\[value, load\], \.\.\.\]\}", "задайте число, таблицу или закон по "
+     "положениям либо таблицу по параметру {{of: a1, table: [[значение, нагрузка], ...]}}"),
+    (r"'when' is not read for a model with spatial contours yet",
+     "'when' пока не читается для модели с пространственными контурами"),
+    (r"remove 'when'", "удалите 'when'"),
+    (r"in a model with spatial contours a force along a vector has no angle to it",
+     "в модели с пространственными контурами у силы вдоль вектора нет угла к нему"),
+    (r"remove 'angle', or give 'direction: \[x, y, z\]'",
+     "удалите 'angle' или задайте 'direction: [x, y, z]'"),
 ]

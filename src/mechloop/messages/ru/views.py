@@ -288,6 +288,41 @@ ENTRIES: list[Entry] = [
      "не реализован (её векторные схемы и траектории пространственные)"),
     (r"write the table with mechloop solve, or plot its parameters",
      "запишите таблицу командой 'mechloop solve' или постройте графики её параметров"),
+    # the 3-D plans of spatial models (views/spatial_plan.py, spatial_animation.py)
+    (r"a 3-D plan needs the results of a model with spatial contours",
+     "для объёмного плана нужны результаты модели с пространственными контурами"),
+    (r"solve a model with 'spatial: true' contours by mechloop\.solve, or draw a planar "
+     r"model by plot_plan", "решите модель с контурами 'spatial: true' функцией "
+     "'mechloop.solve' или нарисуйте плоскую модель функцией 'plot_plan'"),
+    (r"contour (?P<c>\d+) starts at vector (?P<n>-?\d+), which is in no other contour",
+     "контур {c} начинается на векторе {n}, который не входит ни в один другой контур"),
+    (r"start a contour at a point of another contour, or at the origin",
+     "начните контур в точке другого контура или в начале координат"),
+    (r"unknown views (?P<v>'[^']*'|\S+) of a 3-D plan",
+     "неизвестный набор видов объёмного плана {v}"),
+    (r"use 'all' \(the 3-D view and the three projections\) or '3d'",
+     "используйте 'all' (объёмный вид и три проекции) или '3d' (только объёмный вид)"),
+    (r"the viewing (?P<what>elevation|azimuth) (?P<v>.+?) is not a number",
+     lambda m: ("угол возвышения" if m["what"] == "elevation" else "азимут")
+     + f" точки зрения {m['v']} — не число"),
+    (r"give the angles in degrees as finite numbers, e\.g\. (?P<e>\S+) and (?P<a>\S+)",
+     "задайте углы в градусах конечными числами, например {e} и {a}"),
+    (r"limits (?P<v>.+?) of a 3-D plan are neither None nor 'auto'",
+     "границы объёмного плана {v} — ни 'None', ни 'auto'"),
+    (r"use None \(every position\) or 'auto' \(the positions drawn\)",
+     "используйте 'None' (все положения) или 'auto' (рисуемые положения)"),
+    (r"(?P<v>.+?) is not a point of a 3-D plan", "{v} — не точка объёмного плана"),
+    (r"use \{head: K\}, \{tail: K\} or \{vector: K, share: s\} \(head:K, tail:K or "
+     r"vector:K:s on the command line\)", "используйте {{head: K}}, {{tail: K}} или "
+     "{{vector: K, share: s}} (в командной строке head:K, tail:K или vector:K:s)"),
+    (r"a model with spatial contours is drawn in 3-D, not in the plane",
+     "модель с пространственными контурами рисуется в объёме, а не на плоскости"),
+    (r"use plot_spatial_plan, plot_spatial_overlay or plot_spatial_trajectories of "
+     r"mechloop\.views\.spatial_plan, or animate_spatial of "
+     r"mechloop\.views\.spatial_animation", "используйте 'plot_spatial_plan', "
+     "'plot_spatial_overlay' или 'plot_spatial_trajectories' из "
+     "'mechloop.views.spatial_plan' либо 'animate_spatial' из "
+     "'mechloop.views.spatial_animation'"),
     # the language of mechloop info / structure (cli.py)
     (r"no text language (?P<v>'[^']*'|\S+)", "нет языка текста {v}"),
     (r"use --lang en or --lang ru", "укажите --lang en или --lang ru"),

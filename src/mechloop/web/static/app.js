@@ -304,7 +304,8 @@ function render() {
     row.dataset.name = c.name;
     row.insertCell().textContent = columnText(c.name);
     const value = row.insertCell();
-    value.textContent = format(c.values[k] === null ? NaN : c.values[k]);
+    const shown = (c.shown || c.values)[k];  // rounded by the server to the precision
+    value.textContent = formatPrecise(shown === null ? NaN : shown, solution.precision);
     value.className = "number";
     row.insertCell().textContent = unitText(c.unit);
   }

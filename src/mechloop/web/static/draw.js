@@ -193,6 +193,16 @@ function format(value) {
   return String(Number(value.toPrecision(6)));
 }
 
+// A number of the results table with the model's precision (the API's ``precision``:
+// ``{digits}`` significant digits or ``{decimals}`` after the point; the value comes
+// rounded by the library, this only prints it, trailing zeros kept); else as format().
+function formatPrecise(value, precision) {
+  if (!Number.isFinite(value) || !precision) return format(value);
+  if (precision.digits) return value.toPrecision(precision.digits);
+  if (precision.decimals !== undefined) return value.toFixed(precision.decimals);
+  return format(value);
+}
+
 // The colours of the curves (matplotlib's first six).
 const CURVE_COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"];
 const AXIS_WIDTH = 58;  // px of one y-axis with its labels

@@ -59,6 +59,7 @@
       return null;
     }
     showProblem("");
+    forms.asked += 1;  // a reading of the text before this edit, still on its way, is old
     forms.data = answer.data;
     return answer.text;
   }
@@ -557,6 +558,13 @@
     panel.dataset.drawn = String(Number(panel.dataset.drawn || 0) + 1);
   }
 
+  // A tab drawn by another module (units.js), registered before the page is loaded: its
+  // name, its word (a key of WORDS) and the function that draws it into the panel.
+  function register(tab, word, drawTab) {
+    TABS[tab] = word;
+    DRAW[tab] = drawTab;
+  }
+
   function showTab(tab) {
     forms.tab = tab in TABS ? tab : "yaml";
     draw();
@@ -574,6 +582,7 @@
 
   window.mechloopForms = {
     changed, draw, showTab, editText, setModelText,
+    register, edit, node, field, select, section,
     data: () => forms.data,
   };
 })();

@@ -102,6 +102,17 @@ const WORDS = {
     simProgress: "{k} s of {n} s simulated", simDone: "{t} s simulated ({n} points in the table)",
     simCycles: "cycles: {n}", simSpeed: "mean speed of the last cycle {n} rpm",
     simSteady: "steady state after {t} s", simNotSteady: "not steady yet",
+    tab_units: "Units", formUnits: "Units of the results", formPrecision: "Precision",
+    formUnitDefault: "default ({unit})", formUnitsLoading: "reading the units…",
+    formUnitsNote: "the results table, the plots and the downloads show these units and this precision",
+    formPrecisionAll: "every digit", formPrecisionDigits: "significant digits",
+    formPrecisionDecimals: "digits after the point",
+    formUnitLength: "length", formUnitAngle: "angle", formUnitTime: "time",
+    formUnitVelocity: "velocity", formUnitAcceleration: "acceleration",
+    formUnitAngularVelocity: "angular velocity",
+    formUnitAngularAcceleration: "angular acceleration", formUnitMass: "mass",
+    formUnitInertia: "moment of inertia", formUnitForce: "force", formUnitMoment: "moment",
+    formUnitEnergy: "energy, work", formUnitPower: "power",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -210,6 +221,17 @@ const WORDS = {
     simDone: "смоделировано {t} с ({n} точек в таблице)",
     simCycles: "циклов: {n}", simSpeed: "средняя скорость последнего цикла {n} об/мин",
     simSteady: "установившийся режим через {t} с", simNotSteady: "режим ещё не установился",
+    tab_units: "Единицы", formUnits: "Единицы результатов", formPrecision: "Точность",
+    formUnitDefault: "по умолчанию ({unit})", formUnitsLoading: "чтение единиц…",
+    formUnitsNote: "таблица результатов, графики и выгрузки показывают эти единицы и эту точность",
+    formPrecisionAll: "все цифры", formPrecisionDigits: "значащих цифр",
+    formPrecisionDecimals: "знаков после запятой",
+    formUnitLength: "длина", formUnitAngle: "угол", formUnitTime: "время",
+    formUnitVelocity: "скорость", formUnitAcceleration: "ускорение",
+    formUnitAngularVelocity: "угловая скорость",
+    formUnitAngularAcceleration: "угловое ускорение", formUnitMass: "масса",
+    formUnitInertia: "момент инерции", formUnitForce: "сила", formUnitMoment: "момент",
+    formUnitEnergy: "энергия, работа", formUnitPower: "мощность",
   },
 };
 
@@ -220,6 +242,10 @@ const UNITS_RU = {
   "rad/s^2": "рад/с²", "m/s": "м/с", "m/s^2": "м/с²", "mm/s": "мм/с", "mm/s^2": "мм/с²",
   rpm: "об/мин", "rad/rad": "рад/рад", "m/rad": "м/рад", "rad/rad^2": "рад/рад²",
   "m/rad^2": "м/рад²", "kg*m^2": "кг·м²",
+  // the other units of the Units tab (api/units)
+  ms: "мс", min: "мин", g: "г", t: "т", grad: "гон", turn: "об", in: "дюйм",
+  "deg/s": "град/с", "deg/s^2": "град/с²", "km/h": "км/ч", "kg*cm^2": "кг·см²",
+  "g*cm^2": "г·см²", kgf: "кгс", "kgf*m": "кгс·м", "kN*m": "кН·м", kJ: "кДж", hp: "л. с.",
 };
 
 let LANG = "en";

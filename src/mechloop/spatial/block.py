@@ -1,0 +1,491 @@
+"""A coupled block of spatial and planar contours solved together (issue 17).
+
+The 3-D counterpart of :mod:`mechloop.modules.coupled`: contours that need each other's
+functions (or a contour linking to one of its own: a non-elementary module) have their
+raw closure equations solved together — 3 per spatial contour,
+``Σ ±r_i (cos α_i cos β_i, sin α_i, cos α_i sin β_i) = 0``, and 2 per planar contour in
+its plane's axes, ``Σ r_i (cos α_i, sin α_i) = 0`` — for the block's unknowns (3 per
+spatial contour, 2 per planar one) by Newton's method with continuation over the
+positions, compiled (numba) over every design × position with no Python loop, exactly as
+the planar coupled solver does: the same Newton step (:func:`mechloop.modules.coupled.
+_step`, Gaussian elimination with the determinant and the Hadamard ratio ``|det J| /
+Π ‖column‖``), the same fixed starts (:func:`~mechloop.modules.coupled.start_points`), the
+same tolerances and the same break statuses (:data:`~mechloop.modules.coupled.REASONS`).
+
+**Position 0** starts from the contours' ``guess`` (the converged solution nearest to it),
+or without one from the fixed starts, keeping the first regular solution whose Jacobian
+determinant (columns in the order of the block's unknowns) is negative for variant 1 and
+positive for variant 2 (``auto``: variant 1, then the sign may change on a continuous
+path).  **Continuation**: each next position starts from the line through the last two
+solutions (the first-order predictor ``u − J⁻¹F`` after the first or after a break); a
+step that does not converge is a break (:data:`~mechloop.modules.coupled.NO_CONVERGENCE`),
+a Jacobian whose Hadamard ratio is below ``SINGULAR_SIN`` a dead point, a determinant sign
+change (fixed variant) or a solution farther from the predictor than twice the last step
+and :data:`~mechloop.modules.coupled.JUMP_ANGLE` (a fraction
+:data:`~mechloop.modules.coupled.JUMP_LENGTH` of the block's size for a length) a jump to
+another assembly.
+
+**Rates** are exact from the block Jacobian ``J`` (:func:`block_rates`): ``J u̇ = −b₁``
+with ``b₁`` the closure's time derivative at the known rates, and ``J ü = −b₂`` with
+``b₂`` its second derivative at the full rates and the known accelerations.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+from numpy.typing import NDArray
+
+from mechloop.modules.coupled import (
+    DEAD,
+    JUMP,
+    JUMP_ANGLE,
+    JUMP_LENGTH,
+    MAX_ITERATIONS,
+    NO_CONVERGENCE,
+    OK,
+    RESIDUAL_TOL,
+    STEP_TOL,
+    _step,
+    start_points,
+)
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Plan:
+    """The block's terms (one per vector) as integer arrays: ``row[t]`` the first
+    equation of the term's contour, ``dim[t]`` its number of equations (3 spatial, 2
+    planar), ``sign[t]`` ±1 (a subtracted vector); per letter ``k`` of r, α, β:
+    ``unknown[k, t]`` the unknown it is linked to (−1: known), ``scale[k, t]`` and
+    ``col[k, t]`` the known stack's columns of the link's scale and of the value (known)
+    or offset (linked).  ``angle[i]`` marks the angle unknowns."""
+
+    unknowns: tuple[str, ...]
+    row: NDArray[np.int64]
+    dim: NDArray[np.int64]
+    sign: NDArray[np.float64]
+    unknown: NDArray[np.int64]
+    scale: NDArray[np.int64]
+    col: NDArray[np.int64]
+    angle: NDArray[np.bool_]
+
+
+@njit(cache=True, nogil=True)
+def _value(K, r, c, u, unknown, scale, col, k, t):  # pragma: no cover - compiled
+    if unknown[k, t] >= 0:
+        return K[scale[k, t], r, c] * u[unknown[k, t]] + K[col[k, t], r, c]
+    return K[col[k, t], r, c]
+
+
+@njit(cache=True, nogil=True)
+def _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J):  # pragma: no cover
+    """Closure residual ``F`` and Jacobian ``J`` of the block at ``u``."""
+    m = u.shape[0]
+    for i in range(m):
+        F[i] = 0.0
+        for j in range(m):
+            J[i, j] = 0.0
+    d = np.empty(3)
+    da = np.empty(3)
+    db = np.empty(3)
+    for t in range(row.shape[0]):
+        length = sign[t] * _value(K, r, c, u, unknown, scale, col, 0, t)
+        a = _value(K, r, c, u, unknown, scale, col, 1, t)
+        ca, sa = math.cos(a), math.sin(a)
+        if dim[t] == 3:
+            b = _value(K, r, c, u, unknown, scale, col, 2, t)
+            cb, sb = math.cos(b), math.sin(b)
+            d[0], d[1], d[2] = ca * cb, sa, ca * sb
+            da[0], da[1], da[2] = -sa * cb, ca, -sa * sb
+            db[0], db[1], db[2] = -ca * sb, 0.0, ca * cb
+        else:
+            d[0], d[1] = ca, sa
+            da[0], da[1] = -sa, ca
+            db[0], db[1] = 0.0, 0.0
+        e = row[t]
+        for q in range(dim[t]):
+            F[e + q] += length * d[q]
+            if unknown[0, t] >= 0:
+                J[e + q, unknown[0, t]] += sign[t] * K[scale[0, t], r, c] * d[q]
+            if unknown[1, t] >= 0:
+                J[e + q, unknown[1, t]] += K[scale[1, t], r, c] * length * da[q]
+            if dim[t] == 3 and unknown[2, t] >= 0:
+                J[e + q, unknown[2, t]] += K[scale[2, t], r, c] * length * db[q]
+
+
+@njit(cache=True, nogil=True)
+def _newton(K, r, c, u, row, dim, sign, unknown, scale, col, angle, size, F, J, dx
+            ):  # pragma: no cover - compiled
+    """Newton's method from ``u`` (in place): ``(converged, det, ratio)``, as
+    :func:`mechloop.modules.coupled._newton`."""
+    m = u.shape[0]
+    polished = False
+    for _ in range(MAX_ITERATIONS):
+        _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J)
+        if polished:
+            res = 0.0
+            for i in range(m):
+                res = max(res, abs(F[i]))
+            det, ratio = _step(J, F, dx)
+            return res <= RESIDUAL_TOL * size and math.isfinite(det), det, ratio
+        det, ratio = _step(J, F, dx)
+        if det == 0.0 or not math.isfinite(det):
+            return False, 0.0, 0.0
+        big = 0.0
+        for i in range(m):
+            big = max(big, abs(dx[i]) if angle[i] else abs(dx[i]) / size)
+        if not math.isfinite(big):
+            return False, 0.0, 0.0
+        factor = 1.0 if big <= 1.0 else 1.0 / big
+        for i in range(m):
+            u[i] += factor * dx[i]
+        if big <= STEP_TOL:
+            polished = True
+    return False, 0.0, 0.0
+
+
+@njit(cache=True, nogil=True)
+def _size(K, r, c, unknown, col):  # pragma: no cover - compiled
+    """The block's length scale: the sum of its known lengths (1 if none)."""
+    total = 0.0
+    for t in range(unknown.shape[1]):
+        if unknown[0, t] < 0:
+            total += abs(K[col[0, t], r, c])
+    return total if total > 0 and math.isfinite(total) else 1.0
+
+
+@njit(cache=True, nogil=True)
+def _assemble(K, r, c, u, row, dim, sign, unknown, scale, col, angle, size, starts, want,
+              guessed, guess, singular_sin, F, J, dx):  # pragma: no cover - compiled
+    """An assembly at one position from the fixed starts (see
+    :func:`mechloop.modules.coupled._assemble`): ``(status, det)``, ``u`` the solution."""
+    m = u.shape[0]
+    best = np.empty(m)
+    best_det = 0.0
+    best_dist = np.inf
+    any_guess = False
+    for i in range(m):
+        any_guess = any_guess or guessed[i]
+    dead_seen = False
+    trial = np.empty(m)
+    for s in range(starts.shape[0]):
+        for i in range(m):
+            if guessed[i]:
+                trial[i] = guess[i]
+            elif angle[i]:
+                trial[i] = -math.pi + 2.0 * math.pi * starts[s, i]
+            else:
+                trial[i] = 2.0 * size * starts[s, i]
+        ok, det, ratio = _newton(K, r, c, trial, row, dim, sign, unknown, scale, col,
+                                 angle, size, F, J, dx)
+        if not ok:
+            continue
+        if not ratio > singular_sin:
+            dead_seen = True
+            continue
+        if any_guess:
+            dist = 0.0
+            for i in range(m):
+                if guessed[i]:
+                    d = trial[i] - guess[i]
+                    if angle[i]:
+                        d = (d + math.pi) % (2.0 * math.pi) - math.pi
+                    else:
+                        d /= size
+                    dist += d * d
+            if dist < best_dist:
+                best_dist = dist
+                best_det = det
+                best[:] = trial
+        elif want == 0 or (det > 0) == (want > 0):
+            u[:] = trial
+            return OK, det
+    if any_guess and best_dist < np.inf:
+        u[:] = best
+        return OK, best_det
+    return DEAD if dead_seen else NO_CONVERGENCE, 0.0
+
+
+@njit(cache=True, nogil=True)
+def _continue(K, row, dim, sign, unknown, scale, col, angle, starts, want, guessed, guess,
+              singular_sin, track, U, status, det_out):  # pragma: no cover - compiled
+    """Every row (design) of ``K`` along its columns (positions) by continuation."""
+    n_rows = K.shape[1]
+    n_cols = K.shape[2]
+    m = angle.shape[0]
+    F = np.empty(m)
+    J = np.empty((m, m))
+    dx = np.empty(m)
+    u = np.empty(m)
+    last = np.empty(m)
+    prev = np.empty(m)
+    tangent = np.empty(m)
+    for r in range(n_rows):
+        found = False
+        run = 0
+        branch = 0
+        for c in range(n_cols):
+            size = _size(K, r, c, unknown, col)
+            if not found:
+                code, det = _assemble(K, r, c, u, row, dim, sign, unknown, scale, col,
+                                      angle, size, starts, want, guessed, guess,
+                                      singular_sin, F, J, dx)
+                status[r, c] = code
+                det_out[r, c] = det
+                for i in range(m):
+                    U[r, c, i] = u[i] if code == OK else math.nan
+                if code == OK:
+                    found = True
+                    branch = 1 if det > 0 else -1
+                    last[:] = u
+                    run = 1
+                continue
+            for i in range(m):
+                u[i] = 2.0 * last[i] - prev[i] if run >= 2 else last[i]
+            predicted = False
+            if run < 2:  # the first-order predictor: the tangent step from the last one
+                _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J)
+                d0, _ = _step(J, F, dx)
+                predicted = d0 != 0.0 and math.isfinite(d0)
+                for i in range(m):
+                    tangent[i] = dx[i]
+                    predicted = predicted and math.isfinite(dx[i])
+            ok, det, ratio = _newton(K, r, c, u, row, dim, sign, unknown, scale, col,
+                                     angle, size, F, J, dx)
+            code = OK
+            flip = False
+            if not ok:
+                code = NO_CONVERGENCE
+            elif not ratio > singular_sin:
+                code = DEAD
+            else:
+                if (det > 0) != (branch > 0):
+                    if track:
+                        flip = True
+                    else:
+                        code = JUMP
+                if code == OK and run >= 2:
+                    for i in range(m):
+                        d = abs(u[i] - (2.0 * last[i] - prev[i]))
+                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
+                                    2.0 * abs(last[i] - prev[i]))
+                        if d > limit:
+                            code = JUMP
+                elif code == OK and predicted:
+                    for i in range(m):
+                        d = abs(u[i] - (last[i] + tangent[i]))
+                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
+                                    2.0 * abs(tangent[i]))
+                        if d > limit:
+                            code = JUMP
+                elif code == OK and flip:
+                    code = JUMP
+            if code == OK and flip:
+                branch = 1 if det > 0 else -1
+            status[r, c] = code
+            det_out[r, c] = det if code == OK else 0.0
+            if code == OK:
+                prev[:] = last
+                last[:] = u
+                run += 1
+                for i in range(m):
+                    U[r, c, i] = u[i]
+            else:
+                run = 0
+                for i in range(m):
+                    U[r, c, i] = math.nan
+
+
+def solve_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
+                singular_sin: float, track: bool = False
+                ) -> tuple[Array, NDArray[np.int8], Array]:
+    """Solve the block at every row (design) and column (position) of the known stack
+    ``known`` ``(n_known, R, C)``: the unknowns ``(R, C, m)`` (NaN where not OK), the
+    status ``(R, C)`` and the Jacobian determinant ``(R, C)`` (0 where not OK).  ``want``
+    the determinant sign of the first assembly (−1 variant 1, +1 variant 2); ``guess``
+    approximate unknowns (SI) by index; ``track`` follows the assembly through a sign
+    change of the determinant (``variant: auto``)."""
+    _, n_rows, n_cols = known.shape
+    m = len(plan.unknowns)
+    U = np.empty((n_rows, n_cols, m))
+    status = np.empty((n_rows, n_cols), dtype=np.int8)
+    det = np.zeros((n_rows, n_cols))
+    guessed = np.zeros(m, dtype=bool)
+    values = np.zeros(m)
+    for i, v in guess.items():
+        guessed[i], values[i] = True, v
+    _continue(np.ascontiguousarray(known, dtype=float), plan.row, plan.dim, plan.sign,
+              plan.unknown, plan.scale, plan.col, plan.angle, start_points(m), int(want),
+              guessed, values, float(singular_sin), bool(track), U, status, det)
+    return U, status, det
+
+
+def _directions(dim: int, a: Array, b: Array) -> dict[str, Array]:
+    """The unit vector of a term and its derivatives by α and β, ``(3, ...)``: a planar
+    term's in its plane's axes (third component 0)."""
+    ca, sa = np.cos(a), np.sin(a)
+    zero = np.zeros_like(ca)
+    if dim == 2:
+        u = np.stack([ca, sa, zero])
+        ua = np.stack([-sa, ca, zero])
+        return {"u": u, "a": ua, "b": np.zeros_like(u), "ab": np.zeros_like(u),
+                "bb": np.zeros_like(u), "aa": -u}
+    cb, sb = np.cos(b), np.sin(b)
+    u = np.stack([ca * cb, sa, ca * sb])
+    return {"u": u, "a": np.stack([-sa * cb, ca, -sa * sb]),
+            "b": np.stack([-ca * sb, zero, ca * cb]),
+            "ab": np.stack([sa * sb, zero, -sa * cb]),
+            "bb": np.stack([-ca * cb, zero, -ca * sb]), "aa": -u}
+
+
+def block_rates(plan: Plan, values: list[Array], rates: list[Array], accels: list[Array],
+                scales: list[Array], good: NDArray[np.bool_]) -> tuple[Array, Array, Array]:
+    """Rates and accelerations of the block's unknowns, ``(..., m)`` each (NaN where not
+    ``good``), and the block Jacobian ``(..., m, m)``.
+
+    Per term ``t``: ``values[t]`` ``(3, ...)`` its r, α, β (β 0 for a planar term);
+    ``rates[t]``, ``accels[t]`` the *known* parts (zero for a parameter linked to an
+    unknown); ``scales[t]`` ``(3, ...)`` the link scales to an unknown (unused where
+    known).
+    """
+    m = len(plan.unknowns)
+    shape = good.shape
+    J = np.zeros((*shape, m, m))
+    b1 = np.zeros((*shape, m))
+    frames = []
+    for t in range(len(values)):
+        dim, e, sg = int(plan.dim[t]), int(plan.row[t]), float(plan.sign[t])
+        r, a, b = values[t]
+        d = _directions(dim, a, b)
+        frames.append(d)
+        dr, da, db = rates[t]
+        vel = dr * d["u"] + r * (da * d["a"] + db * d["b"])
+        cols = {0: d["u"], 1: r * d["a"], 2: r * d["b"]}
+        for q in range(dim):
+            b1[..., e + q] += sg * vel[q]
+            for k in range(3):
+                i = int(plan.unknown[k, t])
+                if i >= 0:
+                    J[..., e + q, i] += sg * scales[t][k] * cols[k][q]
+    J[~good] = np.eye(m)
+    b1[~good] = 0.0
+    inverse = np.linalg.inv(J)
+    rate = -(inverse @ b1[..., None])[..., 0]
+    b2 = np.zeros((*shape, m))
+    for t, d in enumerate(frames):
+        dim, e, sg = int(plan.dim[t]), int(plan.row[t]), float(plan.sign[t])
+        r, _, _ = values[t]
+        full = [rates[t][k] + (scales[t][k] * rate[..., int(plan.unknown[k, t])]
+                               if plan.unknown[k, t] >= 0 else 0.0) for k in range(3)]
+        dr, da, db = full
+        ddr, dda, ddb = accels[t]
+        acc = (ddr * d["u"] + 2.0 * dr * (da * d["a"] + db * d["b"])
+               + r * (dda * d["a"] + ddb * d["b"])
+               + r * (da**2 * d["aa"] + 2.0 * da * db * d["ab"] + db**2 * d["bb"]))
+        for q in range(dim):
+            b2[..., e + q] += sg * acc[q]
+    b2[~good] = 0.0
+    accel = -(inverse @ b2[..., None])[..., 0]
+    rate[~good] = np.nan
+    accel[~good] = np.nan
+    J[~good] = np.nan
+    return rate, accel, J
+
+
+def solve_coupled(model, structure, block, params, singular_sin: float
+                  ) -> tuple[NDArray[np.int8], Array]:
+    """Solve the coupled ``block`` (:class:`~mechloop.model.structure.BlockInfo`) of a
+    model with spatial contours over ``params`` (:class:`mechloop.spatial.solve._Params`,
+    arrays ``(P,)`` or ``(D, P)``), adding its unknowns (value, rate, acceleration; NaN
+    where not solved) to ``params.known``.  Returns the status (:data:`~mechloop.modules.
+    coupled.OK`, ...) and the sign of the Jacobian determinant (0 where not OK), both
+    shaped like the parameters."""
+    from mechloop.model.schema import LinkRole
+    from mechloop.model.spatial import contour_signs
+    from mechloop.model.structure import param_role
+    from mechloop.solve.kinematics import unwrap_angles
+
+    shape = params.shape
+    index = {name: i for i, name in enumerate(block.unknowns)}
+    columns: list[Array] = [np.zeros(shape), np.ones(shape)]
+    terms: list[tuple[int, int, float, list[tuple[int, int, int]]]] = []
+    known: list[tuple[list, list, list]] = []  # per term: values, rates, accels (known)
+    row = 0
+    for number in block.contours:
+        contour = model.contours[number - 1]
+        dim = 3 if contour.spatial else 2
+        for n, sg in contour_signs(model, number - 1):
+            sources, vals, rates, accels = [], [], [], []
+            for k in "rab":
+                name = f"{k}{n}"
+                if k == "b" and dim == 2:
+                    sources.append((-1, 1, 0))
+                    vals.append(0.0), rates.append(0.0), accels.append(0.0)
+                    continue
+                link = structure.links.get(name)
+                if name in index or (link is not None and link.root in index):
+                    factor, delta, current = 1.0, 0.0, name
+                    while isinstance(step := param_role(model, current), LinkRole):
+                        delta = delta + factor * params.si(current, step.delta)
+                        factor *= float(step.ratio)
+                        current = step.link
+                    columns += [np.broadcast_to(factor, shape), np.broadcast_to(delta, shape)]
+                    sources.append((index[current], len(columns) - 2, len(columns) - 1))
+                    vals.append(None), rates.append(0.0), accels.append(0.0)
+                else:
+                    v, d, dd = params(name)
+                    columns.append(v)
+                    sources.append((-1, 1, len(columns) - 1))
+                    vals.append(v), rates.append(d), accels.append(dd)
+            terms.append((row, dim, sg, sources))
+            known.append((vals, rates, accels))
+        row += dim
+    m = len(block.unknowns)
+    plan = Plan(unknowns=tuple(block.unknowns),
+                row=np.array([t[0] for t in terms], dtype=np.int64),
+                dim=np.array([t[1] for t in terms], dtype=np.int64),
+                sign=np.array([t[2] for t in terms], dtype=float),
+                unknown=np.array([[t[3][k][0] for t in terms] for k in range(3)],
+                                 dtype=np.int64),
+                scale=np.array([[t[3][k][1] for t in terms] for k in range(3)],
+                               dtype=np.int64),
+                col=np.array([[t[3][k][2] for t in terms] for k in range(3)],
+                             dtype=np.int64),
+                angle=np.array([name[0] != "r" for name in block.unknowns]))
+    K = np.stack([np.broadcast_to(c, shape) for c in columns]).reshape(len(columns), -1,
+                                                                         shape[-1])
+    K = np.where(np.isfinite(K), K, np.nan)
+    want = 1 if block.variant == 2 else -1
+    guess = {index[name]: value for name, value in block.guess.items()}
+    U, status, det = solve_block(plan, K, want=want, guess=guess, singular_sin=singular_sin,
+                                 track=block.variant == "auto")
+    U = U.reshape(*shape, m)
+    status = status.reshape(shape)
+    good = status == OK
+    for i, name in enumerate(block.unknowns):
+        if name[0] == "a" and good.any():
+            U[..., i] = unwrap_angles(U[..., i], good)
+    # the terms' values, rates and accelerations (the known parts) and link scales
+    values, rates, accels, scales = [], [], [], []
+    for (_, _, _, sources), (vals, d1, d2) in zip(terms, known, strict=True):
+        full, scale = [], []
+        for k, (i, s, c) in enumerate(sources):
+            if i >= 0:
+                full.append(K[s].reshape(shape) * U[..., i] + K[c].reshape(shape))
+                scale.append(K[s].reshape(shape))
+            else:
+                full.append(np.broadcast_to(vals[k], shape))
+                scale.append(np.ones(shape))
+        values.append(full)
+        rates.append([np.broadcast_to(x, shape) for x in d1])
+        accels.append([np.broadcast_to(x, shape) for x in d2])
+        scales.append(scale)
+    rate, accel, _ = block_rates(plan, values, rates, accels, scales, good)
+    for i, name in enumerate(block.unknowns):
+        params.known[name] = (np.where(good, U[..., i], np.nan), rate[..., i], accel[..., i])
+    return status, np.where(good, np.sign(det).reshape(shape), 0).astype(np.int8)
