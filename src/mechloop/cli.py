@@ -25,7 +25,7 @@ from rich.table import Table
 from rich.text import Text
 from typer.core import TyperCommand, TyperGroup
 
-from mechloop.errors import MechloopError, ModelError, Problem
+from mechloop.errors import HintedError, MechloopError, ModelError, Problem
 from mechloop.messages import error_label, message_language, render_error
 
 if TYPE_CHECKING:
@@ -154,7 +154,11 @@ def _spatial_dynamics(m, path: Path):
 
 @app.command(cls=_Command)
 @user_errors
-def info(model: ModelPath) -> None:
+def info(
+    model: ModelPath,
+    lang: Annotated[str | None, typer.Option(help="language of the description: en or ru "
+                                             "(default: MECHLOOP_LANG, else en)")] = None,
+) -> None:
     """Print the structure and parametric formula of every contour (KDAM's "structure of
     the vector model" panel).
 
@@ -167,8 +171,17 @@ def info(model: ModelPath) -> None:
     from mechloop.model.formula import describe_structure
     from mechloop.model.load import load_model
 
+    lang = _text_lang(lang)
     m = load_model(model)
-    out.print(describe_structure(m))
+    out.print(escape(describe_structure(m, lang)))
+
+
+def _text_lang(lang: str | None) -> str:
+    """The language of a command's texts: ``--lang`` (en or ru), else ``MECHLOOP_LANG``."""
+    lang = message_language() if lang is None else lang
+    if lang not in ("en", "ru"):
+        raise HintedError(f"no text language {lang!r}", "use --lang en or --lang ru")
+    return lang
 
 
 from mechloop.output.paths import TABLE_SUFFIXES as SUFFIXES  # noqa: E402 (no NumPy)
@@ -842,7 +855,11 @@ def report(
 
 @app.command(cls=_Command)
 @user_errors
-def structure(model: ModelPath) -> None:
+def structure(
+    model: ModelPath,
+    lang: Annotated[str | None, typer.Option(help="language of the texts: en or ru "
+                                             "(default: MECHLOOP_LANG, else en)")] = None,
+) -> None:
     """Structural analysis: links, pairs, mobility by Chebyshev, the input groups and Assur
     groups with their pairs and assembly variants, the structure formula, the class of the
     mechanism, and the identification table.
@@ -854,28 +871,20 @@ def structure(model: ModelPath) -> None:
     ```
     """
     from mechloop.model.load import load_model, locate
-    from mechloop.structure import analyze, identification_table
-    from mechloop.structure.assur import ROMAN
+    from mechloop.structure import analyze
+    from mechloop.structure.text import structure_lines, table_text
+    from mechloop.structure.words_ru import WORDS
 
+    lang = _text_lang(lang)
     m = load_model(model)
     try:
         mob, dec = analyze(m)
     except ModelError as exc:
         raise locate(exc, model) from None
-    out.print(str(mob))
-    out.print(f"structure formula: {dec.formula}")
-    cls = dec.mechanism_class
-    out.print("class of the mechanism: "
-              + ("not determined (links left over)" if cls is None
-                 else ROMAN[cls] if cls < len(ROMAN) else str(cls)))
-    for group in dec.groups:
-        ext = ", ".join(f"{p.name} {p.kind} {p.link}→{p.to}" for p in group.external)
-        inner = ", ".join(f"{p.name} {p.kind} {p.link}–{p.to}" for p in group.internal)
-        variant = "" if group.variant is None else f"; variant {group.variant}"
-        out.print(f"  {group.label}: external {ext or '—'}; internal {inner or '—'}{variant}")
-    for note in dec.notes:
-        out.print(f"[yellow]note:[/] {note}")
-    out.print(identification_table(dec).to_string())
+    for kind, line in structure_lines(mob, dec, lang):
+        out.print(f"[yellow]{WORDS[lang]['note']}[/] {escape(line)}" if kind == "note"
+                  else escape(line))
+    out.print(escape(table_text(dec, lang)))
 
 
 @app.command(cls=_Command)

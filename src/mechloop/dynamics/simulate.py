@@ -87,18 +87,26 @@ class Event:
     omega: float
     at: float | None = None
 
-    def describe(self) -> str:
-        """The event in words, angles in degrees, speeds in rpm."""
-        text = (f"{self.kind}: t = {self.t:.6g} s, angle {math.degrees(self.q):.6g} deg, "
-                f"speed {self.omega / RPM:.6g} rpm")
+    def describe(self, lang: str = "en") -> str:
+        """The event in words, angles in degrees, speeds in rpm, in ``lang`` ('en', or
+        'ru': :mod:`mechloop.dynamics.simulate_words`, the decimal comma)."""
+        from mechloop.dynamics.simulate_words import RUSSIAN_KINDS, WORDS
+
+        words = WORDS[lang]
+        kind = RUSSIAN_KINDS.get(self.kind, self.kind) if lang == "ru" else self.kind
+        text = words["event"].format(kind=kind, t=f"{self.t:.6g}",
+                                     q=f"{math.degrees(self.q):.6g}",
+                                     omega=f"{self.omega / RPM:.6g}")
         if self.kind == "chain break ahead" and self.at is not None:
-            text += (f" — the run stops at the last position before the break; the chain "
-                     f"breaks at angle {math.degrees(self.at):.8g} deg, "
-                     f"{abs(math.degrees(self.at - self.q)):.4g} deg further on")
+            text += words["break"].format(at=f"{math.degrees(self.at):.8g}",
+                                          further=f"{abs(math.degrees(self.at - self.q)):.4g}")
         elif self.kind == "range":
-            text += (" — the input reached the end of the model's range (the positions are "
-                     "a range, not whole turns): nothing is known beyond it")
-        return text
+            text += words["range"]
+        if lang == "en":
+            return text
+        from mechloop.views.decimal_mark import localized  # the decimal comma
+
+        return localized(text, lang)
 
 
 @dataclass(frozen=True)

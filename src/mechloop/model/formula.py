@@ -9,6 +9,7 @@ module type and the solution variant, e.g. ``α1 (arg 1) → α2, r3 · Pl3, V=1
 from __future__ import annotations
 
 from mechloop.model.check import argument_kind, require_valid
+from mechloop.model.formula_words import WORDS, law_name
 from mechloop.model.schema import (
     ArgumentRole,
     IntermediateArgument,
@@ -35,102 +36,127 @@ def _unit(model: Model, name: str) -> str:
     return model.units.angle if name[0] in "ab" else model.units.length
 
 
-def _fmt(value, unit: str) -> str:
+def _fmt(value, unit: str, lang: str = "en") -> str:
     if isinstance(value, str):
         return value.strip()
+    if lang != "en":  # Russian: the unit's Russian designation, 10°
+        from mechloop.report.numbers import unit_text
+
+        shown = unit_text(unit, lang)
+        return f"{value:g}{'' if shown == '°' else ' '}{shown}"
     return f"{value:g} {unit}"
 
 
-def _plus(value, unit: str) -> str:
+def _plus(value, unit: str, lang: str = "en") -> str:
     """' + 10 deg', ' − 10 deg', or '' for zero."""
     if value in (0, 0.0):
         return ""
-    text = _fmt(value, unit)
+    text = _fmt(value, unit, lang)
     if text.startswith("-"):
         return f" − {text[1:].lstrip()}"
     return f" + {text}"
 
 
-def role_text(model: Model, name: str) -> str:
-    """How parameter ``name`` is given: '0.05 m', 'function', 'arg 1 + 10 deg', ..."""
+def role_text(model: Model, name: str, lang: str = "en") -> str:
+    """How parameter ``name`` is given: '0.05 m', 'function', 'arg 1 + 10 deg', ...
+    (``lang`` 'ru': '0.05 м', 'искомый', 'арг. 1 + 10°'; numbers still with the point)."""
     role = param_role(model, name)
     unit = _unit(model, name)
+    words = WORDS[lang]
     if is_function(role):
-        return "function"
+        return words["function"]
     if isinstance(role, ArgumentRole):
-        return f"arg {role.argument}{_plus(role.offset, unit)}"
+        return words["arg"].format(number=role.argument,
+                                   offset=_plus(role.offset, unit, lang))
     if isinstance(role, LinkRole):
         factor = "" if role.ratio == 1 else f"{role.ratio:g}·"
-        return f"{factor}{symbol(role.link)}{_plus(role.delta, unit)}"
-    return _fmt(role, unit)
+        return f"{factor}{symbol(role.link)}{_plus(role.delta, unit, lang)}"
+    return _fmt(role, unit, lang)
 
 
-def parametric_formula(model: Model, info: ContourInfo) -> str:
+def parametric_formula(model: Model, info: ContourInfo, lang: str = "en") -> str:
     """``'α1 (arg 1) → r3, α2 · Pl3, V=1'`` — the parametric formula of one contour."""
-    inputs = [f"{symbol(p)} ({role_text(model, p)})" for p in info.arguments]
+    inputs = [f"{symbol(p)} ({role_text(model, p, lang)})" for p in info.arguments]
     inputs += [symbol(p) for p in info.links]
-    lhs = ", ".join(inputs) if inputs else "constants only"
+    lhs = ", ".join(inputs) if inputs else WORDS[lang]["constants only"]
     count = MODULE_SOLUTIONS.get(info.module, spatial_branches(info.module))
     variant = info.variant if count > 1 else 1
-    return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {info.module}, V={variant}"
+    module = WORDS[lang].get(f"module {info.module}", info.module)  # coupled: Russian
+    return f"{lhs} → {', '.join(symbol(f) for f in info.functions)} · {module}, V={variant}"
 
 
-def describe_structure(model: Model) -> str:
-    """Multi-line description of the model's structure, contour by contour."""
+def describe_structure(model: Model, lang: str = "en") -> str:
+    """Multi-line description of the model's structure, contour by contour, in ``lang``
+    ('en', or 'ru': the course's Russian terms, units and the decimal comma; the words are
+    in :mod:`mechloop.model.formula_words`)."""
     structure = require_valid(model)
+    words = WORDS[lang]
     lines = []
-    title = model.name or "vector model"
-    kind = "spatial" if any(c.spatial for c in model.contours) else "planar"
-    lines.append(f"{title}: {kind}, {len(model.contours)} contour(s), {len(model.vectors)} "
-                 f"vectors, positions 0..{model.positions}")
+    title = model.name or words["model"]
+    kind = words["spatial" if any(c.spatial for c in model.contours) else "planar"]
+    lines.append(words["head"].format(title=title, kind=kind, contours=len(model.contours),
+                                      vectors=len(model.vectors), positions=model.positions))
     if model.time is None:
-        lines.append("time: none — derivatives are analogs with respect to argument 1")
+        lines.append(words["no time"])
     elif hasattr(model.time, "rpm"):
-        turns = "" if model.time.turns == 1 else f", {model.time.turns:g} turns"
-        lines.append(f"time: {model.time.rpm:g} rpm{turns} over positions 0..{model.positions}")
+        turns = ("" if model.time.turns == 1
+                 else words["turns"].format(turns=f"{model.time.turns:g}"))
+        lines.append(words["rpm"].format(rpm=f"{model.time.rpm:g}", turns=turns,
+                                         positions=model.positions))
     else:
-        lines.append(f"time: table over positions 0..{model.positions}")
+        lines.append(words["time table"].format(positions=model.positions))
     for number, arg in sorted(model.arguments.items()):
-        kind = argument_kind(model, number)
+        kind = words[argument_kind(model, number)]
         driven = [symbol(f"{letter}{n}") for n, v in sorted(model.vectors.items())
                   for letter in "rab"
                   if isinstance(getattr(v, letter), ArgumentRole)
                   and getattr(v, letter).argument == number]
-        form = (f"law {arg.law} from position {arg.start[0]} to {arg.end[0]}"
+        form = (words["law"].format(law=law_name(arg.law, lang), start=arg.start[0],
+                                    end=arg.end[0])
                 if isinstance(arg, LawArgument) else
-                f"intermediate, {arg.intermediate.count} values from "
-                f"{arg.intermediate.start} to {arg.intermediate.to} in every position"
+                words["intermediate"].format(count=arg.intermediate.count,
+                                             start=arg.intermediate.start,
+                                             to=arg.intermediate.to)
                 if isinstance(arg, IntermediateArgument)
-                else f"table of {len(arg.table)} value(s)")
-        lines.append(f"argument {number} ({kind}): {form}; drives {', '.join(driven)}")
-    lines.append("solving order: " + " → ".join(f"contour {n}" for n in structure.order))
+                else words["table"].format(count=len(arg.table)))
+        lines.append(words["argument"].format(number=number, kind=kind, form=form,
+                                              driven=", ".join(driven)))
+    lines.append(words["order"] + " → ".join(words["contour"].format(number=n)
+                                             for n in structure.order))
     for info in structure.ordered():
         lines.append("")
         name = model.contours[info.number - 1].name
         spatial = model.contours[info.number - 1].spatial
-        lines.append(f"contour {info.number}" + (f" — {name}" if name else "")
-                     + f": vectors {', '.join(map(str, model.contours[info.number - 1].vectors))}")
-        link_terms = [f"{symbol(p)} = {role_text(model, p)}" for p in info.links]
+        lines.append(words["contour vectors"].format(
+            contour=words["contour"].format(number=info.number),
+            name=f" — {name}" if name else "",
+            vectors=", ".join(map(str, model.contours[info.number - 1].vectors))))
+        link_terms = [f"{symbol(p)} = {role_text(model, p, lang)}" for p in info.links]
         structure_formula = f"n={3 if spatial else 2}, m={len(info.vectors)}"
         if link_terms:
-            structure_formula += "; links: " + ", ".join(link_terms)
-        lines.append(f"  structure formula:  {structure_formula}")
+            structure_formula += words["links"] + ", ".join(link_terms)
+        lines.append(words["structure formula"].format(formula=structure_formula))
         block = next((b for b in structure.blocks if info.number in b.contours), None)
-        solutions = (f"{MODULE_SOLUTIONS[info.module]} solution(s)"
+        solutions = (words["solutions"].format(count=MODULE_SOLUTIONS[info.module])
                      if info.module in MODULE_SOLUTIONS else
-                     f"{spatial_branches(info.module)} solution(s)"
+                     words["solutions"].format(count=spatial_branches(info.module))
                      if spatial and info.module != "coupled" else
-                     f"coupled block {block.number}: contours "
-                     f"{', '.join(map(str, block.contours))} solved together for "
-                     f"{', '.join(map(symbol, block.unknowns))} by Newton's method")
-        lines.append(f"  parametric formula: {parametric_formula(model, info)} "
-                     f"({solutions})")
-        known = [f"{symbol(f'{letter}{n}')}={role_text(model, f'{letter}{n}')}"
+                     words["block"].format(number=block.number,
+                                           contours=", ".join(map(str, block.contours)),
+                                           unknowns=", ".join(map(symbol, block.unknowns))))
+        lines.append(words["parametric formula"].format(
+            formula=parametric_formula(model, info, lang), solutions=solutions))
+        known = [f"{symbol(f'{letter}{n}')}={role_text(model, f'{letter}{n}', lang)}"
                  for n in info.vectors for letter in ("rab" if spatial else "ra")
                  if f"{letter}{n}" not in info.functions
                  and f"{letter}{n}" not in info.arguments and f"{letter}{n}" not in info.links]
         if known:
-            lines.append(f"  constants:          {', '.join(known)}")
+            lines.append(words["constants"].format(known=", ".join(known)))
         if info.needs:
-            lines.append("  needs contours:     " + ", ".join(map(str, info.needs)))
-    return "\n".join(lines)
+            lines.append(words["needs"].format(needs=", ".join(map(str, info.needs))))
+    text = "\n".join(lines)
+    if lang == "en":
+        return text
+    from mechloop.views.decimal_mark import localized  # the decimal comma
+
+    return localized(text, lang)

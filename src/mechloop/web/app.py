@@ -291,6 +291,8 @@ def create_app(folder: str | Path, *, token: str | None = None,
         path, root = source(data)
         answer = await run_in_threadpool(run_limited, exports.structure,
                                          data.get("text", ""), path, root,
+                                         request_language(request.headers,
+                                                          request.query_params),
                                          seconds=solve_seconds)
         return JSONResponse(answer)
 

@@ -124,22 +124,23 @@ def report_file(text: str, path: Path, root: Path, lang: str, fmt: str = "pdf") 
     return _in_file(document, f".{fmt}", write)
 
 
-def structure(text: str, path: Path, root: Path) -> dict[str, Any]:
+def structure(text: str, path: Path, root: Path, lang: str = "en") -> dict[str, Any]:
     """The structure of the model in ``text`` as ``mechloop structure`` prints it:
     Chebyshev's count (``n``, ``p5``, ``p4``, ``W``, ``inputs``, ``ok``, ``explanation``),
     the ``formula``, the ``class`` of the mechanism (Roman, None when not determined),
     the ``groups`` (label, kind, class, links, pair letters, external and internal pairs,
     assembly variant, contour), the ``notes``, and the contour-by-contour ``description``
     of the vector model (:func:`mechloop.model.formula.describe_structure`).  A model
-    without bodies has only the description (``mechanism`` None)."""
+    without bodies has only the description (``mechanism`` None).  The texts (explanation,
+    notes, class, description) are in ``lang`` ('en' or 'ru')."""
     from mechloop.model.formula import describe_structure
     from mechloop.structure import analyze
-    from mechloop.structure.assur import ROMAN
+    from mechloop.structure.text import class_text, explanation, note_text
 
     document = read_model(text, path, root)
     model = document.model
     try:
-        description = describe_structure(model)
+        description = describe_structure(model, lang)
         if not model.bodies:
             return {"mechanism": None, "description": description}
         mob, dec = analyze(model)
@@ -157,9 +158,9 @@ def structure(text: str, path: Path, root: Path) -> dict[str, Any]:
                "variant": g.variant, "contour": g.contour} for g in dec.groups]
     return {"mechanism": {"n": mob.n, "p5": mob.p5, "p4": mob.p4, "W": mob.W,
                           "inputs": mob.inputs, "ok": mob.ok,
-                          "explanation": mob.explanation,
+                          "explanation": explanation(mob, lang),
                           "formula": dec.formula,
-                          "class": None if cls is None else
-                          (ROMAN[cls] if cls < len(ROMAN) else str(cls)),
-                          "groups": groups, "notes": list(dec.notes)},
+                          "class": None if cls is None else class_text(dec, lang),
+                          "groups": groups,
+                          "notes": [note_text(note, lang) for note in dec.notes]},
             "description": description}

@@ -253,7 +253,7 @@ def simulation(model: Any, options: dict[str, Any], send: Send) -> dict[str, Any
         summary["steady"] = None if sim.steady_time is None else float(sim.steady_time)
         summary["speed"] = (float(sim.cycle_speed[-1] / RPM) if sim.cycle_time.size
                             else None)
-        summary["events"] = [event.describe() for event in sim.events[1:]]
+        summary["events"] = [event.describe(options["lang"]) for event in sim.events[1:]]
     frame = sim.to_frame()
     return {"summary": summary, "columns": [str(c) for c in frame.columns],
             "svg": _svg(plot_simulation(sim, title=model.name or ""), options["lang"]),

@@ -323,4 +323,7 @@ ENTRIES: list[Entry] = [
      "'plot_spatial_overlay' или 'plot_spatial_trajectories' из "
      "'mechloop.views.spatial_plan' либо 'animate_spatial' из "
      "'mechloop.views.spatial_animation'"),
+    # the language of mechloop info / structure (cli.py)
+    (r"no text language (?P<v>'[^']*'|\S+)", "нет языка текста {v}"),
+    (r"use --lang en or --lang ru", "укажите --lang en или --lang ru"),
 ]
