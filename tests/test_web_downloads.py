@@ -21,6 +21,7 @@ from starlette.testclient import TestClient
 from mechloop.model.formula import describe_structure
 from mechloop.model.load import load_model
 from mechloop.structure import analyze
+from mechloop.views.unit_words import unit_text
 from mechloop.web.app import create_app
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -84,10 +85,12 @@ def test_the_figure_download_is_the_parameters_plot(client, shown, lang):
     assert ElementTree.fromstring(svg.content).tag.endswith("svg")
     texts = re.findall(r"<!-- (.*?) -->", svg.content.decode())  # matplotlib's text
     for name in names:  # an axis per unit, labelled in the API's display unit
-        assert f"{name} [{shown[name][0]}]" in texts
+        unit = shown[name][0] if lang == "en" else unit_text(shown[name][0], "ru")  # [кН·м]
+        assert f"{name} [{unit}]" in texts, (name, unit)
     assert ("положение" if lang == "ru" else "position") in texts
-    ticks = [float(t.replace("−", "-")) for t in texts[texts.index("r3 [mm]") - 5:
-                                                         texts.index("r3 [mm]")]]
+    r3 = "r3 [mm]" if lang == "en" else "r3 [мм]"
+    ticks = [float(t.replace("−", "-").replace(",", ".")) for t in
+             texts[texts.index(r3) - 5:texts.index(r3)]]
     low, high = np.nanmin(shown["r3"][1]), np.nanmax(shown["r3"][1])
     assert ticks[0] <= low + 20 and ticks[-1] >= high - 20  # the r3 axis spans r3 in mm
     png = _post(client, "/api/figure", names=names[:1], format="png", lang=lang)
