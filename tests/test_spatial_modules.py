@@ -411,3 +411,11 @@ def test_broken_or_degenerate_input_is_a_break_without_warning(name, fill):
     *values, ok = fn(*[np.full(4, fill)] * (3 + len(knowns)))
     assert ok.shape == (branches, 4) and not ok.any()
     assert all(np.isnan(v).all() for v in values)
+
+
+def test_the_solvers_table_of_modules_is_table_2_1_as_written_here():
+    """The solver picks a module by the table in mechloop.spatial.contour; it must be the
+    one these tests state independently (seed 000 table 2.1: unknowns, knowns, branches)."""
+    from mechloop.spatial.contour import MODULES as SOLVERS
+
+    assert SOLVERS == MODULES
