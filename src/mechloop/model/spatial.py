@@ -37,11 +37,10 @@ from mechloop.model.schema import ArgumentRole, LinkRole, Model
 from mechloop.model.structure import (
     MODULE_SOLUTIONS,
     ContourInfo,
-    LinkChain,
     Structure,
-    _follow_link,
     _module_of,
     param_role,
+    vector_links,
 )
 from mechloop.model.units import UnitProblem, to_si
 from mechloop.spatial.blocks import coupled_blocks
@@ -139,21 +138,7 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
                                     "planar (the XY plane, β = 0)",
                                     "add 'spatial: true' to that contour, or remove 'b'"))
 
-    links: dict[str, LinkChain] = {}
-    for number, vector in vectors.items():
-        for letter in LETTERS:
-            role = getattr(vector, letter)
-            name = f"{letter}{number}"
-            path = ("vectors", number, letter)
-            if isinstance(role, ArgumentRole) and role.argument not in model.arguments:
-                problems.append(Problem(path, f"{name} uses argument {role.argument}, which "
-                                        "is not defined",
-                                        f"add argument {role.argument} under 'arguments:' or "
-                                        "use one that exists"))
-            if isinstance(role, LinkRole):
-                chain = _follow_link(model, name, path, problems)
-                if chain is not None:
-                    links[name] = chain
+    links = vector_links(model, LETTERS, problems)
 
     owner: dict[str, int] = {}
     infos: list[ContourInfo] = []

@@ -197,20 +197,7 @@ def analyze(model: Model) -> tuple[Structure, list[Problem]]:
 
     # Roles of every parameter: arguments exist, links point at something real.
     links: dict[str, LinkChain] = {}
-    for number, vector in vectors.items():
-        for letter in "ra":
-            role = vector.r if letter == "r" else vector.a
-            name = f"{letter}{number}"
-            path = ("vectors", number, letter)
-            if isinstance(role, ArgumentRole) and role.argument not in model.arguments:
-                problems.append(Problem(path, f"{name} uses argument {role.argument}, which "
-                                        "is not defined",
-                                        f"add argument {role.argument} under 'arguments:' or "
-                                        "use one that exists"))
-            if isinstance(role, LinkRole):
-                chain = _follow_link(model, name, path, problems)
-                if chain is not None:
-                    links[name] = chain
+    links.update(vector_links(model, "ra", problems))
 
     # Functions per contour, module type, dependencies.
     owner: dict[str, int] = {}
@@ -297,6 +284,29 @@ def _ratio_inside_block(infos: list[ContourInfo], links: dict[str, LinkChain],
                     "angle of its own coupled block is not supported",
                     f"link {name} to an angle that an earlier contour solves, to an "
                     "argument or a constant, or use ratio 1"))
+
+
+def vector_links(model: Model, letters: str, problems: list[Problem]
+                 ) -> dict[str, LinkChain]:
+    """The link chains of the vectors' parameters ``letters`` (``"ra"``; ``"rab"`` in a
+    spatial model), by name (``a3``); an argument that is not defined or a broken link is
+    added to ``problems``."""
+    links: dict[str, LinkChain] = {}
+    for number, vector in model.vectors.items():
+        for letter in letters:
+            role = getattr(vector, letter)
+            name = f"{letter}{number}"
+            path = ("vectors", number, letter)
+            if isinstance(role, ArgumentRole) and role.argument not in model.arguments:
+                problems.append(Problem(path, f"{name} uses argument {role.argument}, which "
+                                        "is not defined",
+                                        f"add argument {role.argument} under 'arguments:' or "
+                                        "use one that exists"))
+            if isinstance(role, LinkRole):
+                chain = _follow_link(model, name, path, problems)
+                if chain is not None:
+                    links[name] = chain
+    return links
 
 
 def _follow_link(model: Model, name: str, path: tuple, problems: list[Problem]
