@@ -95,8 +95,8 @@ def _contact_ratio(pair) -> float:
 
 def _check_pair(pair) -> None:
     checks = pair.checks()
-    assert {c.name for c in checks} == {"undercut", "pointed tooth", "interference",
-                                        "contact ratio"}
+    assert {c.name for c in checks} == {"involute flank", "undercut", "pointed tooth",
+                                        "interference", "contact ratio"}
     assert all(c.ok for c in checks), [c.text for c in checks if not c.ok]
     assert pair.eps_alpha >= 1.2
     assert _contact_ratio(pair) == pytest.approx(pair.eps_alpha, rel=1e-9)

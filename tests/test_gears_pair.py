@@ -311,3 +311,17 @@ def test_interference_is_where_the_drawn_teeth_overlap(z, x, overlap):
         assert flagged and depth == 0.0
     else:
         assert flagged == overlap == (depth > 0.02), depth
+
+
+def test_a_tooth_all_fillet_fails_the_involute_flank_check():
+    """With x = 3 on 10 and 20 teeth the tool's straight flank meets the blank only beyond
+    its tip circle: the form diameter (where the involute would start) lies above the tip
+    diameter, the tooth has no involute flank, and the check says so for both gears."""
+    degenerate = gear_pair(2.0, (10, 20), ALPHA, x=(3.0, 3.0))
+    assert (degenerate.d_a < degenerate.d_Ff).all()
+    flank = {c.gear: c for c in degenerate.checks() if c.name == "involute flank"}
+    assert set(flank) == {1, 2} and not any(c.ok for c in flank.values())
+    assert flank[1].value == degenerate.d_a[0] and flank[1].limit == degenerate.d_Ff[0]
+    standard = gear_pair(3.0, (12, 24), ALPHA, x=(0.6, 0.36))
+    assert all(c.ok for c in standard.checks() if c.name == "involute flank")
+    assert (standard.d_a > standard.d_Ff).all()

@@ -248,7 +248,7 @@ def test_gear_pair_sheet_holds_the_gear_packages_geometry_and_checks():
     assert float(rows["ε_α"][2]) == pytest.approx(pair.eps_alpha, rel=1e-4)
     assert [r[4] for r in checks.rows] == ["met" if c.ok else "NOT MET"
                                            for c in pair.checks()]
-    assert len(checks.rows) == 7 and sheet.paragraphs[0].startswith("All checks")
+    assert len(checks.rows) == 9 and sheet.paragraphs[0].startswith("All checks")
     assert [f.caption.split(":")[0] for f in sheet.figures] == [
         "Meshing of the gear pair", "Specific sliding of the pinion and the wheel along the "
         "line of action"]

@@ -235,12 +235,21 @@ class GearPair:
 
     # ------------------------------------------------------------------ checks
     def checks(self) -> list[Check]:
-        """Undercut, pointed tooth and interference of both gears, and the contact ratio."""
+        """The involute flank (the tip circle above the form circle), undercut, pointed tooth
+        and interference of both gears, and the contact ratio."""
         out: list[Check] = []
         x_min, s_a = self.x_min, self.s_a
         beyond = self._lowest[1]
         for i in range(2):
             name = ("pinion", "wheel")[i]
+            ok = bool(self.d_a[i] > self.d_Ff[i])
+            out.append(Check("involute flank", i + 1, float(self.d_a[i]),
+                             float(self.d_Ff[i]), ok,
+                             f"{name}: the tip diameter d_a = {self.d_a[i]:.5g} "
+                             + (">" if ok else "≤") + f" the form diameter d_Ff = "
+                             f"{self.d_Ff[i]:.5g}"
+                             + ("" if ok else " — the tooth has no involute flank (the tool "
+                                "cuts only the fillet: the shift is too large)")))
             ok = self.xs[i] >= x_min[i] - 1e-12
             out.append(Check("undercut", i + 1, float(self.xs[i]), float(x_min[i]), bool(ok),
                              f"{name}: x = {self.xs[i]:.4g} "

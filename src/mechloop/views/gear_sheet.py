@@ -94,9 +94,11 @@ TEXT: dict[str, dict[str, str]] = {
         "quantity": "quantity", "symbol": "symbol", "pinion": "pinion", "wheel": "wheel",
         "unit": "unit", "check": "check", "gear": "gear", "value": "value",
         "limit": "limit", "result": "result", "ok": "met", "fails": "NOT MET",
-        "all_met": "All checks of the pair are met: no undercut, no pointed tooth, no "
+        "all_met": "All checks of the pair are met: the teeth have involute flanks, no "
+                   "undercut, no pointed tooth, no "
                    "interference, and the contact ratio is at least 1.",
-        "undercut": "undercut", "pointed tooth": "pointed tooth",
+        "involute flank": "involute flank", "undercut": "undercut",
+        "pointed tooth": "pointed tooth",
         "interference": "interference", "contact ratio": "contact ratio", "pair_gear": "pair",
         "fig_mesh": "Meshing of the gear pair: circles, line of action N1N2, active line A–E",
         "fig_sliding": "Specific sliding of the pinion and the wheel along the line of "
@@ -130,12 +132,14 @@ TEXT: dict[str, dict[str, str]] = {
         "unit": "ед. изм.", "check": "проверка", "gear": "колесо", "value": "значение",
         "limit": "предел", "result": "результат", "ok": "выполнена",
         "fails": "НЕ ВЫПОЛНЕНА",
-        "all_met": "Все проверки передачи выполнены: подрезания, заострения зуба и "
+        "all_met": "Все проверки передачи выполнены: зубья имеют эвольвентный профиль, "
+                   "подрезания, заострения зуба и "
                    "интерференции нет, коэффициент перекрытия не меньше 1.",
         "failed": "Проверка «{check}» ({gear}) не выполнена: {value}, предел {limit}.",
         "beyond": " Линия зацепления выходит за точки касания N1, N2 основных окружностей: "
                   "вершина зуба сопряжённого колеса заходит в подрезанную ножку.",
-        "undercut": "подрезание", "pointed tooth": "заострение зуба",
+        "involute flank": "эвольвентный профиль", "undercut": "подрезание",
+        "pointed tooth": "заострение зуба",
         "interference": "интерференция", "contact ratio": "коэффициент перекрытия",
         "pair_gear": "передача",
         "fig_mesh": "Картина зацепления: окружности, линия зацепления N1N2, активная "
@@ -227,8 +231,9 @@ FIGURE_WORDS_RU: dict[str, str] = {
 }
 
 #: The two numbers each check compares (value, limit).
-CHECK_SYMBOLS = {"undercut": ("x", "x_min"), "pointed tooth": ("s_a", "[s_a]"),
-                 "interference": ("d_Nf", "d_Ff"), "contact ratio": ("ε_α", "1")}
+CHECK_SYMBOLS = {"involute flank": ("d_a", "d_Ff"), "undercut": ("x", "x_min"),
+                 "pointed tooth": ("s_a", "[s_a]"), "interference": ("d_Nf", "d_Ff"),
+                 "contact ratio": ("ε_α", "1")}
 
 
 def gear_sheet(task: GearTask, lang: str = "en") -> Sheet:
