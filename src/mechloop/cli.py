@@ -434,6 +434,8 @@ def simulate(
     units: UnitsOption = None,
     digits: DigitsOption = None,
     decimals: DecimalsOption = None,
+    lang: Annotated[str | None, typer.Option(help="language of the summary: en or ru "
+                                             "(default: MECHLOOP_LANG, else en)")] = None,
 ) -> None:
     """Simulate the machine's motion in time (start-up, run-down, the approach to the
     steady cycle) from the model's simulate: section: a motor on the input, the start
@@ -452,6 +454,7 @@ def simulate(
     from mechloop.output.display import resolve
     from mechloop.views.figure import FIGURE_SUFFIXES
 
+    lang = _text_lang(lang)
     _outputs(model, force, (output, SUFFIXES), (plot_file, FIGURE_SUFFIXES))
     m = load_model(model)
     if m.simulate is None:
@@ -470,7 +473,7 @@ def simulate(
         sim = run(m, settings, dynamics=dynamic,
                   progress=lambda done, total: bar.update(task, completed=done,
                                                           total=total or None))
-    _print_simulation(sim)
+    _print_simulation(sim, lang)
     if output is not None:
         _write_frame(sim.to_frame(), output, shown)
         out.print(f"wrote {output} ({sim.time.size} rows)")
@@ -482,48 +485,17 @@ def simulate(
         out.print(f"wrote {plot_file}")
 
 
-def _print_simulation(sim) -> None:
-    """The summary of a run: machine, events, cycles, steady state, energy balance."""
-    import numpy as np
+def _print_simulation(sim, lang: str = "en") -> None:
+    """The summary of a run (:mod:`mechloop.dynamics.simulate_summary`): machine, events,
+    cycles, steady state, energy balance; warnings to the error stream."""
+    from mechloop.dynamics.simulate_summary import summary_lines
 
-    from mechloop.dynamics.motors import RPM
-    from mechloop.dynamics.simulate_inputs import InputsSimulation, summary_lines
-
-    if isinstance(sim, InputsSimulation):  # several inputs: Lagrange's equations
-        for line in summary_lines(sim):
-            out.print(line)
-        return
-
-    machine = sim.machine
-    accuracy = machine.interpolation
-    out.print(f"motor: {sim.motor.name if sim.motor else 'none'}; reduced inertia "
-              f"{machine.inertia.min():.6g} … {machine.inertia.max():.6g} kg*m^2 "
-              f"({'periodic' if machine.periodic else 'not periodic'}; between positions "
-              f"within about {accuracy.inertia_error:.2g} kg*m^2, slope within "
-              f"{accuracy.slope_error:.2g} kg*m^2/rad of dJ/dq)")
-    for event in sim.events[1:]:
-        out.print(event.describe())
-    for end in sim.machine.breaks:
-        if end is not None:
-            err.print(f"[bold yellow]warning:[/] {end.describe()}: the machine is the "
-                      "stretch of positions between the breaks, not a cycle — no cycle, "
-                      "steady state or δ")
-    count = sim.cycle_time.size
-    if count:
-        _, _, omega = sim.cycle_profile()
-        mean = sim.cycle_speed[-1]
-        out.print(f"{count} cycle(s); the last: mean speed {mean / RPM:.6g} rpm, "
-                  f"{omega.min() / RPM:.6g} … {omega.max() / RPM:.6g} rpm at the "
-                  f"positions, δ = {(omega.max() - omega.min()) / mean:.4g}")
-    if sim.steady_time is not None:
-        out.print(f"time to steady state {sim.steady_time:.6g} s (the first cycle whose "
-                  f"mean speed changed by less than {sim.settings.steady:g})")
-    elif count:
-        out.print("not steady yet (the mean speed still changes by more than "
-                  f"{sim.settings.steady:g} from cycle to cycle)")
-    out.print(f"energy: motor {sim.motor_work[-1]:.6g} J, loads {sim.load_work[-1]:.6g} J, "
-              f"kinetic energy {sim.kinetic_energy[0]:.6g} → {sim.kinetic_energy[-1]:.6g} J; "
-              f"balance residual at most {np.abs(sim.balance).max():.2g} J")
+    for text, warning in summary_lines(sim, lang):
+        if warning:
+            err.print(f"[bold yellow]{'предупреждение' if lang == 'ru' else 'warning'}:[/] "
+                      f"{text}", markup=True)
+        else:
+            out.print(text, markup=False)
 
 
 def _warn_cycle_breaks(dynamic: DynamicResults, where: str):

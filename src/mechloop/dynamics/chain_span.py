@@ -43,8 +43,20 @@ class ChainEnd:
     exact: bool
     contour: int
 
-    def describe(self, angle: bool = True) -> str:
-        """In words, with the input in degrees (or m)."""
+    def describe(self, angle: bool = True, lang: str = "en") -> str:
+        """In words, with the input in degrees (or m), in ``lang`` ('en' or 'ru': the
+        decimal comma)."""
+        if lang == "ru":
+            from mechloop.views.decimal_mark import localized
+
+            shown = (lambda x: f"{math.degrees(x):.8g}°") if angle else (
+                lambda x: f"{x:.8g} м")
+            how = (f"контур {self.contour} не собирается" if self.contour else
+                   "силовой расчёт вырожден")
+            return localized(f"цепь разрывается при входе {shown(self.q)} ({how}"
+                             f"{'; в замкнутом виде' if self.exact else ''}); движение "
+                             f"известно до последнего положения перед разрывом, "
+                             f"{shown(self.last)}", lang)
         shown = (lambda x: f"{math.degrees(x):.8g} deg") if angle else (
             lambda x: f"{x:.8g} m")
         how = (f"contour {self.contour} cannot be assembled" if self.contour else

@@ -44,6 +44,15 @@ class MotorCurve:
     name: str
     inertia: float = 0.0
     off_at: float = math.inf
+    name_ru: str = ""
+
+    def title(self, lang: str = "en") -> str:
+        """``name`` in ``lang`` ('en' or 'ru': units in Russian, the decimal comma)."""
+        if lang != "ru" or not self.name_ru:
+            return self.name
+        from mechloop.views.decimal_mark import localized
+
+        return localized(self.name_ru, lang)
 
     def at(self, omega: ArrayLike, t: ArrayLike) -> Array:
         """The moment at speed ``omega`` (rad/s) and time ``t`` (s), N·m."""
@@ -120,6 +129,7 @@ def motor_curve(motor: Motor, units, path: tuple[str | int, ...] = ("simulate", 
 
     i = motor.ratio
     gear = f" through a gear of {i:g}" if i != 1 else ""
+    gear_ru = f" через передачу {i:g}" if i != 1 else ""
     if motor.kloss is not None:
         k = motor.kloss
         rated = si(k.rated_torque, "moment", ("kloss", "rated_torque"))
@@ -127,22 +137,30 @@ def motor_curve(motor: Motor, units, path: tuple[str | int, ...] = ("simulate", 
                        ratio=i)
         name = (f"induction motor (Kloss): {rated:.6g} N*m at {k.rated_rpm:g} rpm, "
                 f"synchronous {k.synchronous_rpm:g} rpm, breakdown {k.breakdown:g}×")
+        name_ru = (f"асинхронный двигатель (формула Клосса): {rated:.6g} Н·м при "
+                   f"{k.rated_rpm:g} об/мин, синхронная скорость {k.synchronous_rpm:g} "
+                   f"об/мин, перегрузочная способность {k.breakdown:g}")
     elif motor.linear is not None:
         stall = si(motor.linear.stall_torque, "moment", ("linear", "stall_torque"))
         torque = linear(stall, motor.linear.idle_rpm * RPM, ratio=i)
         name = f"linear motor: {stall:.6g} N*m at rest, 0 at {motor.linear.idle_rpm:g} rpm"
+        name_ru = (f"двигатель с линейной характеристикой: {stall:.6g} Н·м при пуске, 0 "
+                   f"при {motor.linear.idle_rpm:g} об/мин")
     elif motor.table is not None:
         speeds = [row[0] * RPM for row in motor.table]
         torques = [si(row[1], "moment", ("table", n, 1)) for n, row in
                    enumerate(motor.table)]
         torque = tabulated(speeds, torques, ratio=i)
         name = f"motor table of {len(speeds)} points"
+        name_ru = f"характеристика двигателя таблицей из {len(speeds)} точек"
     else:
         value = si(motor.constant, "moment", ("constant",))
         torque = constant(value, ratio=i)
         name = f"constant moment {value:.6g} N*m"
+        name_ru = f"постоянный момент {value:.6g} Н·м"
     rotor = si(motor.inertia, "inertia", ("inertia",))
     if problems:
         raise ModelError(problems)
     return MotorCurve(torque, name + gear, i * i * rotor,
-                      math.inf if motor.off_at is None else float(motor.off_at))
+                      math.inf if motor.off_at is None else float(motor.off_at),
+                      name_ru + gear_ru)

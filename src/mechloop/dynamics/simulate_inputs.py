@@ -30,7 +30,6 @@ Units SI (rad, rad/s, rad/s², s, N·m, J).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -438,25 +437,6 @@ def _refusals(model: Model, settings: Simulate, dynamics: DynamicResults,
                                 "the motion of several inputs (it needs the reactions at "
                                 "every state)", "set friction: false to run without it"))
     return problems
-
-
-def summary_lines(sim: InputsSimulation) -> list[str]:
-    """The summary of a run, line by line: the motors, the events, the work done."""
-    names = ", ".join(f"{sim.machine.inputs[i]}: {m.name}" for i, m in
-                      sorted(sim.motors.items())) or "none"
-    lines = [f"{len(sim.inputs)} inputs (arguments {', '.join(map(str, sim.inputs))}), "
-             f"Lagrange's equations solved at every state ({sim.evaluations} kinematic "
-             f"solves, {sim.steps} steps); motors: {names}"]
-    for event in sim.events[1:]:
-        angles = ", ".join(f"{math.degrees(v):.6g}" for v in event.q)
-        speeds = ", ".join(f"{v / RPM:.6g}" for v in event.omega)
-        lines.append(f"{event.kind}{' (' + event.detail + ')' if event.detail else ''}: "
-                     f"t = {event.t:.6g} s, angles {angles} deg, speeds {speeds} rpm")
-    lines.append(f"energy: motors {sim.motor_work[-1]:.6g} J, loads {sim.load_work[-1]:.6g} "
-                 f"J, kinetic energy {sim.kinetic_energy[0]:.6g} → "
-                 f"{sim.kinetic_energy[-1]:.6g} J; balance residual at most "
-                 f"{np.abs(sim.balance).max():.2g} J")
-    return lines
 
 
 def one_input(settings: Simulate, argument: int) -> Simulate:

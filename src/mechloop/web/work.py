@@ -232,7 +232,8 @@ def simulation(model: Any, options: dict[str, Any], send: Send) -> dict[str, Any
     from mechloop.dynamics.analysis import solve_dynamics
     from mechloop.dynamics.motors import RPM
     from mechloop.dynamics.simulate import simulate
-    from mechloop.dynamics.simulate_inputs import InputsSimulation, summary_lines
+    from mechloop.dynamics.simulate_inputs import InputsSimulation
+    from mechloop.dynamics.simulate_summary import summary_lines
     from mechloop.errors import ModelError, Problem
     from mechloop.views.motion import plot_simulation
 
@@ -247,7 +248,7 @@ def simulation(model: Any, options: dict[str, Any], send: Send) -> dict[str, Any
     sim = simulate(model, settings, dynamics=solve_dynamics(model), progress=send)
     summary: dict[str, Any] = {"rows": int(sim.time.size), "end": float(sim.time[-1])}
     if isinstance(sim, InputsSimulation):
-        summary["lines"] = list(summary_lines(sim))
+        summary["lines"] = [text for text, _ in summary_lines(sim, options["lang"])]
     else:
         summary["cycles"] = int(sim.cycle_time.size)
         summary["steady"] = None if sim.steady_time is None else float(sim.steady_time)
