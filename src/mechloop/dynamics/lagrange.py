@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.dynamics.loads import _moving, build_loads
+from mechloop.dynamics.loads import build_loads, follows_motion
 from mechloop.dynamics.mechanism import Mechanism
 from mechloop.dynamics.points import Placement
 from mechloop.dynamics.state_kinematics import StateKinematics
@@ -74,7 +74,7 @@ class LagrangeMachine:
         #: rates or t): only then are the loads built on a second placement of the true
         #: state repeated over the analog columns
         self.reads_rates = bool(model.dampers) or any(
-            load.when is not None or _moving(load.value)
+            load.when is not None or follows_motion(load.value)
             for load in (*model.forces, *model.moments))
 
     def terms(self, t: Array | float, q: Array, qdot: Array) -> Terms:

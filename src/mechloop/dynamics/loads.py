@@ -184,7 +184,7 @@ def _expression_values(value: ExpressionValue, state: Placement, kind: Kind, uni
     return out
 
 
-def _moving(value) -> bool:
+def follows_motion(value) -> bool:
     """Whether a load's value follows the rates or the time (an expression that reads
     ``t`` or a rate)."""
     return isinstance(value, ExpressionValue) and any(
@@ -218,7 +218,7 @@ def _dependent(model: Model, load, value, kind: str, unit: str, direction, gate,
     unit direction, ones for a moment); ``gate`` is the load's ``when:`` (positions where it
     acts, its dependence) or None."""
     depends = None
-    if _moving(load.value):
+    if follows_motion(load.value):
         if gate is not None:
             problems.append(Problem((*path, "when"), "an expression of the rates or time "
                                     "cannot also have when:", "write the condition into "
