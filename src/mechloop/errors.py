@@ -66,15 +66,18 @@ class ModelError(ValueError, MechloopError):
         super().__init__(self.problems, file)
 
     def __str__(self) -> str:
-        n = len(self.problems)
-        lines = [p.render(self.file) for p in self.problems]
-        if n == 1:
-            return lines[0]
-        head = f"{n} problems in {self.file or 'the model'}:"
-        return "\n".join([head, *("- " + line.replace("\n", "\n  ") for line in lines)])
+        return problem_list([p.render(self.file) for p in self.problems],
+                            f"{len(self.problems)} problems in {self.file or 'the model'}:")
 
     def __reduce__(self):
         return (type(self), (self.problems, self.file))
+
+
+def problem_list(lines: list[str], head: str) -> str:
+    """Rendered problems as printed: one alone, or ``head`` and each as an indented item."""
+    if len(lines) == 1:
+        return lines[0]
+    return "\n".join([head, *("- " + line.replace("\n", "\n  ") for line in lines)])
 
 
 class ModelFileError(ModelError):

@@ -8,7 +8,7 @@ English rather than being lost).
 
 from __future__ import annotations
 
-from mechloop.errors import HintedError, MechloopError, ModelError, Problem
+from mechloop.errors import HintedError, MechloopError, ModelError, Problem, problem_list
 
 #: The printer's label before an error, per language.
 LABELS = {"en": "error:", "ru": "ошибка:"}
@@ -57,8 +57,5 @@ def _problem(problem: Problem, file: str | None) -> str:
 
 def _model_error(exc: ModelError) -> str:
     lines = [_problem(p, exc.file) for p in exc.problems]
-    if len(lines) == 1:
-        return lines[0]
-    head = f"проблем в файле {exc.file}: {len(lines)}" if exc.file else \
-        f"проблем в модели: {len(lines)}"
-    return "\n".join([head, *("- " + line.replace("\n", "\n  ") for line in lines)])
+    return problem_list(lines, f"проблем в файле {exc.file}: {len(lines)}" if exc.file
+                        else f"проблем в модели: {len(lines)}")
