@@ -17,7 +17,7 @@ RUSSIAN_BOX: list[tuple[str, str]] = [
     (r"\blinks:", "связи:"), (r"\(arg (\d+)", r"(аргумент \1"),
     (r"\bconstants only\b", "только константы"), (r"\bcoupled\b", "связанный"),
     (r"\bfunction\b", "функция"), (r"\bPl(\d)", r"Пл\1"), (r"\bdeg\b", "°"),
-    (r"\bno contours\b", "контуров нет"),
+    (r"\bno contours\b", "контуров нет"), (r"\bPr(\d)", r"Пр\1"),
 ]
 
 
