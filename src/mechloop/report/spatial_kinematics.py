@@ -27,8 +27,8 @@ Array = NDArray[np.float64]
 
 #: Angle figures at most (as the planar report's section 4).
 MAX_ANGLE_FIGURES = 6
-#: Cosines are clipped to this before arccos (rounding beyond ±1).
-_UNIT = 1.0
+#: An angle that varies less than this over the positions (rad) is constant.
+ANGLE_TOL = 1e-9
 
 
 def _values(results: Results, name: str) -> Array:
@@ -103,12 +103,12 @@ def _directions(results: Results, number: int, tails: dict[int, Array],
 
 def space_angle(results: Results, a: int, b: int) -> Array:
     """The angle (rad, 0…π) between vectors ``a`` and ``b`` in space over the
-    positions: ``arccos(u_a · u_b)``."""
+    positions: ``atan2(|u_a × u_b|, u_a · u_b)``."""
     tails, heads = vector_ends(results)
     ua, ub = (_directions(results, n, tails, heads) for n in (a, b))
-    cosine = np.einsum("ip,ip->p", ua, ub)
-    with np.errstate(invalid="ignore"):
-        return np.arccos(np.clip(cosine, -_UNIT, _UNIT))
+    # atan2 of the sine and the cosine: accurate near 0 and π, where arccos is not
+    sine = np.linalg.norm(np.cross(ua, ub, axis=0), axis=0)
+    return np.arctan2(sine, np.einsum("ip,ip->p", ua, ub))
 
 
 def angle_pairs3(results: Results) -> list[tuple[int, int]]:
@@ -119,7 +119,7 @@ def angle_pairs3(results: Results) -> list[tuple[int, int]]:
         for a, b in itertools.pairwise(abs(v) for v in contour.vectors):
             angle = space_angle(results, a, b)
             finite = angle[np.isfinite(angle)]
-            if finite.size and np.ptp(finite) > 1e-9:
+            if finite.size and np.ptp(finite) > ANGLE_TOL:
                 pairs.append((a, b))
     return pairs
 
