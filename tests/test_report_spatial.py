@@ -173,6 +173,10 @@ def test_the_conclusion_and_formula_in_the_spatial_terms(documents, solved):
         assert formula.count("n=3") == 2
         assert ("Pr10" if lang == "en" else "Пр10") in formula
         assert ("(2 solution(s))" if lang == "en" else "(решений: 2)") in formula
+        figure = next(b for b in _section(document, "s_formula", lang).blocks
+                      if isinstance(b, FigureItem)).draw()
+        boxes = [t.get_text() for ax in figure.axes for t in ax.texts if "m=" in t.get_text()]
+        assert len(boxes) == 2 and all("\nn=3, m=" in box for box in boxes), boxes
 
 
 def test_each_language_holds_only_its_words(documents, solved):
@@ -199,3 +203,6 @@ def test_a_kinematic_spatial_model_gets_the_kinematic_report(name):
     assert titles[3:] == [w["s_angles3"], w["s_dependence"], w["s_trajectories"],
                           w["s_conclusion"]]
     assert latin_words(" ".join(texts(document)), [n for n in model_names(model) if n]) == []
+    dependence = next(b for b in document.sections[4].blocks if isinstance(b, FigureItem))
+    kind = mechloop.solve(model).argument_kinds[1]
+    assert dependence.caption.endswith("s1" if kind == "length" else "φ1"), kind

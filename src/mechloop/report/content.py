@@ -140,7 +140,10 @@ def dependence_section(results: Results, source, name: str, display: Display, la
     from mechloop.views import curves
 
     against = f"arg{min(results.arguments)}" if results.arguments else "position"
-    shown_against = f"φ{against[3:]}" if against.startswith("arg") else w["h_position"]
+    shown_against = w["h_position"]
+    if against.startswith("arg"):  # φ1 of an angle, s1 of a length (a cylinder)
+        k = int(against[3:])
+        shown_against = f"{'s' if results.argument_kinds[k] == 'length' else 'φ'}{k}"
     return Section(w["s_dependence"], [_figure(
         w["f_dependence"].format(names=f"{symbol(name)}, d{symbol(name)}",
                                  against=shown_against),
