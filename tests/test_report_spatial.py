@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import yaml
 from helpers.latin import latin_words, model_names
 
 import mechloop
@@ -206,3 +207,54 @@ def test_a_kinematic_spatial_model_gets_the_kinematic_report(name):
     dependence = next(b for b in document.sections[4].blocks if isinstance(b, FigureItem))
     kind = mechloop.solve(model).argument_kinds[1]
     assert dependence.caption.endswith("s1" if kind == "length" else "φ1"), kind
+
+
+def _rssr(**changes) -> mechloop.Model:
+    data = yaml.safe_load(DYNAMIC.read_text())
+    data.update(changes)
+    return mechloop.Model.from_dict(data)
+
+
+def test_the_tables_take_the_display_units(solved):
+    """With ``display: {length: mm, energy: mJ, digits: 4}`` the coordinates are in mm
+    and the works in mJ, to 4 digits."""
+    _, dyn = solved
+    model = _rssr(display={"length": "mm", "energy": "mJ", "digits": 4})
+    document = build_document(model, lang="en")
+    tables = _tables(document)
+    joints = tables[spatial_words("en")["t_joints"].format(position=24)]
+    assert joints.header[1] == "tail x, mm"
+    head = Placement3(dyn.kinematics).head(2).p[:, 24] * 1000
+    # 4 digits of the column's largest value (116.7 mm): to 0.1 mm
+    assert [numbers(c)[0] for c in joints.rows[1][4:]] == pytest.approx(head, abs=0.05)
+    works = tables[spatial_words("en")["t_works"]]
+    assert works.header[1] == "A+, mJ"
+    assert numbers(dict((r[0], r[1]) for r in works.rows)["M_out"])[0] == pytest.approx(
+        2000 * np.ptp(dyn.kinematics.value("b3")), rel=2e-3)
+
+
+def test_a_chain_break_is_said_and_the_cycle_works_left_out():
+    """The crank made longer than the RSSR can take (r1 = 75 mm): the chain breaks at
+    positions 48-58; the report says where and why in each language, gives no works
+    over the cycle, and leaves those rows of the appendix empty."""
+    data = yaml.safe_load(DYNAMIC.read_text())
+    data["vectors"][1]["r"] = 75
+    model = mechloop.Model.from_dict(data)
+    broken = np.flatnonzero(mechloop.solve(model).broken)
+    assert broken.tolist() == list(range(48, 59))
+    for lang in ("en", "ru"):
+        w = spatial_words(lang)
+        warned: list[str] = []
+        document = build_document(model, lang=lang, warn=warned.append)
+        warnings = [b.text for s in document.sections for b in walk(s.blocks)
+                    if isinstance(b, Paragraph) and b.kind == "warning"]
+        assert len(warnings) == 2 and "48-58" in warnings[0] and "48-58" in warnings[1]
+        assert warned and warned[0] == warnings[0]
+        assert ("Пр10" in warnings[0]) == (lang == "ru")
+        assert "контур не собирается" not in warnings[0]  # the reason itself, translated
+        tables = _tables(document)
+        assert w["t_works"] not in tables and w["t_energy"] not in tables
+        appendix = next(t for c, t in tables.items() if c.startswith(w["t_appendix"][:8]))
+        assert all(appendix.rows[p][3] == "—" for p in broken)
+        if lang == "ru":
+            assert latin_words(" ".join(texts(document)), model_names(model)) == []
