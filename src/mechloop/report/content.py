@@ -10,7 +10,8 @@ machine motion), 8 reactions in the kinematic pairs (with a hodograph per joint)
 centres of mass; then the course project's gear and cam sheets when given, the
 conclusion, and an appendix with the values at every position.  Every number is in the
 model's display units and precision (its ``display:`` section); every text in the
-report's language.
+report's language.  A model with spatial contours gets the same document with its 3-D
+parts (:mod:`mechloop.report.spatial`).
 """
 
 from __future__ import annotations
