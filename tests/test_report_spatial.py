@@ -258,3 +258,23 @@ def test_a_chain_break_is_said_and_the_cycle_works_left_out():
         assert all(appendix.rows[p][3] == "—" for p in broken)
         if lang == "ru":
             assert latin_words(" ".join(texts(document)), model_names(model)) == []
+
+
+def test_a_planar_model_written_as_spatial_concludes_as_the_planar_report():
+    """The four-bar's loop written as a spatial contour (β2 its third unknown, all β 0),
+    its coupler-point loop planar beside it: the conclusion's numbers are the planar
+    report's, and the vectors of the planar contour have no β in the vectors' table."""
+    data = yaml.safe_load((ROOT / "examples" / "four_bar.yaml").read_text())
+    planar = mechloop.Model.from_dict(data)
+    data["contours"][0]["spatial"] = True
+    data["vectors"][2]["b"] = "function"
+    mixed = mechloop.Model.from_dict(data)
+    for lang in ("en", "ru"):
+        expected = build_document(planar, lang=lang, output="a3")
+        document = build_document(mixed, lang=lang, output="a3")
+        got = [numbers(b.text) for b in _section(document, "s_conclusion", lang).blocks]
+        want = [numbers(b.text) for b in _section(expected, "s_conclusion", lang).blocks]
+        assert got == want and len(got) == 4, lang
+        table = _tables(document)[spatial_words(lang)["t_vectors3"]]
+        no_beta = [r[0] for r in table.rows if r[6:] == ("—", "—")]
+        assert no_beta == ["5", "6", "7"], lang
