@@ -40,10 +40,12 @@ def _dynamic(path: Path) -> bool:
 
 DYNAMIC = [p for p in sorted((ROOT / "examples").glob("*.yaml")) if _dynamic(p)]
 COURSE = sorted((ROOT / "examples" / "course").glob("[0-9][0-9]_*.yaml"))
+#: One model with spatial contours and bodies (issue 17: 3-D schemes, virtual power).
+SPATIAL = [ROOT / "examples" / "spatial" / "rssr_dynamics.yaml"]
 #: A number with a decimal point (not a dotted run: a date, a section number, a name).
 DECIMAL_POINT = re.compile(r"(?<![\w.])\d+\.\d+(?![\w.])")
 CASES = [pytest.param(p, lang, id=f"{p.parent.name}/{p.stem}-{lang}")
-         for p in [*DYNAMIC, *COURSE] for lang in ("en", "ru")]
+         for p in [*DYNAMIC, *COURSE, *SPATIAL] for lang in ("en", "ru")]
 
 
 def test_the_cases_cover_the_bundled_dynamics_examples_and_the_course():

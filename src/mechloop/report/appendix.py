@@ -25,7 +25,7 @@ from mechloop.report.values import symbol
 COLUMNS = 8
 
 _HEADER = re.compile(r"^(.*) \[([^\[\]]+)\]$")
-_ANGLE = re.compile(r"d{0,2}a\d+")
+_ANGLE = re.compile(r"d{0,2}[ab]\d+")
 #: Column names that are words, as symbols.
 _NAMES = {"time": "t", "omega": "ω", "epsilon": "ε", "omega_fw": "ω_fw",
           "epsilon_fw": "ε_fw", "friction_loss": "P_fr"}

@@ -29,7 +29,7 @@ def kinematic_lines(results: Results, name: str, shown: Shown, w: dict[str, str]
     """The output parameter's range and its derivatives' extremes, then the breaks."""
     unit, unit1, unit2 = parameter_units(results, name)
     value = np.asarray(results.value(name), dtype=float)
-    value = np.degrees(value) if name[0] == "a" else value
+    value = np.degrees(value) if name[0] in "ab" else value  # α, or a spatial β
     out = []
     span = finite_span(value)
     if span is not None:

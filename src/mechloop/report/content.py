@@ -10,7 +10,8 @@ machine motion), 8 reactions in the kinematic pairs (with a hodograph per joint)
 centres of mass; then the course project's gear and cam sheets when given, the
 conclusion, and an appendix with the values at every position.  Every number is in the
 model's display units and precision (its ``display:`` section); every text in the
-report's language.
+report's language.  A model with spatial contours gets the same document with its 3-D
+parts (:mod:`mechloop.report.spatial`).
 """
 
 from __future__ import annotations
@@ -121,17 +122,42 @@ def _figure(caption: str, draw: Callable, lang: str) -> FigureItem:
     return FigureItem(caption, lambda: translate(draw(), lang))
 
 
+def increment_section(results: Results, source, name: str, display: Display, lang: str,
+                      w: dict[str, str]) -> Section:
+    """Section 3: the increment of the output parameter from the first position where
+    the chain assembles, and its 1st and 2nd derivatives."""
+    from mechloop.views import curves
+
+    good = np.flatnonzero(~results.broken)
+    reference = int(good[0]) if good.size else 0
+    return Section(w["s_increment"].format(name=symbol(name)), [_figure(
+        w["f_increment"].format(name=symbol(name), position=reference),
+        lambda: curves.plot_increment(source, name, reference, display=display), lang)])
+
+
+def dependence_section(results: Results, source, name: str, display: Display, lang: str,
+                       w: dict[str, str]) -> Section:
+    """Section 5: the output parameter and its 1st derivative against argument 1."""
+    from mechloop.views import curves
+
+    against = f"arg{min(results.arguments)}" if results.arguments else "position"
+    shown_against = w["h_position"]
+    if against.startswith("arg"):  # φ1 of an angle, s1 of a length (a cylinder)
+        k = int(against[3:])
+        shown_against = f"{'s' if results.argument_kinds[k] == 'length' else 'φ'}{k}"
+    return Section(w["s_dependence"], [_figure(
+        w["f_dependence"].format(names=f"{symbol(name)}, d{symbol(name)}",
+                                 against=shown_against),
+        lambda: curves.plot_parameters(source, [name, f"d{name}"], against=against,
+                                       display=display), lang)])
+
+
 def _kinematic_sections(results: Results, source, name: str, display: Display,
                         lang: str, w: dict[str, str]) -> list[Section]:
     """Sections 3, 4 and 5: the output parameter, the angle differences, the
     dependence of the driven link on the driving one."""
     from mechloop.views import curves
 
-    good = np.flatnonzero(~results.broken)
-    reference = int(good[0]) if good.size else 0
-    increment = Section(w["s_increment"].format(name=symbol(name)), [_figure(
-        w["f_increment"].format(name=symbol(name), position=reference),
-        lambda: curves.plot_increment(source, name, reference, display=display), lang)])
     angles = Section(w["s_angles"], [
         _figure(w["f_angle"].format(a=a, b=b),
                 lambda a=a, b=b: curves.plot_angle_between(source, a, b, display=display),
@@ -139,14 +165,8 @@ def _kinematic_sections(results: Results, source, name: str, display: Display,
         for a, b in angle_pairs(results)[:MAX_ANGLE_FIGURES]])
     if not angles.blocks:
         angles.blocks.append(Paragraph(w["no_angles"]))
-    against = f"arg{min(results.arguments)}" if results.arguments else "position"
-    shown_against = f"φ{against[3:]}" if against.startswith("arg") else w["h_position"]
-    dependence = Section(w["s_dependence"], [_figure(
-        w["f_dependence"].format(names=f"{symbol(name)}, d{symbol(name)}",
-                                 against=shown_against),
-        lambda: curves.plot_parameters(source, [name, f"d{name}"], against=against,
-                                       display=display), lang)])
-    return [increment, angles, dependence]
+    return [increment_section(results, source, name, display, lang, w), angles,
+            dependence_section(results, source, name, display, lang, w)]
 
 
 def _dynamic_sections(dyn: DynamicResults, model: Model, results: Results, position: int,
@@ -209,10 +229,11 @@ def build_document(model: Model, *, lang: str, output: str | None = None,
     before the conclusion; ``warn(text)`` is told, in ``lang``, when the chain breaks,
     so that the report's cycle figures are not valid (the report says so too).
     """
-    if any(c.spatial for c in model.contours):  # issue 17: no 3-D views, no report yet
-        raise HintedError("the report of a model with spatial contours is not built yet "
-                          "(its vector schemes and trajectories are in 3-D)",
-                          "write the table with mechloop solve, or plot its parameters")
+    if any(c.spatial for c in model.contours):  # issue 17: 3-D schemes, virtual power
+        from mechloop.report.spatial import spatial_document
+
+        return spatial_document(model, lang=lang, output=output, position=position,
+                                title=title, project=project, warn=warn)
     w = words(lang)
     dyn = solve_dynamics(model) if model.bodies else None
     results = dyn.kinematics if dyn is not None else solve(model)

@@ -5,6 +5,7 @@ model" panel)."""
 
 from __future__ import annotations
 
+from mechloop.model.formula import spatial_branches
 from mechloop.model.schema import Model
 from mechloop.model.structure import MODULE_SOLUTIONS
 from mechloop.report.document import FigureItem, Paragraph, Section
@@ -26,7 +27,9 @@ WORDS = {
            "solutions": "({count} solution(s))",
            "block": "(coupled block {n}: contours {list} solved together for {unknowns} "
                     "by Newton's method)",
-           "constants": "constants: {list}", "needs": "needs contours: {list}"},
+           "constants": "constants: {list}", "needs": "needs contours: {list}",
+           "spatial_head": "spatial model: {contours} contour(s), {vectors} vectors, "
+                           "positions 0…{n}"},
     "ru": {"head": "плоская модель: контуров {contours}, векторов {vectors}, положения "
                    "0…{n}",
            "order": "порядок решения: {order}", "contour": "контур {n}",
@@ -37,7 +40,9 @@ WORDS = {
            "block": "(связанный блок {n}: контуры {list} решаются совместно "
                     "относительно {unknowns} методом Ньютона)",
            "constants": "константы: {list}",
-           "needs": "нужны контуры: {list}"},
+           "needs": "нужны контуры: {list}",
+           "spatial_head": "пространственная модель: контуров {contours}, векторов "
+                           "{vectors}, положения 0…{n}"},
 }
 
 
@@ -46,7 +51,9 @@ def formula_text(model: Model, results: Results, shown: Shown, w: dict[str, str]
     line each (the lines of a 'formula' paragraph)."""
     f = WORDS[shown.lang]
     structure = results.structure
-    lines = [f["head"].format(contours=len(model.contours), vectors=len(model.vectors),
+    spatial = set(getattr(results, "spatial_vectors", ()))  # issue 17: β of these
+    head = "spatial_head" if any(c.spatial for c in model.contours) else "head"
+    lines = [f[head].format(contours=len(model.contours), vectors=len(model.vectors),
                               n=model.positions),
              f["order"].format(order=" → ".join(f["contour"].format(n=n)
                                                 for n in structure.order))]
@@ -57,18 +64,24 @@ def formula_text(model: Model, results: Results, shown: Shown, w: dict[str, str]
                      + ": " + f["vectors"].format(list=", ".join(map(str, info.vectors))))
         links = [f"{symbol(p)} = {role_text(model, p, shown, w).split(': ', 1)[-1]}"
                  for p in info.links]
-        text = f"n=2, m={len(info.vectors)}"
+        dimension = 3 if model.contours[info.number - 1].spatial else 2
+        text = f"n={dimension}, m={len(info.vectors)}"
         if links:
             text += "; " + f["links"].format(list=", ".join(links))
         lines.append("  " + f["structure"].format(text=text))
         inputs = [f"{symbol(p)} ({role_text(model, p, shown, w)})" for p in info.arguments]
         inputs += [symbol(p) for p in info.links]
-        variant = info.variant if MODULE_SOLUTIONS.get(info.module, 2) > 1 else 1
+        spatial_module = model.contours[info.number - 1].spatial and info.module != "coupled"
+        count = (spatial_branches(info.module) if spatial_module
+                 else MODULE_SOLUTIONS.get(info.module, 2))
+        variant = info.variant if count > 1 else 1
         lhs = ", ".join(inputs) if inputs else f["constants_only"]
         formula = (f"{lhs} → {', '.join(symbol(p) for p in info.functions)} · "
                    f"{module_text(info.module, shown.lang)}, V={variant}")
         block = next((b for b in structure.blocks if info.number in b.contours), None)
-        if info.module in MODULE_SOLUTIONS or block is None:
+        if spatial_module:
+            tail = f["solutions"].format(count=count)
+        elif info.module in MODULE_SOLUTIONS or block is None:
             tail = f["solutions"].format(count=MODULE_SOLUTIONS.get(info.module, 1))
         else:
             tail = f["block"].format(n=block.number,
@@ -77,7 +90,8 @@ def formula_text(model: Model, results: Results, shown: Shown, w: dict[str, str]
         lines.append("  " + f["parametric"].format(text=formula))
         lines.append("    " + tail)
         known = [f"{symbol(p)} = {_constant(results, p, shown)}"
-                 for n in info.vectors for p in (f"r{n}", f"a{n}")
+                 for n in info.vectors
+                 for p in (f"r{n}", f"a{n}", *((f"b{n}",) if n in spatial else ()))
                  if p not in info.functions and p not in info.arguments
                  and p not in info.links]
         for k in range(0, len(known), CONSTANTS_PER_LINE):
@@ -95,8 +109,9 @@ def _constant(results: Results, name: str, shown: Shown) -> str:
     from mechloop.report.values import span_text
 
     values = np.asarray(results.value(name), dtype=float)
-    return span_text(shown, np.degrees(values) if name[0] == "a" else values,
-                     "deg" if name[0] == "a" else "m")
+    angle = name[0] in "ab"
+    return span_text(shown, np.degrees(values) if angle else values,
+                     "deg" if angle else "m")
 
 
 def formula_section(model: Model, results: Results, shown: Shown, w: dict[str, str]

@@ -17,8 +17,11 @@ RUSSIAN_BOX: list[tuple[str, str]] = [
     (r"\blinks:", "связи:"), (r"\(arg (\d+)", r"(аргумент \1"),
     (r"\bconstants only\b", "только константы"), (r"\bcoupled\b", "связанный"),
     (r"\bfunction\b", "функция"), (r"\bPl(\d)", r"Пл\1"), (r"\bdeg\b", "°"),
-    (r"\bno contours\b", "контуров нет"),
+    (r"\bno contours\b", "контуров нет"), (r"\bPr(\d)", r"Пр\1"),
 ]
+
+#: The first line of a contour's box: its number.
+_CONTOUR = re.compile(r"contour (\d+)\b")
 
 
 def structure_figure(model: Model, lang: str) -> Figure:
@@ -28,6 +31,11 @@ def structure_figure(model: Model, lang: str) -> Figure:
     figure = formula.plot_structure(model)
     if figure._suptitle is not None:
         figure._suptitle.set_text("")
+    for ax in figure.axes:  # a spatial contour's structure formula: n = 3 (issue 17)
+        for text in ax.texts:
+            found = _CONTOUR.match(text.get_text())
+            if found and model.contours[int(found.group(1)) - 1].spatial:
+                text.set_text(text.get_text().replace("\nn=2, ", "\nn=3, ", 1))
     if lang == "ru":
         for ax in figure.axes:
             for text in ax.texts:

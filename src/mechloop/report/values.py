@@ -32,10 +32,11 @@ def peak(values: NDArray[np.float64]) -> tuple[int, float] | None:
 
 
 def symbol(name: str) -> str:
-    """'a2' -> 'α2', 'r3' -> 'r3', 'da2' -> 'dα2'."""
+    """'a2' -> 'α2', 'r3' -> 'r3', 'da2' -> 'dα2', 'b3' -> 'β3' (a spatial vector's
+    rotation about Y)."""
     head = name.rstrip("0123456789")
-    if head.endswith("a"):
-        return head[:-1] + "α" + name[len(head):]
+    if head in ("a", "da", "dda", "b", "db", "ddb"):
+        return head[:-1] + ("α" if head[-1] == "a" else "β") + name[len(head):]
     return name
 
 
@@ -58,10 +59,13 @@ def span_text(shown: Shown, values: NDArray[np.float64], unit: str, *,
 
 
 def module_text(module: str, lang: str) -> str:
-    """A module's name: 'Pl3' ('Пл3' in Russian), 'coupled' ('связанный')."""
+    """A module's name: 'Pl3' ('Пл3' in Russian), 'Pr10' ('Пр10'), 'coupled'
+    ('связанный')."""
     if lang != "ru":
         return module
-    return "связанный" if module == "coupled" else module.replace("Pl", "Пл")
+    if module == "coupled":
+        return "связанный"
+    return module.replace("Pl", "Пл").replace("Pr", "Пр")
 
 
 def point_text(point: TailPoint | HeadPoint | VectorPoint, model, shown: Shown,

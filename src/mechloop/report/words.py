@@ -8,6 +8,8 @@ words but symbols, unit names and the user's own names.
 
 from __future__ import annotations
 
+import re
+
 from mechloop.views.figure import ViewError
 
 TEXT: dict[str, dict[str, str]] = {
@@ -345,10 +347,19 @@ def words(lang: str) -> dict[str, str]:
     return TEXT[lang]
 
 
+#: A spatial module's break (:func:`mechloop.spatial.solve._break_reason`, issue 17).
+_SPATIAL_REASON = re.compile(r"module Pr(\d+) has no real solution on the chosen variant "
+                             r"\(the vectors cannot close the loop in space\)")
+
+
 def reason(text: str, lang: str) -> str:
     """A chain break's reason in ``lang``."""
     if lang != "ru":
         return text
+    spatial = _SPATIAL_REASON.fullmatch(text)
+    if spatial:
+        return (f"у модуля Пр{spatial.group(1)} нет вещественного решения для выбранного "
+                "варианта (векторы не замыкают контур в пространстве)")
     return RUSSIAN_REASONS.get(text, "контур не собирается")
 
 

@@ -282,12 +282,6 @@ ENTRIES: list[Entry] = [
     (r"no points to trace", "нет точек для траекторий"),
     (r"give at least one point, e\.g\. (?P<ex>.+)",
      "задайте хотя бы одну точку, например {ex}"),
-    # spatial contours (report/content.py)
-    (r"the report of a model with spatial contours is not built yet \(its vector schemes "
-     r"and trajectories are in 3-D\)", "отчёт для модели с пространственными контурами пока "
-     "не реализован (её векторные схемы и траектории пространственные)"),
-    (r"write the table with mechloop solve, or plot its parameters",
-     "запишите таблицу командой 'mechloop solve' или постройте графики её параметров"),
     # the 3-D plans of spatial models (views/spatial_plan.py, spatial_animation.py)
     (r"a 3-D plan needs the results of a model with spatial contours",
      "для объёмного плана нужны результаты модели с пространственными контурами"),
