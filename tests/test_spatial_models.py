@@ -109,16 +109,55 @@ def _rssr_data(a, L, c, r4, al4, be4, positions=72, variant=1) -> dict:
             "contours": [{"vectors": [1, 2, -3, -4], "spatial": True, "variant": variant}]}
 
 
-def _rssr_roots(a, L, c, d, theta):
-    """Both roots φ of the RSSR input–output equation
-    ``2c (x_D − a cos θ) cos φ + 2c z_D sin φ = L² − c² − |D − A|²``."""
+def _rssr_coefficients(a, L, c, d, theta):
+    """The RSSR's input–output equation in the published form
+    ``A(θ) cos ψ + B(θ) sin ψ = C(θ)`` — J. M. McCarthy and G. S. Soh, *Geometric Design
+    of Linkages*, 2nd ed., Springer (Interdisciplinary Applied Mathematics 11), 2011,
+    Appendix A "Solving Constraint Equations", eq. (A.1), p. 411: "The analysis of planar
+    and spherical 4R linkages, the spatial RSSR, and Bennett's linkage all yield a
+    constraint equation between the output angle ψ and the input angle θ that takes the
+    form (A.1)" (https://doi.org/10.1007/978-1-4419-7892-9; the appendix's text is at
+    https://docslib.org/doc/4904453/solving-constraint-equations).
+
+    The coefficients A, B, C of this RSSR (the book's own RSSR coefficients are in its
+    spatial-linkage chapter, which the search tool did not find; nor a published numeric
+    worked example) are derived here from the closure, independently of the solver:
+
+    * the input crank turns about Z through O: its ball joint is at
+      ``P = a (cos θ, sin θ, 0)``;
+    * the output crank turns about the line through ``D`` parallel to Y: its ball joint
+      is at ``Q = D + c (cos ψ, 0, sin ψ)`` (ψ is the crank's rotation β3 about Y);
+    * the S–S coupler keeps its length: ``|Q − P|² = L²``, i.e.
+      ``|D − P|² + 2c (D − P)·(cos ψ, 0, sin ψ) + c² = L²``;
+    * so ``A(θ) = 2c (x_D − a cos θ)``, ``B(θ) = 2c z_D`` (the Y component of ``D − P``
+      is normal to the crank's circle), ``C(θ) = L² − c² − |D − P|²``.
+    """
     dx, dy, dz = d[0] - a * np.cos(theta), d[1] - a * np.sin(theta), d[2]
-    p, q = 2 * c * dx, 2 * c * dz * np.ones_like(theta)
-    rhs = L**2 - c**2 - (dx**2 + dy**2 + dz**2)
+    return 2 * c * dx, 2 * c * dz * np.ones_like(theta), L**2 - c**2 - (dx**2 + dy**2
+                                                                        + dz**2)
+
+
+def _rssr_roots(a, L, c, d, theta):
+    """Both roots ψ of (A.1) by the book's trigonometric solution, eq. (A.5),
+    ``ψ = arctan(B/A) ± arccos(C / √(A² + B²))`` (``arctan2`` for the quadrant), and
+    where they exist: ``A² + B² − C² ≥ 0`` (p. 412)."""
+    p, q, rhs = _rssr_coefficients(a, L, c, d, theta)
     h = np.hypot(p, q)
     with np.errstate(divide="ignore", invalid="ignore"):
         mid, half = np.arctan2(q, p), np.arccos(np.clip(rhs / h, -1, 1))
     return np.stack([mid + half, mid - half]), np.abs(rhs) <= h
+
+
+def _rssr_half_angle_roots(a, L, c, d, theta):
+    """Both roots ψ of (A.1) by the book's second route, the tan-half-angle technique:
+    with ``y = tan(ψ/2)``, eq. (A.7) ``(A + C) y² − 2B y − (A − C) = 0``, each position's
+    quadratic solved by :func:`numpy.roots` (an eigenvalue solve, no arccos), then
+    ``ψ = 2 arctan y``.  Shape ``(2, P)``; assumes every position assembles."""
+    p, q, rhs = _rssr_coefficients(a, L, c, d, theta)
+    roots = np.stack([np.roots([p[i] + rhs[i], -2 * q[i], -(p[i] - rhs[i])])
+                      for i in range(theta.size)], axis=1)
+    assert np.abs(roots.imag).max() == 0
+    return 2 * np.arctan(roots.real)
 
 
 def _frame(r4, al4, be4):
@@ -146,6 +185,9 @@ def test_rssr_example_follows_its_input_output_equation_over_the_cycle():
         assert exists.all()
         miss = _wrapped_distance(res.values["b3"][None], roots).min(axis=0)
         assert miss.max() < 1e-12
+        # the same by the tan-half-angle route (A.7): the roots of a quadratic per position
+        halves = _rssr_half_angle_roots(a, L, c, d, theta)
+        assert _wrapped_distance(res.values["b3"][None], halves).min(axis=0).max() < 1e-12
         # the coupler keeps its length: |D + c(cos φ, 0, sin φ) − A| = L, as closed
         phi = res.values["b3"]
         b = d[:, None] + c * np.stack([np.cos(phi), 0 * phi, np.sin(phi)])
