@@ -173,3 +173,25 @@ def test_the_rates_match_finite_differences_and_the_chain_rule():
         assert np.abs(got_rate - rate).max() <= 1e-6 * np.abs(rate).max(), name
         assert np.abs(got_accel - accel).max() <= 2e-6 * np.abs(accel).max(), name
     assert np.abs(res.rates["r9"]).max() < 1e-12  # the axle's distance from O is fixed
+
+
+def test_a_coupled_blocks_directions_follow_their_contours_convention():
+    """The cylinder's direction (α3 and β3 both unknowns of the coupled block) comes out
+    in the spatial contour's parameter-range convention — convention 1: β in (−90°, 90°],
+    convention 2: α in [−90°, 90°] — continuous along the positions, and the same
+    direction either way (Newton alone may end on either angle pair of a direction)."""
+    units = []
+    for convention in (1, 2):
+        data = _data()
+        data["contours"][0]["convention"] = convention
+        res = _solve(data)
+        assert not res.broken.any()
+        a, b = res.values["a3"], res.values["b3"]
+        if convention == 1:
+            assert np.all(np.abs(b) <= math.pi / 2 + 1e-12)
+            assert 0 <= a[0] < 2 * math.pi
+        else:
+            assert np.all(np.abs(a) <= math.pi / 2 + 1e-12)
+        assert np.abs(np.diff(a)).max() < 0.1 and np.abs(np.diff(b)).max() < 0.1
+        units.append(np.stack([np.cos(a) * np.cos(b), np.sin(a), np.cos(a) * np.sin(b)]))
+    np.testing.assert_allclose(units[0], units[1], rtol=0, atol=1e-12)

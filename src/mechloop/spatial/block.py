@@ -397,6 +397,37 @@ def block_rates(plan: Plan, values: list[Array], rates: list[Array], accels: lis
     return rate, accel, J
 
 
+def _directions_in_convention(model, block, index: dict[str, int], U: Array,
+                              good: NDArray[np.bool_]) -> set[int]:
+    """Move the vectors of ``block`` whose α and β are both its unknowns into their
+    contour's parameter-range convention (Newton may end on either of the two angle
+    pairs of one direction, ``(α, β)`` and ``(π − α, β + π)``), then make them continuous
+    along the positions as a single contour's are (:func:`mechloop.spatial.solve.
+    _continuous`: α of convention 1 from [0, 2π)).  ``U`` (…, m) is changed in place;
+    returns the columns moved."""
+    from mechloop.spatial.solve import _continuous
+    from mechloop.spatial.vector import in_convention
+
+    moved: set[int] = set()
+    if not good.any():
+        return moved
+    for number in block.contours:
+        contour = model.contours[number - 1]
+        if not contour.spatial:
+            continue
+        for n in contour.vectors:
+            i, j = index.get(f"a{abs(n)}"), index.get(f"b{abs(n)}")
+            if i is None or j is None or i in moved:
+                continue
+            with np.errstate(invalid="ignore"):
+                a, b = in_convention(U[..., i], U[..., j], convention=contour.convention)
+            U[..., i] = _continuous(np.where(good, a, np.nan), good,
+                                    base_turn=contour.convention == 1)
+            U[..., j] = _continuous(np.where(good, b, np.nan), good, base_turn=False)
+            moved |= {i, j}
+    return moved
+
+
 def solve_coupled(model, structure, block, params, singular_sin: float
                   ) -> tuple[NDArray[np.int8], Array]:
     """Solve the coupled ``block`` (:class:`~mechloop.model.structure.BlockInfo`) of a
@@ -467,8 +498,9 @@ def solve_coupled(model, structure, block, params, singular_sin: float
     U = U.reshape(*shape, m)
     status = status.reshape(shape)
     good = status == OK
+    paired = _directions_in_convention(model, block, index, U, good)
     for i, name in enumerate(block.unknowns):
-        if name[0] == "a" and good.any():
+        if name[0] == "a" and good.any() and i not in paired:
             U[..., i] = unwrap_angles(U[..., i], good)
     # the terms' values, rates and accelerations (the known parts) and link scales
     values, rates, accels, scales = [], [], [], []
