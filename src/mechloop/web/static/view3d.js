@@ -134,7 +134,9 @@
         // 180° of elevation (kept within ±90°: Y stays up)
         const elev = drag.elev + (event.clientY - drag.y) / this.height * 180;
         const azim = drag.azim - (event.clientX - drag.x) / this.width * 180;
-        this.setView(Math.max(-90, Math.min(90, elev)), normAngle(azim));
+        this.elev = Math.max(-90, Math.min(90, elev));  // the scale kept while it turns
+        this.azim = normAngle(azim);
+        this.draw();
       });
       const end = () => { drag = null; };
       this.svg.addEventListener("pointerup", end);
@@ -155,7 +157,7 @@
       this.data = data;
       this.position = Math.min(this.position, (data.broken || [0]).length - 1);
       this.measure();
-      if (first) this.reset(); else this.draw();
+      if (first) this.reset(); else this.setView(this.elev, this.azim);
     }
 
     // The centre and radius of everything drawn (every position): the scale does not
@@ -167,6 +169,7 @@
       });
       for (const v of this.data.vectors) { add(v.tail); add(v.head); }
       if (this.data.ground) add(this.data.ground);
+      this.points = points;
       const low = [0, 1, 2].map((j) => Math.min(...points.map((p) => p[j])));
       const high = [0, 1, 2].map((j) => Math.max(...points.map((p) => p[j])));
       this.center = points.length ? low.map((l, j) => (l + high[j]) / 2) : [0, 0, 0];
@@ -181,10 +184,34 @@
       this.setView(finite(d.elev) ? d.elev : 20, finite(d.azim) ? d.azim : 30);
     }
 
+    // Look from ``elev``, ``azim`` (deg), every position filling the view at zoom 1.
     setView(elev, azim) {
       this.elev = elev;
       this.azim = azim;
+      this.fit();
       this.draw();
+    }
+
+    // The scale at zoom 1 (pixels per model unit): every point of every position inside
+    // the view at the current angles.
+    fit() {
+      const { u, v } = viewAxes(this.elev, this.azim);
+      const low = [Infinity, Infinity], high = [-Infinity, -Infinity];
+      for (const p of this.points || []) {
+        const d = p.map((c, j) => c - this.center[j]);
+        const seen = [dot(u, d), dot(v, d)];
+        for (const j of [0, 1]) {
+          low[j] = Math.min(low[j], seen[j]);
+          high[j] = Math.max(high[j], seen[j]);
+        }
+      }
+      const known = low[0] <= high[0];
+      // the middle of what is seen, drawn in the middle of the view
+      this.middle = known ? [0, 1].map((j) => (low[j] + high[j]) / 2) : [0, 0];
+      const right = known ? (high[0] - low[0]) / 2 : 0, up = known ? (high[1] - low[1]) / 2 : 0;
+      const w = (this.width / 2 - 14) / (right || this.radius);
+      const h = ((this.height - 24) / 2 - 22) / (up || this.radius);
+      this.fitted = Math.min(w, h, 4 * Math.min(this.width, this.height) / this.radius);
     }
 
     zoomBy(factor) {
@@ -198,7 +225,8 @@
 
     // Pixels per model unit.
     scale() {
-      return this.zoom * 0.56 * Math.min(this.width, this.height - 24) / this.radius;
+      if (!this.fitted) this.fit();
+      return this.zoom * this.fitted;
     }
 
     // ``p`` = [x, y, z] (model units): {right, up, depth} on the screen's axes (model units,
@@ -206,9 +234,9 @@
     project(p) {
       const { u, v, w } = viewAxes(this.elev, this.azim);
       const right = dot(u, p), up = dot(v, p), depth = dot(w, p);
-      const s = this.scale(), c = this.center;
-      const px = this.width / 2 + s * (right - dot(u, c));
-      const py = (this.height + 24) / 2 - s * (up - dot(v, c));
+      const s = this.scale(), c = this.center, m = this.middle;
+      const px = this.width / 2 + s * (right - dot(u, c) - m[0]);
+      const py = (this.height + 24) / 2 - s * (up - dot(v, c) - m[1]);
       return { right, up, depth, px, py };
     }
 
