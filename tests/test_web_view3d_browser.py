@@ -21,6 +21,7 @@ from mpl_toolkits.mplot3d import proj3d
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
 from test_web_browser import (  # noqa: F401  (the fixtures: one server/browser here)
     EXAMPLES,
     SHOTS,
@@ -95,7 +96,7 @@ def view_file(tmp_path_factory) -> tuple[Path, object]:
 
 
 def test_the_drawn_joints_are_matplotlibs_projection_and_a_drag_turns_the_view(
-        browser, view_file):
+        browser, view_file):  # noqa: F811
     path, results = view_file
     browser.get(path.as_uri())
     view = _wait(browser, lambda d: d.execute_script(
@@ -152,7 +153,8 @@ def test_the_drawn_joints_are_matplotlibs_projection_and_a_drag_turns_the_view(
     assert browser.find_elements(By.ID, "v3-vector-2") and not note.is_displayed()
 
 
-def test_the_page_draws_a_spatial_model_in_3d_and_the_slider_moves_it(browser, server):
+def test_the_page_draws_a_spatial_model_in_3d_and_the_slider_moves_it(
+        browser, server):  # noqa: F811
     base, folder = server
     shutil.copy(SPATIAL / "rssr.yaml", folder / "rssr.yaml")
     _open(browser, base + "/?path=rssr.yaml&lang=en")
@@ -182,9 +184,13 @@ def test_the_page_draws_a_spatial_model_in_3d_and_the_slider_moves_it(browser, s
     assert view["azim"] > 30 and view["elev"] < 20
     browser.execute_script("mechloopView3d.setView(24, 38)")
     browser.find_element(By.ID, "overlay").click()
+    Select(browser.find_element(By.ID, "trace-add")).select_by_value("head:1")
+    trace = browser.find_element(By.CSS_SELECTOR, "path.trajectory3d[data-key='head:1']")
+    assert trace.get_attribute("data-points") == "73"  # every position: none breaks
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-3d.png"))
     browser.find_element(By.ID, "lang-ru").click()
     assert "возвышение 24°" in browser.find_element(By.CSS_SELECTOR, ".view3d-angles").text
     browser.find_element(By.ID, "lang-en").click()
     browser.find_element(By.ID, "overlay").click()
+    browser.find_element(By.CSS_SELECTOR, "#traces button[data-key='head:1']").click()
