@@ -150,7 +150,7 @@ def page(data: dict[str, Any], *, title: str, lang: str = "en") -> str:
 <div class="controls">
   <label><input id="overlay" type="checkbox"> <span data-i18n="overlay">all positions</span></label>
   <label><input id="traces" type="checkbox">
-    <span data-i18n="view3dTraces">trajectories</span></label>
+    <span id="traces-label">trajectories</span></label>
 </div>
 <p id="break-note" class="break" hidden></p>
 <script>{_script(_static("i18n.js"))}</script>

@@ -77,22 +77,21 @@
       root.classList.add("view3d");
       const bar = document.createElement("div");
       bar.className = "view3d-bar";
-      const button = (key, action, title) => {
+      const button = (key, action) => {
         const b = document.createElement("button");
         b.type = "button";
         b.dataset.view3d = key;
-        if (title) b.dataset.i18nTitle = title;
         b.addEventListener("click", action);
         bar.appendChild(b);
         return b;
       };
       this.buttons = {
-        reset: button("reset", () => this.reset(), "view3dResetTitle"),
-        xy: button("xy", () => this.setView(...PROJECTIONS.xy), "view3dXyTitle"),
-        zy: button("zy", () => this.setView(...PROJECTIONS.zy), "view3dZyTitle"),
-        xz: button("xz", () => this.setView(...PROJECTIONS.xz), "view3dXzTitle"),
-        zoomIn: button("zoom-in", () => this.zoomBy(1.25), "view3dZoomInTitle"),
-        zoomOut: button("zoom-out", () => this.zoomBy(0.8), "view3dZoomOutTitle"),
+        reset: button("reset", () => this.reset()),
+        xy: button("xy", () => this.setView(...PROJECTIONS.xy)),
+        zy: button("zy", () => this.setView(...PROJECTIONS.zy)),
+        xz: button("xz", () => this.setView(...PROJECTIONS.xz)),
+        zoomIn: button("zoom-in", () => this.zoomBy(1.25)),
+        zoomOut: button("zoom-out", () => this.zoomBy(0.8)),
       };
       this.buttons.xy.textContent = "XY";
       this.buttons.zy.textContent = "ZY";
@@ -115,8 +114,14 @@
 
     // The strings in the page's language (again when it changes).
     words() {
-      this.buttons.reset.textContent = t("view3dReset");
-      for (const b of Object.values(this.buttons)) b.title = t(b.dataset.i18nTitle);
+      const b = this.buttons;
+      b.reset.textContent = t("view3dReset");
+      b.reset.title = t("view3dResetTitle");
+      b.xy.title = t("view3dXyTitle");
+      b.zy.title = t("view3dZyTitle");
+      b.xz.title = t("view3dXzTitle");
+      b.zoomIn.title = t("view3dZoomInTitle");
+      b.zoomOut.title = t("view3dZoomOutTitle");
       this.help.textContent = t("view3dHelp");
       this.draw();
     }
@@ -406,6 +411,7 @@
     let timer = null;
     const traces = () => ($("traces").checked ? data.traced : []);
     const show = (k) => {
+      $("traces-label").textContent = t("view3dTraces");
       slider.value = k;
       view.show(k, $("overlay").checked, traces());
       let label = t("position", { k, n });
