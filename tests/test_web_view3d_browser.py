@@ -144,6 +144,16 @@ def test_the_drawn_joints_are_matplotlibs_projection_and_a_drag_turns_the_view(
     after = np.array(browser.execute_script(READ_JOINTS))
     assert np.abs(after[:, :2] - before[:, :2]).max() > 5  # pixels moved
     assert svg.get_attribute("data-azim") == str(view["azim"])
+    # two fingers moved apart zoom in by the ratio of their distances
+    zoom = browser.execute_script("""
+        const svg = document.querySelector('#view svg'), box = svg.getBoundingClientRect();
+        const at = (type, id, x) => svg.dispatchEvent(new PointerEvent(type, {pointerId: id,
+          clientX: box.left + x, clientY: box.top + 200, pointerType: 'touch',
+          bubbles: true, isPrimary: id === 1}));
+        at('pointerdown', 1, 300); at('pointerdown', 2, 400); at('pointermove', 2, 500);
+        at('pointerup', 2, 500); at('pointerup', 1, 300);
+        return mechloopView3d.view().zoom;""")
+    assert zoom == pytest.approx(2.0)
     # a chain break: said, and the vectors of the broken loop not drawn
     browser.execute_script("mechloopPlayer.show(arguments[0])", int(broken[0]))
     note = browser.find_element(By.ID, "break-note")

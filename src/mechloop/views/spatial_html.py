@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 
 from mechloop.messages import message_language
 from mechloop.output.atomic import atomic_write_text
-from mechloop.solve.results import Results, compress_positions
+from mechloop.solve.results import Results
 from mechloop.views.animation import Progress, frame_interval
 from mechloop.views.figure import ViewError
 from mechloop.views.spatial_animation import same_pose
@@ -206,9 +206,8 @@ def write_spatial_html(results: Results, path: str | os.PathLike[str], *,
     data["frames"] = chosen
     data["interval"] = frame_interval(scene.results, chosen, fps)
     data["traced"] = [f"head:{n}" for n in moving_heads(scene)]
-    name = results.model.name or "mechanism"
-    title = f"{name} (3-D, positions {compress_positions(chosen)})"
-    atomic_write_text(target, page(data, title=title, lang=lang))
+    atomic_write_text(target, page(data, title=results.model.name or "mechloop",
+                                   lang=lang))
     if progress is not None:
         progress(len(chosen), len(chosen))
     return target

@@ -128,13 +128,29 @@
 
     listen() {
       let drag = null;
+      const touches = new Map();  // the pointers down: two of them pinch (zoom)
+      const spread = () => {
+        const [a, b] = [...touches.values()];
+        return Math.hypot(a.x - b.x, a.y - b.y) || 1;
+      };
       this.svg.addEventListener("pointerdown", (event) => {
-        drag = { x: event.clientX, y: event.clientY, elev: this.elev, azim: this.azim };
-        this.svg.setPointerCapture(event.pointerId);
+        touches.set(event.pointerId, { x: event.clientX, y: event.clientY });
+        drag = touches.size === 1
+          ? { x: event.clientX, y: event.clientY, elev: this.elev, azim: this.azim }
+          : { pinch: spread(), zoom: this.zoom };
+        try {
+          this.svg.setPointerCapture(event.pointerId);
+        } catch (error) {  // a pointer the browser does not track (a synthetic event)
+        }
         event.preventDefault();
       });
       this.svg.addEventListener("pointermove", (event) => {
-        if (!drag) return;
+        if (!drag || !touches.has(event.pointerId)) return;
+        touches.set(event.pointerId, { x: event.clientX, y: event.clientY });
+        if (drag.pinch) {
+          if (touches.size === 2) this.zoomBy(drag.zoom * spread() / drag.pinch / this.zoom);
+          return;
+        }
         // as matplotlib's mouse rotation: across the width 180° of azimuth, up the height
         // 180° of elevation (kept within ±90°: Y stays up)
         const elev = drag.elev + (event.clientY - drag.y) / this.height * 180;
@@ -143,7 +159,10 @@
         this.azim = normAngle(azim);
         this.draw();
       });
-      const end = () => { drag = null; };
+      const end = (event) => {
+        touches.delete(event.pointerId);
+        drag = null;
+      };
       this.svg.addEventListener("pointerup", end);
       this.svg.addEventListener("pointercancel", end);
       this.svg.addEventListener("wheel", (event) => {
@@ -175,8 +194,13 @@
       for (const v of this.data.vectors) { add(v.tail); add(v.head); }
       if (this.data.ground) add(this.data.ground);
       this.points = points;
-      const low = [0, 1, 2].map((j) => Math.min(...points.map((p) => p[j])));
-      const high = [0, 1, 2].map((j) => Math.max(...points.map((p) => p[j])));
+      const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+      for (const p of points) {
+        for (const j of [0, 1, 2]) {
+          low[j] = Math.min(low[j], p[j]);
+          high[j] = Math.max(high[j], p[j]);
+        }
+      }
       this.center = points.length ? low.map((l, j) => (l + high[j]) / 2) : [0, 0, 0];
       let radius = 0;
       for (const p of points) radius = Math.max(radius, Math.hypot(...p.map((c, j) => c - this.center[j])));
