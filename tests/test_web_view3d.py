@@ -1,4 +1,4 @@
-"""The web application's API for a spatial model (issue 17): ``/api/solve`` gives the 3-D
+"""The web application's API for a spatial model (issue 17): the solve answer is the 3-D
 view's data — every vector's tail and head in x, y, z equal to the placed scene of the
 solver's results, null where the chain breaks, marked ``spatial`` — and the results table;
 an animation job in HTML is the interactive 3-D view (``mechloop.views.spatial_html``), a
@@ -11,6 +11,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+import orjson
 import pytest
 import yaml
 from PIL import Image
@@ -19,6 +20,7 @@ from starlette.testclient import TestClient
 import mechloop
 from mechloop.views.spatial_plan import spatial_scene
 from mechloop.web.app import create_app
+from mechloop.web.payload import solution
 
 SPATIAL = Path(__file__).resolve().parents[1] / "examples" / "spatial"
 
@@ -37,13 +39,13 @@ def client(tmp_path_factory):
         yield client
 
 
-def test_the_solve_answer_of_a_spatial_model_is_the_3d_views_data(client, tmp_path):
-    text = rssr_text(80.0, 24)  # the short coupler: the chain breaks over part of the turn
-    answer = client.post("/api/solve", json={"text": text, "path": "rssr.yaml"})
-    assert answer.status_code == 200, answer.text
-    solved = answer.json()
-    (tmp_path / "m.yaml").write_text(text, encoding="utf-8")
-    results = mechloop.solve(mechloop.load_model(tmp_path / "m.yaml"))
+def test_the_solve_answer_of_a_spatial_model_is_the_3d_views_data(tmp_path):
+    # the answer of /api/solve (its route is driven in test_web_view3d_browser.py), made
+    # here in this process: the short coupler breaks the chain over part of the turn
+    (tmp_path / "m.yaml").write_text(rssr_text(80.0, 24), encoding="utf-8")
+    model = mechloop.load_model(tmp_path / "m.yaml")
+    solved = orjson.loads(orjson.dumps(solution(model), option=orjson.OPT_SERIALIZE_NUMPY))
+    results = mechloop.solve(model)
     scene = spatial_scene(results)
     diagram = solved["diagram"]
     assert diagram["spatial"] is True and diagram["unit"] == "mm"
