@@ -1,6 +1,7 @@
 """KDAM's "cinema" mode for a model with spatial contours: the 3-D plan (and its
-projections) played over the cycle, saved as GIF, MP4 or HTML by the writers of
-:mod:`mechloop.views.animation` (the same frame time, loop and file rules).
+projections) played over the cycle, saved as GIF or MP4 by the writers of
+:mod:`mechloop.views.animation` (the same frame time, loop and file rules); an HTML file
+is the interactive 3-D view of :mod:`mechloop.views.spatial_html`.
 
 Each frame is the whole figure drawn again (a 3-D view re-sorts its artists by depth, so
 the planar animation's fixed background is not reused): one scale over every position,
@@ -64,10 +65,12 @@ def animate_spatial(results: Results, path: str | os.PathLike[str], *,
     """Save the 3-D plan of a spatial model at every position as an animation; returns
     the path.
 
-    ``path``: ``.gif``, ``.mp4`` or ``.html``.  ``positions``: the frames (default every
-    position; the last is left out when it closes the cycle).  ``fps``, ``progress`` as
-    in :func:`mechloop.views.animation.animate`; ``views``, ``elev``, ``azim``,
-    ``numbers``, ``grid`` and ``length_unit`` as in
+    ``path``: ``.gif``, ``.mp4`` or ``.html`` (the interactive 3-D view of
+    :func:`mechloop.views.spatial_html.write_spatial_html`: every position, ``views``,
+    ``dpi``, ``width``, ``numbers`` and ``grid`` do not apply).  ``positions``: the
+    frames (default every position; the last is left out when it closes the cycle).
+    ``fps``, ``progress`` as in :func:`mechloop.views.animation.animate`; ``views``,
+    ``elev``, ``azim``, ``numbers``, ``grid`` and ``length_unit`` as in
     :func:`~mechloop.views.spatial_plan.plot_spatial_plan`; ``dpi`` and ``width``
     (inches) set the frame size.
     """
@@ -76,6 +79,11 @@ def animate_spatial(results: Results, path: str | os.PathLike[str], *,
     if suffix not in ANIMATION_SUFFIXES:
         raise ViewError(f"{target}: cannot save an animation as '{suffix or 'no suffix'}'",
                         "use a file name ending in .gif, .mp4 or .html")
+    if suffix in (".html", ".htm"):  # the interactive 3-D view, not frames of pixels
+        from mechloop.views.spatial_html import write_spatial_html
+
+        return write_spatial_html(results, target, fps=fps, positions=positions, elev=elev,
+                                  azim=azim, length_unit=length_unit, progress=progress)
     scene = spatial_scene(results, length_unit=length_unit)
     chosen = (list(range(scene.count)) if positions is None
               else [check_position(scene, p) for p in positions])

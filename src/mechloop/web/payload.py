@@ -104,6 +104,10 @@ def precision(model: Model) -> dict[str, int]:
 
 def solution(model: Model, solved: Results | DynamicResults | None = None) -> dict[str, Any]:
     """Everything the page shows of a solved model (see the module docstring)."""
+    if any(c.spatial for c in model.contours):  # issue 17: the 3-D view's data
+        from mechloop.web.view3d import spatial_solution
+
+        return spatial_solution(model)
     solved = solve_model(model) if solved is None else solved
     kin = solved.kinematics if isinstance(solved, DynamicResults) else solved
     scene = plan_scene(solved)

@@ -192,7 +192,10 @@ def animation(model: Any, options: dict[str, Any], send: Send) -> dict[str, Any]
     from mechloop.solve.kinematics import solve
     from mechloop.views.animation import animate
 
-    results = solve_dynamics(model) if model.bodies else solve(model)
+    spatial = any(c.spatial for c in model.contours)
+    results = solve_dynamics(model) if model.bodies and not spatial else solve(model)
+    if spatial:  # issue 17: the 3-D plan (the HTML file: the interactive 3-D view)
+        from mechloop.views.spatial_animation import animate_spatial as animate
     frames = [0]
 
     def progress(done: int, total: int) -> None:

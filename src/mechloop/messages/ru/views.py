@@ -320,4 +320,7 @@ ENTRIES: list[Entry] = [
     # the language of mechloop info / structure (cli.py)
     (r"no text language (?P<v>'[^']*'|\S+)", "нет языка текста {v}"),
     (r"use --lang en or --lang ru", "укажите --lang en или --lang ru"),
+    # the interactive 3-D view's HTML file (views/spatial_html.py)
+    (r"no page language (?P<v>'[^']*'|\S+)", "нет языка страницы {v}"),
+    (r"use en or ru", "укажите en или ru"),
 ]

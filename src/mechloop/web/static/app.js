@@ -280,8 +280,16 @@ function render() {
   const solution = state.solution;
   if (!solution) return;
   const k = state.position;
-  drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
-  if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
+  const spatial = Boolean(solution.diagram.spatial);  // issue 17: the 3-D view
+  $("diagram").style.display = spatial ? "none" : "";
+  $("view3d").hidden = !spatial;
+  document.querySelector(".drag-help").hidden = spatial;
+  if (spatial) {
+    drawSpatial(solution, k);
+  } else {
+    drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
+    if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
+  }
   drawPlot($("plot"), solution,
     plotted().map((name) => solution.columns.find((c) => c.name === name)), k,
     plotZoom.rangeFor(solution.count - 1, k));
@@ -309,6 +317,22 @@ function render() {
     value.className = "number";
     row.insertCell().textContent = unitText(c.unit);
   }
+}
+
+// A spatial model's mechanism: the rotatable 3-D view of view3d.js, at the slider's
+// position (its angles and zoom kept while the model is edited).
+function drawSpatial(solution, k) {
+  if (!state.view3d) {
+    state.view3d = new View3d($("view3d"), { width: 560, height: 380 });
+    window.mechloopView3d = state.view3d;
+  }
+  const view = state.view3d;
+  if (view.lang !== LANG) {
+    view.lang = LANG;
+    view.words();
+  }
+  if (view.data !== solution.diagram) view.setData(solution.diagram);
+  view.show(k, $("overlay").checked, state.traces);
 }
 
 function setPosition(k) {

@@ -113,6 +113,12 @@ const WORDS = {
     formUnitAngularAcceleration: "angular acceleration", formUnitMass: "mass",
     formUnitInertia: "moment of inertia", formUnitForce: "force", formUnitMoment: "moment",
     formUnitEnergy: "energy, work", formUnitPower: "power",
+    view3dReset: "3-D", view3dResetTitle: "back to the first viewing angles",
+    view3dXyTitle: "front view XY", view3dZyTitle: "side view ZY", view3dXzTitle: "top view XZ",
+    view3dZoomInTitle: "zoom in", view3dZoomOutTitle: "zoom out",
+    view3dAngles: "elevation {elev}°, azimuth {azim}°",
+    view3dHelp: "drag to turn the view, the wheel zooms, a double click goes back to the first angles",
+    view3dTraces: "trajectories",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -232,6 +238,12 @@ const WORDS = {
     formUnitAngularAcceleration: "угловое ускорение", formUnitMass: "масса",
     formUnitInertia: "момент инерции", formUnitForce: "сила", formUnitMoment: "момент",
     formUnitEnergy: "энергия, работа", formUnitPower: "мощность",
+    view3dReset: "3D", view3dResetTitle: "вернуть начальные углы обзора",
+    view3dXyTitle: "вид спереди XY", view3dZyTitle: "вид сбоку ZY", view3dXzTitle: "вид сверху XZ",
+    view3dZoomInTitle: "увеличить", view3dZoomOutTitle: "уменьшить",
+    view3dAngles: "возвышение {elev}°, азимут {azim}°",
+    view3dHelp: "перетаскивание поворачивает вид, колесо меняет масштаб, двойной щелчок возвращает начальные углы",
+    view3dTraces: "траектории",
   },
 };
 
