@@ -565,9 +565,9 @@ ENTRIES: list[Entry] = [
      "задайте нормаль плоскости [nx, ny, nz] или два её угла a и b"),
     (r"the plane's normal is zero", "нормаль плоскости нулевая"),
     (r"'(?P<k>[^']*)' is not solved for a model with spatial contours yet \(their "
-     r"dynamics reads bodies, forces, moments and gravity only\)", "'{k}' пока не решается "
-     "для модели с пространственными контурами (их динамика учитывает только звенья, "
-     "силы, моменты и силу тяжести)"),
+     r"dynamics reads bodies, joints, forces, moments and gravity only\)", "'{k}' пока не "
+     "решается для модели с пространственными контурами (их динамика учитывает только "
+     "звенья, кинематические пары, силы, моменты и силу тяжести)"),
     (r"remove '(?P<k>[^']*)', or solve the planar part as a separate model",
      "удалите '{k}' или решите плоскую часть как отдельную модель"),
     (r"contour (?P<c>\S+) is planar; a convention of parameter ranges applies to a spatial "
