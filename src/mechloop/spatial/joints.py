@@ -235,7 +235,8 @@ def build_drives3(model: Model, bodies: dict[int, list[int]], joints: list[Joint
         tail = {b for b, e in ends.items() if e == "tail"} or ({0} if not ends else set())
         head = {b for b, e in ends.items() if e == "head"}
         for j in joints:
-            if j.kind in ("prismatic", "cylindrical") and j.axis == v:
+            if j.kind in ("prismatic", "cylindrical") and isinstance(j.axis, int) \
+                    and j.axis == v:
                 for have, other in ((tail, head), (head, tail)):
                     if not other and have & set(j.bodies):
                         other.update(set(j.bodies) - have)

@@ -413,7 +413,9 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
                  + float((s[:, 0] * np.linalg.norm(x[good], axis=1)).max(initial=0.0)))
         residual = residual / scale if scale > 0 else residual
         if rank < r_count:
-            idle = _idle(sa, sb, residual, good & ~singular, rank, rows, refs,
+            loads = -newton_euler_rhs((), forces, moments, place, rows, refs, static=True)
+            loads.reshape(n, -1, 6)[:, :, 3:] /= size  # scaled as the system
+            idle = _idle(sa, sb, loads, residual, good & ~singular, rank, rows, refs,
                          joints, {j.name: place.point(j.at).p for j in joints}, generic,
                          size)
         x[singular] = np.nan
@@ -422,11 +424,13 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
                     residual)
 
 
-def _idle(sa: Array, sb: Array, residual: Array, solved: NDArray[np.bool_], rank: int,
-          rows, refs, joints, points, generic: int, size: float) -> tuple[str, ...]:
+def _idle(sa: Array, sb: Array, loads: Array, residual: Array, solved: NDArray[np.bool_],
+          rank: int, rows, refs, joints, points, generic: int, size: float
+          ) -> tuple[str, ...]:
     """Descriptions of the idle motions (the left null space of the scaled system ``sa``
     at position ``generic``); a problem when the loads and inertia do not balance in
-    them (``residual`` above :data:`RESIDUAL_RTOL` at a position ``solved``)."""
+    them (``residual`` above :data:`RESIDUAL_RTOL` at a position ``solved``), with the
+    share of the loads (``loads``: their part of ``−sb``) and of the inertia."""
     unscale = np.ones(sa.shape[1])
     unscale.reshape(-1, 6)[:, 3:] = 1.0 / size  # a left null vector → (v_O, ω) per body
 
@@ -446,14 +450,21 @@ def _idle(sa: Array, sb: Array, residual: Array, solved: NDArray[np.bool_], rank
         y = u @ (u.T @ sb[p])  # the part of the equations nothing balances at p
         y /= np.linalg.norm(y)
         body, what, on, unit = _describe_idle(unscale * y, rows, refs, joints, points, p)
-        load = abs(float(y @ sb[p])) * unit
+        sign = 1.0 if y @ sb[p] >= 0 else -1.0
+        by_loads = -sign * float(y @ loads[p]) * unit
+        by_inertia = sign * float(y @ sb[p]) * unit - by_loads
+        total = abs(by_loads) + abs(by_inertia)
+        by_loads, by_inertia = (0.0 if abs(x) <= 1e-9 * total else x
+                                for x in (by_loads, by_inertia))
         turn = what.startswith("turn")
+        unit_name = "N·m" if turn else "N"
         raise ModelError([Problem(
             ("bodies", body), f"body {body} can {what} at position {p}"
             + (f" (the line of joints {on})" if on else "") + " with no joint holding it, "
-            f"but its inertia and loads do not balance in that motion: a "
-            f"{'moment' if turn else 'force'} of {load:.3g} {'N·m' if turn else 'N'} there "
-            f"({positions.size} position(s) so)",
+            f"but its inertia and loads do not balance in that motion: "
+            f"{'a moment' if turn else 'a force'} of {by_inertia:.3g} {unit_name} from its "
+            f"inertia and {by_loads:.3g} {unit_name} from the loads (at {positions.size} "
+            "position(s))",
             f"make body {body}'s inertia tensor symmetric about that axis with no load "
             "turning it about the axis (inertia: rod, or [J_axis, J, J]), or hold the "
             "motion with a joint (revolute instead of spherical)")])
