@@ -292,9 +292,9 @@ def test_a_slider_crank_written_as_spatial_gives_the_planar_reactions(driven_sli
 @pytest.mark.parametrize(("change", "where", "fix"), [
     ({"A": {"bodies": [1, 2], "at": {"head": 1}, "axis": Z},
       "B": {"bodies": [2, 3], "at": {"head": 2}, "axis": Z}}, ("joints", "A", "type"),
-     "spherical instead of revolute at A; cylindrical instead of revolute at B"),
+     "A revolute → spherical, B revolute → cylindrical"),
     ({"B": {"bodies": [2, 3], "at": {"head": 2}, "axis": Z}}, ("joints", "B", "type"),
-     "cylindrical instead of revolute at B"),
+     "B revolute → cylindrical"),
 ])
 def test_statically_indeterminate_joints_are_refused_with_the_joints_to_change(
         change, where, fix):
@@ -323,7 +323,7 @@ def test_the_coupler_between_two_balls_of_a_planar_four_bar_keeps_its_idle_spin(
     with pytest.raises(ModelError) as info:
         solve_spatial_dynamics(model_from_data(data))
     problem = info.value.problems[0]
-    assert problem.path == ("bodies", 2) and "joints A, B" in problem.message
+    assert problem.path == ("bodies", 2) and "through joints A, B" in problem.message
     assert "inertia" in problem.hint
 
 

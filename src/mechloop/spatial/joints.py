@@ -179,10 +179,9 @@ def build_joints3(model: Model, moving: set[int], problems: list[Problem]) -> li
         if at is None and isinstance(axis, int) and kind in ("cylindrical", "prismatic"):
             at = TailPoint(tail=axis)
         elif at is None:
-            what = {"spherical": "its centre", "revolute": "a point of its axis"}.get(
-                kind, "a point of its axis (about which its moment is given)")
-            problems.append(Problem(path, f"a {kind} joint needs 'at': {what}",
-                                    "give the point, e.g. at: {head: 1}"))
+            problems.append(Problem(path, f"a {kind} joint needs 'at': " + (
+                "its centre" if kind == "spherical" else "a point of its axis"),
+                "give the point, e.g. at: {head: 1}"))
         elif point_vector(at) not in vectors:
             problems.append(Problem((*path, "at"), f"vector {point_vector(at)} does not "
                                     "exist", f"use one of {sorted(vectors)}"))
@@ -246,7 +245,8 @@ def build_drives3(model: Model, bodies: dict[int, list[int]], joints: list[Joint
                                     f"{sorted(tail) or 'none'}, head: "
                                     f"{sorted(head) or 'none'})",
                                     f"list vector {v} in the body at its head with ends: "
-                                    f"{{{v}: head}}, or name the prismatic joint along it"))
+                                    f"{{{v}: head}}, or name the joint along it "
+                                    "(prismatic, cylindrical)"))
             continue
         drives.append(Drive3(k, "r", v, (next(iter(tail)), next(iter(head)))))
     return drives

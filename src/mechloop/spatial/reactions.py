@@ -230,12 +230,13 @@ def _misfit(owner, part: str, k: int, columns: list[_Column]) -> Problem:
     """The problem of a joint (or drive) whose reaction would do work on the motion."""
     if part == "drive":
         col = next(c for c in columns if c.owner == owner and c.role == "drive")
-        load = "force" if col.part == "force" else "moment"
-        return Problem(("arguments", owner), f"the balancing {load} of argument {owner} "
-                       f"does not move with the argument (its power is not that of the "
-                       "argument's rate)", "drive a body that turns about the argument's "
-                       "axis (an elevation a: about (-sin b, 0, cos b); a rotation b: about "
-                       "Y), or the bodies at the two ends of a driven length")
+        return Problem(("arguments", owner), (
+            f"the balancing force of argument {owner}" if col.part == "force" else
+            f"the balancing moment of argument {owner}") + " does not move with the "
+            "argument (its power is not that of the argument's rate)",
+            "drive a body that turns about the argument's axis (an elevation a: about "
+            "(-sin b, 0, cos b); a rotation b: about Y), or the bodies at the two ends of a "
+            "driven length")
     kind = next(c for c in columns if c.owner == owner).bodies
     first, second = kind
     path = ("joints", owner)
@@ -323,8 +324,8 @@ def _indeterminate(a: Array, columns: list[_Column], joints: dict[str, Joint3],
                f"{', '.join(involved)} can hold reactions that balance each other "
                "whatever the loads)")
     if changes:
-        hint = "make it determinate: " + "; ".join(f"{new} instead of {old} at {name}"
-                                                   for name, old, new in changes)
+        types = ", ".join(f"{name} {old} → {new}" for name, old, new in changes)
+        hint = f"make it determinate with these joint types: {types}"
         path = ("joints", changes[0][0], "type")
     else:
         hint = (f"free some of the components of joints {', '.join(involved)} (a "
@@ -335,25 +336,23 @@ def _indeterminate(a: Array, columns: list[_Column], joints: dict[str, Joint3],
 
 def _describe_idle(t: Array, rows: dict[int, int], refs: dict[int, Array],
                    joints: list[Joint3], points: dict[str, Array], p: int
-                   ) -> tuple[int, str, str, float]:
+                   ) -> tuple[int, bool, str, str, float]:
     """An idle motion ``t`` (``(6B,)``, every body's ``(v_O, ω)`` at position ``p``): the
-    body that moves most, what it does, the joints on its axis, and the scale that makes
-    its ω (or v) unit."""
+    body that moves most, whether it turns (else it slides), the direction of its axis,
+    the joints on that axis, and the scale that makes its ω (or v) unit."""
     size = {b: float(np.linalg.norm(t[6 * i:6 * i + 6])) for b, i in rows.items()}
     body = max(size, key=size.get)
     i = 6 * rows[body]
     v, w = t[i:i + 3], t[i + 3:i + 6]
     turn = float(np.linalg.norm(w))
     if turn <= 1e-9 * max(size[body], 1e-300):
-        unit = v / np.linalg.norm(v)
-        return (body, "slide along ({:.3g}, {:.3g}, {:.3g})".format(*unit), "",
-                1.0 / float(np.linalg.norm(v)))
+        speed = float(np.linalg.norm(v))
+        return body, False, "{:.3g}, {:.3g}, {:.3g}".format(*(v / speed)), "", 1.0 / speed
     axis = w / turn
     foot = refs[body][:, p] + np.cross(w, v) / turn**2  # a point of the turning axis
     on = [j.name for j in joints if body in j.bodies and np.linalg.norm(
         np.cross(points[j.name][:, p] - foot, axis)) <= 1e-6 * (1.0 + np.abs(foot).max())]
-    return (body, "turn about ({:.3g}, {:.3g}, {:.3g})".format(*axis),
-            ", ".join(on), 1.0 / turn)
+    return body, True, "{:.3g}, {:.3g}, {:.3g}".format(*axis), ", ".join(on), 1.0 / turn
 
 
 def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement3,
@@ -439,9 +438,10 @@ def _idle(sa: Array, sb: Array, loads: Array, residual: Array, solved: NDArray[n
 
     out = []
     for y in null(generic).T:
-        body, what, on, _ = _describe_idle(unscale * y, rows, refs, joints, points, generic)
-        out.append(f"body {body}: {what} at position {generic}"
-                   + (f" (the line of joints {on})" if on else ""))
+        body, turn, axis, on, _ = _describe_idle(unscale * y, rows, refs, joints, points,
+                                                 generic)
+        out.append(f"body {body}: {'turn about' if turn else 'slide along'} ({axis}) at "
+                   f"position {generic}" + (f" (the line of joints {on})" if on else ""))
     bad = solved & (residual > RESIDUAL_RTOL)
     if bad.any():
         positions = np.flatnonzero(bad)
@@ -449,22 +449,33 @@ def _idle(sa: Array, sb: Array, loads: Array, residual: Array, solved: NDArray[n
         u = null(p)
         y = u @ (u.T @ sb[p])  # the part of the equations nothing balances at p
         y /= np.linalg.norm(y)
-        body, what, on, unit = _describe_idle(unscale * y, rows, refs, joints, points, p)
+        body, turn, axis, on, unit = _describe_idle(unscale * y, rows, refs, joints,
+                                                    points, p)
         sign = 1.0 if y @ sb[p] >= 0 else -1.0
         by_loads = -sign * float(y @ loads[p]) * unit
         by_inertia = sign * float(y @ sb[p]) * unit - by_loads
         total = abs(by_loads) + abs(by_inertia)
         by_loads, by_inertia = (0.0 if abs(x) <= 1e-9 * total else x
                                 for x in (by_loads, by_inertia))
-        turn = what.startswith("turn")
-        unit_name = "N·m" if turn else "N"
+        count = positions.size
+        if turn and on:
+            message = (f"body {body} can turn about the axis ({axis}) at position {p} "
+                       f"through joints {on} with no joint holding it, but its inertia and "
+                       "loads do not balance in that motion: a moment of "
+                       f"{by_inertia:.3g} N·m from its inertia and {by_loads:.3g} N·m from "
+                       f"the loads (at {count} position(s))")
+        elif turn:
+            message = (f"body {body} can turn about the axis ({axis}) at position {p} with "
+                       "no joint holding it, but its inertia and loads do not balance in "
+                       f"that motion: a moment of {by_inertia:.3g} N·m from its inertia and "
+                       f"{by_loads:.3g} N·m from the loads (at {count} position(s))")
+        else:
+            message = (f"body {body} can slide along ({axis}) at position {p} with no joint "
+                       "holding it, but its inertia and loads do not balance in that "
+                       f"motion: a force of {by_inertia:.3g} N from its inertia and "
+                       f"{by_loads:.3g} N from the loads (at {count} position(s))")
         raise ModelError([Problem(
-            ("bodies", body), f"body {body} can {what} at position {p}"
-            + (f" (the line of joints {on})" if on else "") + " with no joint holding it, "
-            f"but its inertia and loads do not balance in that motion: "
-            f"{'a moment' if turn else 'a force'} of {by_inertia:.3g} {unit_name} from its "
-            f"inertia and {by_loads:.3g} {unit_name} from the loads (at {positions.size} "
-            "position(s))",
+            ("bodies", body), message,
             f"make body {body}'s inertia tensor symmetric about that axis with no load "
             "turning it about the axis (inertia: rod, or [J_axis, J, J]), or hold the "
             "motion with a joint (revolute instead of spherical)")])
