@@ -411,3 +411,19 @@ def test_the_batch_in_chunks_is_the_batch_at_once(monkeypatch):
     for name, r in whole.joints.items():
         assert np.array_equal(r.force, parts.joints[name].force)
         assert np.array_equal(r.moment, parts.joints[name].moment)
+
+
+def test_singular_positions_are_marked_broken_with_empty_reactions(monkeypatch):
+    """With the threshold raised to the RSSR's median conditioning (its s_min/s_max lies
+    between 0.07 and 0.13), about half of the positions count as singular."""
+    model = model_from_data(_example(72))
+    monkeypatch.setattr(reactions_module, "SINGULAR_RTOL", 0.0856)
+    res = solve_spatial_dynamics(model)
+    singular = res.reactions.singular
+    assert 10 < singular.sum() < 62 and not res.kinematics.broken.any()
+    frame = res.to_frame()
+    assert np.array_equal(frame["chain_break"].to_numpy(), singular)
+    assert np.isnan(frame["RB_z [N]"].to_numpy()[singular]).all()
+    assert np.isnan(frame["M_bal [N*m]"].to_numpy()[singular]).all()
+    values = frame.drop(columns="chain_break").to_numpy(float)
+    assert np.isfinite(values[~singular]).all()

@@ -110,6 +110,29 @@ class Body(_Frozen):
         "ends is fixed in this body (default tail)")
 
 
+def _axis_tag(value: Any) -> str | None:
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, int):
+        return "vector"
+    if isinstance(value, list | tuple):
+        return "direction"
+    return None
+
+
+#: A joint's axis in a model with spatial contours: a vector number, or ``[x, y, z]``.
+JointAxis = Annotated[
+    Annotated[Annotated[int, Field(ge=1)], Tag("vector")]
+    | Annotated[tuple[Number, Number, Number], Tag("direction")],
+    Discriminator(
+        _axis_tag,
+        custom_error_type="joint_axis",
+        custom_error_message="a joint's axis is a vector number K (along vector K) or a "
+        "direction [x, y, z]",
+    ),
+]
+
+
 class Joint(_Frozen):
     """A kinematic pair between two bodies (the ground is body 0).
 
@@ -135,7 +158,7 @@ class Joint(_Frozen):
                                "reference point of the normal force and moment")
     along: int | None = Field(None, description="prismatic: the vector along which the "
                               "bodies slide")
-    axis: Annotated[int, Field(ge=1)] | tuple[Number, Number, Number] | None = Field(
+    axis: JointAxis | None = Field(
         None, description="in a model with spatial contours (revolute, cylindrical, "
         "prismatic): the joint's axis, a vector number (along that vector, turning with it) "
         "or a direction [x, y, z] fixed in the model's axes")

@@ -625,4 +625,7 @@ ENTRIES: list[Entry] = [
     (r"solve it with mechloop\.solve \(mechloop solve\), or vary its dimensions with "
      r"mechloop sweep", "решите её функцией 'mechloop.solve' ('mechloop solve') или "
      "варьируйте её размеры командой 'mechloop sweep'"),
+    # a joint's axis in a model with spatial contours (model/dynamic.py)
+    (r"a joint's axis is a vector number K \(along vector K\) or a direction \[x, y, z\]",
+     "ось пары — номер вектора K (вдоль вектора K) или направление [x, y, z]"),
 ]
