@@ -427,3 +427,12 @@ def test_singular_positions_are_marked_broken_with_empty_reactions(monkeypatch):
     assert np.isnan(frame["M_bal [N*m]"].to_numpy()[singular]).all()
     values = frame.drop(columns="chain_break").to_numpy(float)
     assert np.isfinite(values[~singular]).all()
+
+
+def test_joints_without_bodies_are_refused():
+    data = _example(12)
+    del data["bodies"], data["forces"], data["moments"], data["gravity"]
+    with pytest.raises(ModelError) as info:
+        model_from_data(data)
+    problem = next(p for p in info.value.problems if p.path == ("joints",))
+    assert "no bodies" in problem.message and "bodies:" in problem.hint

@@ -87,6 +87,10 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
                                     "moments and gravity only)",
                                     f"remove '{key}', or solve the planar part as a "
                                     "separate model"))
+    if model.joints is not None and not model.bodies:  # reactions need bodies
+        problems.append(Problem(("joints",), "the joints' reactions need the bodies they "
+                                "connect, and the model has no bodies",
+                                "list the moving bodies under bodies:, or remove joints"))
     spatial_vectors: set[int] = set()
     holder: dict[int, int] = {}
     for ci, contour in enumerate(model.contours):

@@ -23,16 +23,16 @@ What is decided before the reactions are trusted:
   A joint that breaks this (a pin whose bodies turn about another axis, a ball centre that
   is not a point of both bodies) is a located problem;
 * **determinacy**: the rank ``r`` of the system (singular values above
-  :data:`RANK_RTOL` of the largest; the largest rank over the positions) equals the number
-  of unknowns ``K``; otherwise some reactions balance each other whatever the loads
-  (statically indeterminate) and the problem names the joints involved and a change of
-  joint types that makes the analysis determinate (found greedily: each change keeps ``r``
-  and lowers ``K − r``);
+  :data:`~mechloop.spatial.determinacy.RANK_RTOL` of the largest; the largest rank over
+  the positions) equals the number of unknowns ``K``; otherwise some reactions balance
+  each other whatever the loads (statically indeterminate) and the problem names the
+  joints involved and a change of joint types that makes the analysis determinate
+  (:mod:`mechloop.spatial.determinacy`);
 * **idle motions**: ``6B − r`` combinations of the equations have no unknown (a coupler
   between two ball joints spinning about their line): each is dropped when the loads and
-  inertia balance in it (residual ≤ :data:`RESIDUAL_RTOL` of the system's scale at every
-  position), and is otherwise a problem that names the body, the axis and the imbalance —
-  never a least-squares answer.
+  inertia balance in it (residual ≤ :data:`~mechloop.spatial.determinacy.RESIDUAL_RTOL`
+  of the system's scale at every position), and is otherwise a problem that names the
+  body, the axis and the imbalance — never a least-squares answer.
 
 A position where the system loses rank (``s_min/s_max`` below :data:`SINGULAR_RTOL`) is
 singular: its reactions are unbounded, left NaN and marked.
@@ -47,19 +47,16 @@ from numpy.typing import NDArray
 
 from mechloop.errors import ModelError, Problem
 from mechloop.spatial.bodies import Frame
+from mechloop.spatial.determinacy import RANK_RTOL, idle_motions, indeterminate
 from mechloop.spatial.joints import COMPONENTS, Drive3, Joint3, PointOn
 from mechloop.spatial.loads import Force3, Moment3
 from mechloop.spatial.points import Placement3
 
 Array = NDArray[np.float64]
 
-#: A singular value below this share of the largest is zero (decides the rank).
-RANK_RTOL = 1e-9
 #: A position whose smallest used singular value is below this share of the largest is
 #: singular (a dead point of the force analysis), as the planar ``SINGULAR_COND`` = 1e12.
 SINGULAR_RTOL = 1e-12
-#: The equations dropped as identically satisfied must hold to this share of the scale.
-RESIDUAL_RTOL = 1e-8
 #: A reaction's power on the mechanism's motion must vanish to this share of its terms.
 POWER_RTOL = 1e-7
 #: Positions per batched SVD (memory: 8·6B·K bytes and the same for U, V per position).
@@ -96,7 +93,7 @@ class SpatialReactions:
 
 
 @dataclass(frozen=True)
-class _Column:
+class Column:
     """One unknown: a unit wrench (force through ``point``, moment) on ``bodies[1]``,
     its opposite on ``bodies[0]``; ``owner`` is a joint's name or a drive's argument,
     ``part`` force or moment, ``role`` axial, across or xyz."""
@@ -118,7 +115,7 @@ def _across(axis: Array) -> tuple[Array, Array]:
     return first, np.cross(axis, first, axis=0)
 
 
-def _joint_columns(joint: Joint3, place: Placement3) -> list[_Column]:
+def _joint_columns(joint: Joint3, place: Placement3) -> list[Column]:
     at = place.point(joint.at).p
     zero = np.zeros_like(at)
     forces, moments = COMPONENTS[joint.kind]
@@ -129,21 +126,21 @@ def _joint_columns(joint: Joint3, place: Placement3) -> list[_Column]:
         p1, p2 = _across(axis)
         dirs = {"xyz": [("axial", axis), ("across", p1), ("across", p2)],
                 "across": [("across", p1), ("across", p2)]}
-    out = [_Column(joint.name, "force", role, joint.bodies, d, at, zero)
+    out = [Column(joint.name, "force", role, joint.bodies, d, at, zero)
            for role, d in dirs[forces]]
     if moments:
-        out += [_Column(joint.name, "moment", role, joint.bodies, zero, at, d)
+        out += [Column(joint.name, "moment", role, joint.bodies, zero, at, d)
                 for role, d in dirs[moments]]
     return out
 
 
-def _drive_column(drive: Drive3, place: Placement3) -> _Column:
+def _drive_column(drive: Drive3, place: Placement3) -> Column:
     force, point, moment = drive.wrench(place)
-    return _Column(drive.argument, "force" if drive.kind == "length" else "moment",
+    return Column(drive.argument, "force" if drive.kind == "length" else "moment",
                    "drive", drive.bodies, force, point, moment)
 
 
-def _matrix(columns: list[_Column], rows: dict[int, int], refs: dict[int, Array]
+def _matrix(columns: list[Column], rows: dict[int, int], refs: dict[int, Array]
             ) -> Array:
     """The unknowns' wrenches on every body, ``(P, 6B, K)`` (forces, moments about the
     body's reference point)."""
@@ -200,7 +197,7 @@ def _twist(place: Placement3, frames: dict[int, Frame], rows: dict[int, int],
     return out.T
 
 
-def _check_power(sa: Array, columns: list[_Column], col_scale: Array, size: float,
+def _check_power(sa: Array, columns: list[Column], col_scale: Array, size: float,
                  analogs, rows, ref_points, good: NDArray[np.bool_],
                  problems: list[Problem]) -> None:
     """Every unknown's power with the analogs of every argument: 0 for a reaction, 1 for a
@@ -226,7 +223,7 @@ def _check_power(sa: Array, columns: list[_Column], col_scale: Array, size: floa
         problems.append(_misfit(owner, part, k, columns))
 
 
-def _misfit(owner, part: str, k: int, columns: list[_Column]) -> Problem:
+def _misfit(owner, part: str, k: int, columns: list[Column]) -> Problem:
     """The problem of a joint (or drive) whose reaction would do work on the motion."""
     if part == "drive":
         col = next(c for c in columns if c.owner == owner and c.role == "drive")
@@ -251,7 +248,7 @@ def _misfit(owner, part: str, k: int, columns: list[_Column]) -> Problem:
                    "[x, y, z]), or a type that lets them turn (spherical, cylindrical)")
 
 
-def _scaled(a: Array, rhs: Array, columns: list[_Column], size: float
+def _scaled(a: Array, rhs: Array, columns: list[Column], size: float
             ) -> tuple[Array, Array, Array]:
     """The system with moment rows divided by ``size`` and moment unknowns multiplied by
     it; also the unknowns' scales."""
@@ -265,94 +262,6 @@ def _singular_values(a: Array) -> Array:
     return np.concatenate([np.linalg.svd(a[i:i + CHUNK], compute_uv=False)
                            for i in range(0, a.shape[0], CHUNK)]
                           or [np.zeros((0, min(a.shape[1:])))])
-
-
-def _rank(a: Array) -> int:
-    s = np.linalg.svd(a, compute_uv=False)
-    return int((s > RANK_RTOL * s[0]).sum()) if s.size and s[0] > 0 else 0
-
-
-_RELAX = (("revolute", "spherical", ("moment", None)),
-          ("revolute", "cylindrical", ("force", "axial")),
-          ("prismatic", "cylindrical", ("moment", "axial")))
-
-
-def _relaxations(a: Array, columns: list[_Column], joints: dict[str, Joint3], rank: int,
-                 involved: list[str]) -> list[tuple[str, str, str]]:
-    """Changes of joint type (fewer components) that make the system at one position
-    determinate, found greedily: each keeps the rank and lowers the excess most (a joint
-    between two moving bodies before one with the ground)."""
-    keep = np.ones(len(columns), bool)
-    changes: list[tuple[str, str, str]] = []
-    changed: set[str] = set()
-    while keep.sum() > rank:
-        best = None
-        for name in involved:
-            if name in changed:
-                continue
-            for old, new, (part, role) in _RELAX:
-                if joints[name].kind != old:
-                    continue
-                drop = np.array([c.owner == name and c.part == part
-                                 and (role is None or c.role == role) for c in columns])
-                trial = keep & ~drop
-                if _rank(a[:, trial]) < rank:
-                    continue
-                key = (int(trial.sum()) - rank, 0 in joints[name].bodies)  # moving first
-                if best is None or key < best[0]:
-                    best = (key, name, old, new, trial)
-        if best is None:
-            break
-        _, name, old, new, keep = best
-        changes.append((name, old, new))
-        changed.add(name)
-    return changes if keep.sum() == rank else []
-
-
-def _indeterminate(a: Array, columns: list[_Column], joints: dict[str, Joint3],
-                   rank: int) -> Problem:
-    """The problem of a statically indeterminate system ``a`` (one position, scaled)."""
-    _, _, vt = np.linalg.svd(a)
-    null = vt[rank:]
-    weight = np.abs(null).max(axis=0)
-    involved = list(dict.fromkeys(c.owner for c, w in zip(columns, weight, strict=True)
-                                  if w > 1e-6 and isinstance(c.owner, str)))
-    changes = _relaxations(a, columns, joints, rank, involved)
-    excess = len(columns) - rank
-    message = (f"the force analysis is statically indeterminate: {excess} reaction "
-               f"component(s) more than the equations of the bodies decide (joints "
-               f"{', '.join(involved)} can hold reactions that balance each other "
-               "whatever the loads)")
-    if changes:
-        types = ", ".join(f"{name} {old} → {new}" for name, old, new in changes)
-        hint = f"make it determinate with these joint types: {types}"
-        path = ("joints", changes[0][0], "type")
-    else:
-        hint = (f"free some of the components of joints {', '.join(involved)} (a "
-                "spherical or cylindrical joint in place of a revolute one)")
-        path = ("joints",)
-    return Problem(path, message, hint)
-
-
-def _describe_idle(t: Array, rows: dict[int, int], refs: dict[int, Array],
-                   joints: list[Joint3], points: dict[str, Array], p: int
-                   ) -> tuple[int, bool, str, str, float]:
-    """An idle motion ``t`` (``(6B,)``, every body's ``(v_O, ω)`` at position ``p``): the
-    body that moves most, whether it turns (else it slides), the direction of its axis,
-    the joints on that axis, and the scale that makes its ω (or v) unit."""
-    size = {b: float(np.linalg.norm(t[6 * i:6 * i + 6])) for b, i in rows.items()}
-    body = max(size, key=size.get)
-    i = 6 * rows[body]
-    v, w = t[i:i + 3], t[i + 3:i + 6]
-    turn = float(np.linalg.norm(w))
-    if turn <= 1e-9 * max(size[body], 1e-300):
-        speed = float(np.linalg.norm(v))
-        return body, False, "{:.3g}, {:.3g}, {:.3g}".format(*(v / speed)), "", 1.0 / speed
-    axis = w / turn
-    foot = refs[body][:, p] + np.cross(w, v) / turn**2  # a point of the turning axis
-    on = [j.name for j in joints if body in j.bodies and np.linalg.norm(
-        np.cross(points[j.name][:, p] - foot, axis)) <= 1e-6 * (1.0 + np.abs(foot).max())]
-    return body, True, "{:.3g}, {:.3g}, {:.3g}".format(*axis), ", ".join(on), 1.0 / turn
 
 
 def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement3,
@@ -393,7 +302,7 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
         ratio = s[:, rank - 1] / s[:, 0] if rank else np.zeros(len(s))
         generic = int(np.flatnonzero(good)[np.argmax(ratio)])
     if s.size and rank < k_count:
-        raise ModelError([_indeterminate(sa[generic], columns, by_name, rank)])
+        raise ModelError([indeterminate(sa[generic], columns, by_name, rank)])
     x = np.full((n, k_count), np.nan)
     residual = np.zeros(n)
     singular = np.zeros(n, bool)
@@ -414,72 +323,13 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
         if rank < r_count:
             loads = -newton_euler_rhs((), forces, moments, place, rows, refs, static=True)
             loads.reshape(n, -1, 6)[:, :, 3:] /= size  # scaled as the system
-            idle = _idle(sa, sb, loads, residual, good & ~singular, rank, rows, refs,
+            idle = idle_motions(sa, sb, loads, residual, good & ~singular, rank, rows, refs,
                          joints, {j.name: place.point(j.at).p for j in joints}, generic,
                          size)
         x[singular] = np.nan
     x = x * col_scale
     return _collect(joints, drives, columns, x, place, singular, idle, rank, k_count,
                     residual)
-
-
-def _idle(sa: Array, sb: Array, loads: Array, residual: Array, solved: NDArray[np.bool_],
-          rank: int, rows, refs, joints, points, generic: int, size: float
-          ) -> tuple[str, ...]:
-    """Descriptions of the idle motions (the left null space of the scaled system ``sa``
-    at position ``generic``); a problem when the loads and inertia do not balance in
-    them (``residual`` above :data:`RESIDUAL_RTOL` at a position ``solved``), with the
-    share of the loads (``loads``: their part of ``−sb``) and of the inertia."""
-    unscale = np.ones(sa.shape[1])
-    unscale.reshape(-1, 6)[:, 3:] = 1.0 / size  # a left null vector → (v_O, ω) per body
-
-    def null(p: int) -> Array:
-        return np.linalg.svd(sa[p])[0][:, rank:]
-
-    out = []
-    for y in null(generic).T:
-        body, turn, axis, on, _ = _describe_idle(unscale * y, rows, refs, joints, points,
-                                                 generic)
-        out.append(f"body {body}: {'turn about' if turn else 'slide along'} ({axis}) at "
-                   f"position {generic}" + (f" (the line of joints {on})" if on else ""))
-    bad = solved & (residual > RESIDUAL_RTOL)
-    if bad.any():
-        positions = np.flatnonzero(bad)
-        p = int(positions[np.argmax(residual[bad])])
-        u = null(p)
-        y = u @ (u.T @ sb[p])  # the part of the equations nothing balances at p
-        y /= np.linalg.norm(y)
-        body, turn, axis, on, unit = _describe_idle(unscale * y, rows, refs, joints,
-                                                    points, p)
-        sign = 1.0 if y @ sb[p] >= 0 else -1.0
-        by_loads = -sign * float(y @ loads[p]) * unit
-        by_inertia = sign * float(y @ sb[p]) * unit - by_loads
-        total = abs(by_loads) + abs(by_inertia)
-        by_loads, by_inertia = (0.0 if abs(x) <= 1e-9 * total else x
-                                for x in (by_loads, by_inertia))
-        count = positions.size
-        if turn and on:
-            message = (f"body {body} can turn about the axis ({axis}) at position {p} "
-                       f"through joints {on} with no joint holding it, but its inertia and "
-                       "loads do not balance in that motion: a moment of "
-                       f"{by_inertia:.3g} N·m from its inertia and {by_loads:.3g} N·m from "
-                       f"the loads (at {count} position(s))")
-        elif turn:
-            message = (f"body {body} can turn about the axis ({axis}) at position {p} with "
-                       "no joint holding it, but its inertia and loads do not balance in "
-                       f"that motion: a moment of {by_inertia:.3g} N·m from its inertia and "
-                       f"{by_loads:.3g} N·m from the loads (at {count} position(s))")
-        else:
-            message = (f"body {body} can slide along ({axis}) at position {p} with no joint "
-                       "holding it, but its inertia and loads do not balance in that "
-                       f"motion: a force of {by_inertia:.3g} N from its inertia and "
-                       f"{by_loads:.3g} N from the loads (at {count} position(s))")
-        raise ModelError([Problem(
-            ("bodies", body), message,
-            f"make body {body}'s inertia tensor symmetric about that axis with no load "
-            "turning it about the axis (inertia: rod, or [J_axis, J, J]), or hold the "
-            "motion with a joint (revolute instead of spherical)")])
-    return tuple(out)
 
 
 def _collect(joints, drives, columns, x, place, singular, idle, rank, k_count, residual

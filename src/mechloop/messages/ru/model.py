@@ -628,4 +628,8 @@ ENTRIES: list[Entry] = [
     # a joint's axis in a model with spatial contours (model/dynamic.py)
     (r"a joint's axis is a vector number K \(along vector K\) or a direction \[x, y, z\]",
      "ось пары — номер вектора K (вдоль вектора K) или направление [x, y, z]"),
+    (r"the joints' reactions need the bodies they connect, and the model has no bodies",
+     "для реакций в парах нужны соединяемые ими звенья, а звеньев в модели нет"),
+    (r"list the moving bodies under bodies:, or remove joints",
+     "перечислите подвижные звенья в 'bodies:' или удалите 'joints'"),
 ]
