@@ -436,3 +436,34 @@ def test_joints_without_bodies_are_refused():
         model_from_data(data)
     problem = next(p for p in info.value.problems if p.path == ("joints",))
     assert "no bodies" in problem.message and "bodies:" in problem.hint
+
+
+def test_a_telescopic_coupler_driven_in_length_as_a_second_argument():
+    """The coupler as a cylinder (body 2, holding the tail of vector 2) and a rod (body 4,
+    holding its head) in a cylindrical joint along it, its length argument 2: the force
+    pushing the rod out of the cylinder and the input moment equal the balancing loads by
+    virtual power; each part may spin about the coupler line (two idle motions)."""
+    n = 144
+    data = _example(n)
+    data["time"] = {"rpm": 600}
+    data["arguments"][2] = {"law": "harmonic", "start": [0, 105], "end": [n, 125]}
+    data["vectors"][2]["r"] = {"argument": 2}
+    data["bodies"][2] = {"vectors": [2], "mass": 0.3, "inertia": [0, 3e-4, 3e-4],
+                         "center": {"tail": 2}}
+    data["bodies"][4] = {"vectors": [2], "ends": {2: "head"}, "mass": 0.2,
+                         "inertia": [0, 1e-4, 1e-4], "center": {"head": 2}}
+    data["joints"]["B"]["bodies"] = [4, 3]
+    data["joints"]["C"] = {"type": "cylindrical", "bodies": [2, 4], "axis": 2,
+                           "at": {"head": 2}}
+    res = solve_spatial_dynamics(model_from_data(data))
+    reactions = res.reactions
+    assert reactions.rank == reactions.unknowns == 22 and len(reactions.idle) == 2
+    for k in (1, 2):
+        q, q_vp = reactions.balancing[k], res.balancing[k]
+        assert np.abs(q - q_vp).max() <= 1e-9 * np.abs(q_vp).max()
+    # the cylindrical joint carries no force along its axis
+    axis = res.kinematics.components(2)
+    u = np.stack([c[0] for c in axis])
+    u /= np.linalg.norm(u, axis=0)
+    force = reactions.joints["C"].force
+    assert np.abs(np.einsum("ip,ip->p", force, u)).max() <= 1e-12 * np.abs(force).max()

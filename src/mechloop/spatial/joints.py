@@ -216,7 +216,8 @@ def build_drives3(model: Model, bodies: dict[int, list[int]], joints: list[Joint
             continue
         letter, v = driven[0]
         owners = sorted({b for _, u in driven for b in member[u]})
-        if len({x for x, _ in driven}) > 1 or len(owners) > 1:
+        if len({x for x, _ in driven}) > 1 or (letter != "r" and len(owners) > 1) or (
+                letter == "r" and len(driven) > 1):
             problems.append(Problem(path, f"argument {k} drives "
                                     f"{', '.join(f'{x}{u}' for x, u in driven)} of "
                                     f"bodies {', '.join(map(str, owners)) or 'none'}; its "

@@ -299,7 +299,7 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
     else:
         ranks = (s > RANK_RTOL * s[:, :1]).sum(axis=1)
         rank = int(ranks.max())
-        ratio = s[:, rank - 1] / s[:, 0] if rank else np.zeros(len(s))
+        ratio = s[:, rank - 1] / np.maximum(s[:, 0], 1e-300) if rank else np.zeros(len(s))
         generic = int(np.flatnonzero(good)[np.argmax(ratio)])
     if s.size and rank < k_count:
         raise ModelError([indeterminate(sa[generic], columns, by_name, rank)])
@@ -312,20 +312,23 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
         for lo in range(0, idx.size, CHUNK):
             part = idx[lo:lo + CHUNK]
             u, sv, vt = np.linalg.svd(sa[part], full_matrices=True)
-            c = np.einsum("pri,pr->pi", u[:, :, :k_count], sb[part]) / sv[:, :k_count]
+            singular[part] = ~(sv[:, k_count - 1] >= SINGULAR_RTOL * sv[:, 0])
+            inverse = np.where(singular[part, None], 0.0, 1.0 / np.where(
+                sv[:, :k_count] > 0, sv[:, :k_count], 1.0))
+            c = np.einsum("pri,pr->pi", u[:, :, :k_count], sb[part]) * inverse
             x[part] = np.einsum("pik,pi->pk", vt[:, :k_count], c)
-            singular[part] = sv[:, k_count - 1] < SINGULAR_RTOL * sv[:, 0]
             residual[part] = np.linalg.norm(
                 np.einsum("prk,pk->pr", sa[part], x[part]) - sb[part], axis=1)
-        scale = (np.abs(sb[good]).max(initial=0.0)
-                 + float((s[:, 0] * np.linalg.norm(x[good], axis=1)).max(initial=0.0)))
+        solved = good & ~singular
+        scale = (np.abs(sb[solved]).max(initial=0.0) + float(
+            (s[solved[good], 0] * np.linalg.norm(x[solved], axis=1)).max(initial=0.0)))
         residual = residual / scale if scale > 0 else residual
         if rank < r_count:
             loads = -newton_euler_rhs((), forces, moments, place, rows, refs, static=True)
             loads.reshape(n, -1, 6)[:, :, 3:] /= size  # scaled as the system
-            idle = idle_motions(sa, sb, loads, residual, good & ~singular, rank, rows, refs,
-                         joints, {j.name: place.point(j.at).p for j in joints}, generic,
-                         size)
+            points = {j.name: place.point(j.at).p for j in joints}
+            idle = idle_motions(sa, sb, loads, residual, solved, rank, rows, refs, joints,
+                                points, generic, size)
         x[singular] = np.nan
     x = x * col_scale
     return _collect(joints, drives, columns, x, place, singular, idle, rank, k_count,
