@@ -467,3 +467,16 @@ def test_a_telescopic_coupler_driven_in_length_as_a_second_argument():
     u /= np.linalg.norm(u, axis=0)
     force = reactions.joints["C"].force
     assert np.abs(np.einsum("ip,ip->p", force, u)).max() <= 1e-12 * np.abs(force).max()
+
+
+def test_an_output_driven_by_its_rotation_beta():
+    """Argument 1 turns the output crank (β3 from 140 to 165 deg, about −Y): its balancing
+    moment from the reactions' equations is the one by virtual power."""
+    data = _example(36)
+    data["arguments"][1] = {"table": {0: 140, 36: 165}}
+    data["vectors"][1]["a"] = "function"
+    data["vectors"][3]["b"] = {"argument": 1}
+    res = solve_spatial_dynamics(model_from_data(data))
+    assert not res.kinematics.broken.any()
+    q, q_vp = res.reactions.balancing[1], res.balancing[1]
+    assert np.abs(q - q_vp).max() <= 1e-9 * np.abs(q_vp).max()
