@@ -480,3 +480,27 @@ def test_an_output_driven_by_its_rotation_beta():
     assert not res.kinematics.broken.any()
     q, q_vp = res.reactions.balancing[1], res.balancing[1]
     assert np.abs(q - q_vp).max() <= 1e-9 * np.abs(q_vp).max()
+
+
+def test_a_four_bar_in_a_tilted_plane_beside_a_spatial_contour():
+    """Planar contours in the plane of normal n (their input's drive turns about n) in a
+    model with a spatial contour, loads out of the plane: the balancing moment from the
+    reactions' equations is the one by virtual power."""
+    normal = [0.3, 0.4, 0.866]
+    data = _as_spatial(PLANAR)
+    data["vectors"] = copy.deepcopy(PLANAR["vectors"])
+    data["contours"] = [dict(c, plane={"normal": normal}) for c in PLANAR["contours"]]
+    data["contours"].append({"vectors": [8, 9, 10], "spatial": True})
+    data["vectors"].update({8: {"r": 10, "a": 10, "b": 10},
+                            9: {"r": 10, "a": "function", "b": "function"},
+                            10: {"r": "function", "a": 0, "b": 0}})
+    data["joints"] = copy.deepcopy(RSCR)
+    for name in ("O", "B", "D"):
+        data["joints"][name]["axis"] = normal
+    data["forces"][0]["direction"] = [1, 2, 3]
+    data["forces"][1] = {"body": 3, "at": {"tail": 3}, "value": 30, "direction": [0, 1, 0]}
+    data["moments"][0]["axis"] = normal
+    res = solve_spatial_dynamics(model_from_data(data))
+    assert not res.kinematics.broken.any() and res.reactions.rank == 18
+    q, q_vp = res.reactions.balancing[1], res.balancing[1]
+    assert np.abs(q - q_vp).max() <= 1e-9 * np.abs(q_vp).max()
