@@ -469,6 +469,11 @@ FIGURES: list[tuple[str, str, tuple]] = [
      "test_planar_four_bar_written_as_spatial_gives_the_planar_results")),
     (R, r"planar coupled results to (?P<fig>1e-10)", ("test", "tests/test_spatial_coupled.py::"
      "test_planar_triad_written_as_spatial_gives_the_planar_coupled_results")),
+    (R, r"Newton–Euler equations hold to (?P<fig>1e-9)", ("test", "tests/"
+     "test_spatial_reactions.py::test_the_rssr_example_balances_every_body_with_its_reactions")),
+    (R, r"give the planar reactions to (?P<fig>1e-9)", ("test", "tests/"
+     "test_spatial_reactions.py::test_a_planar_four_bar_written_as_spatial_gives_the_planar_"
+     "reactions")),
 ]
 # the peak coefficients of the cam laws (README's cam section: law | C_v | C_a | C_j)
 _CELL = r"[^|]*\|"  # one cell of a table row

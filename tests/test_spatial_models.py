@@ -413,10 +413,11 @@ def test_rotation_on_a_planar_contour_and_unsupported_sections_are_refused():
         model_from_data(copy.deepcopy(data))
     assert "add 'spatial: true'" in str(info.value)
     spatial = _data(SPATIAL / "rssr.yaml")
-    spatial["joints"] = {"O": {"bodies": [0, 1], "at": {"tail": 1}}}  # no reactions yet
+    spatial["springs"] = [{"bodies": [0, 1], "ends": [{"tail": 1}, {"head": 1}],
+                           "stiffness": 1000, "free_length": 30}]  # none in space yet
     with pytest.raises(ModelError) as info:
         model_from_data(spatial)
-    assert "'joints' is not solved for a model with spatial contours" in str(info.value)
+    assert "'springs' is not solved for a model with spatial contours" in str(info.value)
 
 
 def test_old_models_keep_their_schema_meaning():

@@ -121,7 +121,11 @@ def check(model: ModelPath) -> None:
     text = (f"{model}: OK — {len(m.contours)} contour(s), {n_vec} vectors, "
             f"{len(m.arguments)} argument(s), positions 0..{m.positions}")
     if m.bodies and any(c.spatial for c in m.contours):  # issue 17: spatial dynamics
-        text += f"; {len(_spatial_dynamics(m, model).mechanism.bodies)} moving bodies"
+        spatial = _spatial_dynamics(m, model)
+        text += f"; {len(spatial.mechanism.bodies)} moving bodies"
+        if spatial.reactions is not None:  # the joints' force analysis is determinate
+            text += (f", {len(spatial.reactions.joints)} joints "
+                     f"({', '.join(spatial.reactions.joints)})")
     elif m.bodies:
         mech = _dynamics(m, model).mechanism
         text += (f"; {len(mech.bodies)} moving bodies, {len(mech.pairs)} pairs "
@@ -258,6 +262,10 @@ def solve(
         if dynamic.static:
             err.print("[yellow]note:[/] the model has no time: the analysis is static "
                       "(no inertia loads)")
+        if dynamic.reactions is not None and dynamic.reactions.singular.any():
+            err.print("[yellow]force analysis singular[/] at positions "
+                      f"{compress_positions(np.flatnonzero(dynamic.reactions.singular))}: "
+                      "reactions are unbounded there (empty values)")
     elif m.bodies:
         dynamic = _dynamics(m, model)
         results, frame = dynamic.kinematics, dynamic.to_frame()

@@ -384,6 +384,17 @@ def _given_pairs(model: Model, problems: list[Problem]) -> list[Pair]:
     pairs = []
     for name, joint in (model.joints or {}).items():
         path = ("joints", name)
+        if joint.type in ("spherical", "cylindrical"):  # issue 17: spatial joints
+            problems.append(Problem((*path, "type"), f"a {joint.type} joint applies to a "
+                                    "model with spatial contours",
+                                    "a planar model's joints are revolute or prismatic"))
+            continue
+        if joint.axis is not None:
+            problems.append(Problem((*path, "axis"), "a joint's axis applies to a model "
+                                    "with spatial contours", "remove 'axis' (a planar pin "
+                                    "turns about Z; a prismatic joint slides 'along' a "
+                                    "vector)"))
+            continue
         for i, b in enumerate(joint.bodies):
             if b != 0 and b not in model.bodies:
                 problems.append(Problem((*path, "bodies", i), f"body {b} does not exist",

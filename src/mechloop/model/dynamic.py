@@ -110,6 +110,29 @@ class Body(_Frozen):
         "ends is fixed in this body (default tail)")
 
 
+def _axis_tag(value: Any) -> str | None:
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, int):
+        return "vector"
+    if isinstance(value, list | tuple):
+        return "direction"
+    return None
+
+
+#: A joint's axis in a model with spatial contours: a vector number, or ``[x, y, z]``.
+JointAxis = Annotated[
+    Annotated[Annotated[int, Field(ge=1)], Tag("vector")]
+    | Annotated[tuple[Number, Number, Number], Tag("direction")],
+    Discriminator(
+        _axis_tag,
+        custom_error_type="joint_axis",
+        custom_error_message="a joint's axis is a vector number K (along vector K) or a "
+        "direction [x, y, z]",
+    ),
+]
+
+
 class Joint(_Frozen):
     """A kinematic pair between two bodies (the ground is body 0).
 
@@ -118,15 +141,27 @@ class Joint(_Frozen):
     normal force and a moment about point ``at`` (default: the tail of ``along``, where a
     slider's vector starts); friction is a force ``f·max(|N|, 2|M|/length)`` against the relative
     sliding (a slider of ``length`` loaded at its two edges).
+
+    In a model with spatial contours (:mod:`mechloop.spatial.joints`) a joint is
+    ``spherical`` (a ball at ``at``: three force components), ``revolute`` (a pin at ``at``
+    turning about ``axis``: three forces, two moments across the axis), ``cylindrical``
+    (turning about and sliding along ``axis``: two forces and two moments across it) or
+    ``prismatic`` (sliding along ``axis``: two forces across it, three moments); ``axis``
+    is a vector number (the axis along that vector, turning with it) or a direction
+    ``[x, y, z]`` fixed in the model's axes.
     """
 
-    type: Literal["revolute", "prismatic"] = "revolute"
+    type: Literal["revolute", "prismatic", "spherical", "cylindrical"] = "revolute"
     bodies: tuple[int, int] = Field(description="the two bodies; the reaction is the "
                                     "force of the first on the second")
     at: PointOn | None = Field(None, description="revolute: the pin; prismatic: the "
                                "reference point of the normal force and moment")
     along: int | None = Field(None, description="prismatic: the vector along which the "
                               "bodies slide")
+    axis: JointAxis | None = Field(
+        None, description="in a model with spatial contours (revolute, cylindrical, "
+        "prismatic): the joint's axis, a vector number (along that vector, turning with it) "
+        "or a direction [x, y, z] fixed in the model's axes")
     friction: Number | None = Field(None, ge=0, description="coefficient of friction "
                                    "(default: friction.coefficient, or none)")
     radius: Scalar | None = Field(None, description="revolute: pin radius for friction "

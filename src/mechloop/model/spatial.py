@@ -17,9 +17,9 @@ contours are chained freely.  Contours are solved one after another in dependenc
 contours that need each other's functions, or a contour linking to one of its own, form a
 coupled block solved by Newton's method (:mod:`mechloop.spatial.blocks`,
 :mod:`mechloop.spatial.block`).  Bodies, forces, moments and gravity are read by the
-spatial dynamics (:mod:`mechloop.spatial.dynamics`); the sections nothing reads for a
-spatial model yet (:data:`UNSUPPORTED`: joints, springs, machine motion, synthesis, ...)
-are refused.
+spatial dynamics (:mod:`mechloop.spatial.dynamics`), joints by its force analysis
+(:mod:`mechloop.spatial.joints`); the sections nothing reads for a spatial model yet
+(:data:`UNSUPPORTED`: gears, springs, machine motion, synthesis, ...) are refused.
 
 :func:`analyze_spatial` (called by :func:`mechloop.model.check.check_model` for a model
 with a spatial contour, in place of :func:`mechloop.model.structure.analyze`) returns the
@@ -47,7 +47,7 @@ from mechloop.spatial.blocks import coupled_blocks
 from mechloop.spatial.contour import classify
 
 #: Sections of a model file that the spatial solver does not read yet.
-UNSUPPORTED = ("joints", "gears", "springs", "dampers",
+UNSUPPORTED = ("gears", "springs", "dampers",
                "machine", "envelopes", "simulate", "synthesis", "project")
 LETTERS = "rab"
 
@@ -83,10 +83,14 @@ def analyze_spatial(model: Model) -> tuple[Structure, list[Problem]]:
         value = getattr(model, key)
         if value:
             problems.append(Problem((key,), f"'{key}' is not solved for a model with spatial "
-                                    "contours yet (their dynamics reads bodies, forces, moments "
-                                    "and gravity only)",
+                                    "contours yet (their dynamics reads bodies, joints, forces, "
+                                    "moments and gravity only)",
                                     f"remove '{key}', or solve the planar part as a "
                                     "separate model"))
+    if model.joints is not None and not model.bodies:  # reactions need bodies
+        problems.append(Problem(("joints",), "the joints' reactions need the bodies they "
+                                "connect, and the model has no bodies",
+                                "list the moving bodies under bodies:, or remove joints"))
     spatial_vectors: set[int] = set()
     holder: dict[int, int] = {}
     for ci, contour in enumerate(model.contours):

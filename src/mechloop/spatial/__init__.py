@@ -45,7 +45,9 @@ Models with spatial contours: :mod:`.contour` names a contour's module from its 
 unknowns and follows a branch over the positions (a fixed variant, or continuity);
 :mod:`.solve` solves a whole model, spatial and planar contours (any plane) together
 (the model side: :mod:`mechloop.model.spatial`, :mod:`mechloop.model.plane`).  Not yet
-here: coupled spatial blocks, many designs at once, dynamics, views.
+here: coupled spatial blocks, many designs at once, views.  Dynamics: :mod:`.bodies`,
+:mod:`.loads`, :mod:`.dynamics` (virtual power), :mod:`.joints` and :mod:`.reactions`
+(the joints' reactions by the Newton–Euler equations, :mod:`.determinacy`).
 
 Shared helpers: :mod:`.roots` (``a cos θ + b sin θ = c``, quadratics), :mod:`.quartic`
 (real roots of a trigonometric polynomial of any degree by batched companion

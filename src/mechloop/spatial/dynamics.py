@@ -14,8 +14,15 @@ derivatives by it):
 * the kinetic energy ``T = ½ Σ (m |v_S|² + ωᵀ J_w ω)``.
 
 so that ``dT/dt = Σ F·v_P + Σ M·ω + Σ Q_k q̇_k``.  Without model time the analysis is
-static (no inertia terms, ``T = 0``), as in the planar dynamics.  The joint reactions are
-not computed for spatial models yet (``joints:`` is refused).
+static (no inertia terms, ``T = 0``), as in the planar dynamics.
+
+With ``joints:`` (:mod:`mechloop.spatial.joints`: spherical, revolute, cylindrical and
+prismatic joints) the force analysis also solves the Newton–Euler equations of every
+moving body for the joints' reactions and the balancing loads
+(:mod:`mechloop.spatial.reactions`): it refuses joints that do not fit the motion and a
+statically indeterminate system (naming the joints to change), drops the equations of an
+idle motion that the loads and inertia leave balanced, and its balancing loads equal the
+ones by virtual power.  Without ``joints:`` no reactions are computed.
 """
 
 from __future__ import annotations
@@ -39,8 +46,10 @@ from mechloop.spatial.bodies import (
     inertia_tensor,
     rod_symmetric,
 )
+from mechloop.spatial.joints import COMPONENTS, body_reference, build_drives3, build_joints3
 from mechloop.spatial.loads import Force3, Moment3, build_loads
 from mechloop.spatial.points import Motion3, Placement3
+from mechloop.spatial.reactions import SpatialReactions, solve_reactions
 
 Array = NDArray[np.float64]
 
@@ -99,20 +108,30 @@ class SpatialDynamics:
     static: bool
     #: the common centre of mass (None without masses)
     center: Motion3 | None = None
+    #: the joints' reactions and the balancing loads by the Newton–Euler equations (None
+    #: without ``joints:``)
+    reactions: SpatialReactions | None = None
 
     def balancing_name(self, argument: int) -> tuple[str, str]:
         """Column stem and unit of the balancing load of ``argument``."""
         return balancing_name(self.kinematics, argument, len(self.balancing) > 1)
 
     def to_frame(self) -> pd.DataFrame:
-        """The kinematic table, then the balancing loads by virtual power (``_vp``), the
-        reduced characteristics (one argument), each body's centre of mass, the common
-        one, each body's angular velocity, and the kinetic energy."""
+        """The kinematic table, then the balancing loads (by the reactions' equations
+        when the model has joints, and by virtual power, ``_vp``), the reduced
+        characteristics (one argument), each body's centre of mass, the common one, each
+        body's angular velocity, the joints' reactions (force ``R<name>_x``, ``_y``,
+        ``_z`` and its size ``R<name>``; the moment ``R<name>_mx``, ``_my``, ``_mz`` of a
+        joint that has one: of the first body on the second, about the joint's point) and
+        the kinetic energy; ``chain_break`` is also true where the force system is
+        singular (its reactions are empty there)."""
         frame = self.kinematics.to_frame()
         flag = frame.pop("chain_break")
         cols: dict[str, Array] = {}
         for k, value in self.balancing.items():
             stem, unit = self.balancing_name(k)
+            if self.reactions is not None:
+                cols[f"{stem} [{unit}]"] = self.reactions.balancing[k]
             cols[f"{stem}_vp [{unit}]"] = value
         if self.reduced is not None:
             k = next(iter(self.balancing))
@@ -130,6 +149,15 @@ class SpatialDynamics:
         for body, fr in sorted(self.frames.items()):
             for i, axis in enumerate("xyz"):
                 cols[f"w{axis}{body} [rad/{d1}]"] = fr.omega[i]
+        if self.reactions is not None:
+            for name, reaction in self.reactions.joints.items():
+                for i, axis in enumerate("xyz"):
+                    cols[f"R{name}_{axis} [N]"] = reaction.force[i]
+                cols[f"R{name} [N]"] = np.linalg.norm(reaction.force, axis=0)
+                if COMPONENTS[reaction.joint.kind][1]:
+                    for i, axis in enumerate("xyz"):
+                        cols[f"R{name}_m{axis} [N*m]"] = reaction.moment[i]
+            flag = flag | self.reactions.singular
         cols["T [J]"] = self.kinetic_energy
         return pd.concat([frame, pd.DataFrame(cols, index=frame.index), flag], axis=1)
 
@@ -242,6 +270,10 @@ def solve_spatial_dynamics(model: Model) -> SpatialDynamics:
     problems: list[Problem] = []
     mech = build_mechanism3(model, kin, problems)
     forces, moments = build_loads(model, kin, mech.masses, set(mech.bodies), time, problems)
+    if model.joints is not None:
+        joints = build_joints3(model, set(mech.bodies), problems)
+        drives = build_drives3(model, {b: v for b, (v, _) in mech.bodies.items()}, joints,
+                               problems)
     if not mech.bodies and not problems:
         problems.append(Problem(("bodies",), "the model has no moving body",
                                 "list the moving bodies with their vectors"))
@@ -254,11 +286,13 @@ def solve_spatial_dynamics(model: Model) -> SpatialDynamics:
 
     balancing: dict[int, Array] = {}
     reduced = None
+    analogs: dict[int, tuple[Placement3, dict[int, Frame]]] = {}
     with np.errstate(invalid="ignore"):
         for k in sorted(model.arguments):
             ana = solve(model, analogs_of=k)
             at = Placement3(ana)
             frames_a = mech.frames(ana)
+            analogs[k] = (at, frames_a)
             total = np.zeros(n)
             inertia, d_inertia = np.zeros(n), np.zeros(n)
             for (mass, s, frame, jw), (_, s_a, frame_a, _) in zip(
@@ -291,8 +325,14 @@ def solve_spatial_dynamics(model: Model) -> SpatialDynamics:
     centers = _centers(mech, place)
     moving = [m for m in mech.masses if m.mass > 0]
     center = _center_of(moving, place) if moving else None
+    reactions = None
+    if model.joints is not None:
+        refs = {b: body_reference(model, kin, b, vectors)
+                for b, (vectors, _) in mech.bodies.items()}
+        reactions = solve_reactions(joints, drives, place, frames, terms, forces, moments,
+                                    analogs, refs, static=static)
     return SpatialDynamics(kin, mech, frames, centers, balancing, reduced, kinetic, powers,
-                           static, center)
+                           static, center, reactions)
 
 
 def _load_power(forces: list[Force3], moments: list[Moment3], place: Placement3,

@@ -540,4 +540,107 @@ ENTRIES: list[Entry] = [
      "реализованы для модели с пространственными контурами"),
     (_p("write its dynamics by virtual power with mechloop solve"),
      "запишите её динамику по принципу возможных мощностей командой 'mechloop solve'"),
+    # joints of a model with spatial contours (spatial/joints.py, spatial/reactions.py;
+    # the planar refusal in dynamics/mechanism.py)
+    (_p("a {t} joint applies to a model with spatial contours"),
+     "пара '{t}' применяется в модели с пространственными контурами"),
+    (_p("a planar model's joints are revolute or prismatic"),
+     "пары плоской модели — вращательные ('revolute') или поступательные ('prismatic')"),
+    (_p("a joint's axis applies to a model with spatial contours"),
+     "ось пары задаётся в модели с пространственными контурами"),
+    (_p("remove 'axis' (a planar pin turns about Z; a prismatic joint slides 'along' a "
+        "vector)"), "удалите 'axis' (плоский шарнир поворачивается вокруг Z; "
+     "поступательная пара скользит вдоль вектора 'along')"),
+    (_p("friction in the joints of a model with spatial contours is not computed yet"),
+     "трение в кинематических парах модели с пространственными контурами пока не "
+     "рассчитывается"),
+    (_p("remove it (the joints are ideal)"), "удалите его (пары считаются идеальными)"),
+    (_p("body {b} is not a moving body of the model"),
+     "звено {b} не является подвижным звеном модели"),
+    (_p("use 0 (the ground) or one of {items}"), "укажите 0 (стойку) или одно из {items}"),
+    (_p("in a model with spatial contours a joint's axis is given by 'axis'"),
+     "в модели с пространственными контурами ось пары задаётся ключом 'axis'"),
+    (_p("write axis: {a} in place of along: {b}"), "напишите axis: {a} вместо along: {b}"),
+    (_p("a spherical joint has no axis (it turns about every axis)"),
+     "у сферической пары нет оси (она допускает поворот вокруг любой оси)"),
+    (_p("remove 'axis', or make it a revolute joint (type: revolute)"),
+     "удалите 'axis' или сделайте пару вращательной ('type: revolute')"),
+    (_p("a {t} joint of a model with spatial contours needs its axis"),
+     "паре '{t}' в модели с пространственными контурами нужна ось ('axis')"),
+    (_p("give axis: K (along vector K) or axis: [x, y, z]"),
+     "задайте axis: K (вдоль вектора K) или axis: [x, y, z]"),
+    (_p("a {t} joint needs 'at': its centre"), "паре '{t}' нужна точка 'at': её центр"),
+    (_p("a {t} joint needs 'at': a point of its axis"),
+     "паре '{t}' нужна точка 'at': точка её оси"),
+    (_p("give the point, e.g. at: {{head: 1}}"),
+     "задайте точку, например at: {{head: 1}}"),
+    (_p("place the point on the vector (share or along)"),
+     "поместите точку на вектор ('share' или 'along')"),
+    (_p("body {b} is in no joint, so the force analysis has nothing to hold it"),
+     "звено {b} не входит ни в одну пару, поэтому в силовом расчёте его ничто не "
+     "удерживает"),
+    (_p("name the joints of body {b} with the bodies it touches"),
+     "задайте пары звена {b} со звеньями, с которыми оно соединено"),
+    (_p("argument {k} drives {params} of bodies {items}; its balancing load needs one "
+        "parameter of one body"), lambda m: f"аргумент {m['k']} задаёт {m['params']} "
+     f"звеньев {_ru(m['items'])}; для его уравновешивающей нагрузки нужен один параметр "
+     "одного звена"),
+    (_p("argument {k} turns vector {v} of no body"),
+     "аргумент {k} поворачивает вектор {v}, не входящий ни в одно звено"),
+    (_p("list vector {v} in the body at its head with ends: {{{w}: head}}, or name the "
+        "joint along it (prismatic, cylindrical)"), "укажите вектор {v} в звене у его "
+     "конца с 'ends: {{{w}: head}}' или задайте пару вдоль него (поступательную или "
+     "цилиндрическую)"),
+    (_p("the balancing force of argument {k} does not move with the argument (its power "
+        "is not that of the argument's rate)"), "уравновешивающая сила аргумента {k} не "
+     "согласована с ним (её мощность не равна мощности на скорости аргумента)"),
+    (_p("the balancing moment of argument {k} does not move with the argument (its power "
+        "is not that of the argument's rate)"), "уравновешивающий момент аргумента {k} не "
+     "согласован с ним (его мощность не равна мощности на скорости аргумента)"),
+    (_p("drive a body that turns about the argument's axis (an elevation a: about (-sin b, "
+        "0, cos b); a rotation b: about Y), or the bodies at the two ends of a driven "
+        "length"), "приводите звено, поворачивающееся вокруг оси аргумента (угол "
+     "возвышения a: вокруг (-sin b, 0, cos b); поворот b: вокруг Y), или звенья на двух "
+     "концах изменяемой длины"),
+    (_p("the bodies {a} and {b} of joint {j} move apart at its point (with argument {k}): "
+        "its force would do work"), "звенья {a} и {b} пары {j} расходятся в её точке (по "
+     "аргументу {k}): её сила совершала бы работу"),
+    (_p("place 'at' on the joint (the ball's centre, a point of the axis) and check its "
+        "type and axis"), "поместите 'at' в пару (центр шара, точку оси) и проверьте её "
+     "тип и ось"),
+    (_p("the bodies {a} and {b} of joint {j} turn relative to each other about an axis its "
+        "moment holds (with argument {k})"), "звенья {a} и {b} пары {j} поворачиваются "
+     "друг относительно друга вокруг оси, которую удерживает её момент (по аргументу {k})"),
+    (_p("give the axis they turn about (axis: K along vector K, or [x, y, z]), or a type "
+        "that lets them turn (spherical, cylindrical)"), "задайте ось их относительного "
+     "поворота (axis: K вдоль вектора K или [x, y, z]) или тип пары, допускающий поворот "
+     "('spherical', 'cylindrical')"),
+    (_p("the force analysis is statically indeterminate: {n} reaction component(s) more "
+        "than the equations of the bodies decide (joints {items} can hold reactions that "
+        "balance each other whatever the loads)"), "силовой расчёт статически "
+     "неопределим: составляющих реакций на {n} больше, чем определяют уравнения звеньев "
+     "(пары {items} могут нести взаимно уравновешенные реакции при любых нагрузках)"),
+    (_p("make it determinate with these joint types: {types}"),
+     "сделайте его статически определимым с такими типами пар: {types}"),
+    (_p("free some of the components of joints {items} (a spherical or cylindrical joint "
+        "in place of a revolute one)"), "освободите часть составляющих реакций пар {items} "
+     "(сферическая или цилиндрическая пара вместо вращательной)"),
+    (r"body (?P<b>\S+) can (?:(?P<turn>turn about the axis)|slide along) \((?P<axis>[^)]*)\) "
+     r"at position (?P<p>\S+)(?: through joints (?P<on>.+?))? with no joint holding it, but "
+     r"its inertia and loads do not balance in that motion: a (?:moment|force) of "
+     r"(?P<i>\S+) (?P<u>\S+) from its inertia and (?P<l>\S+) (?P=u) from the loads \(at "
+     r"(?P<c>\S+) position\(s\)\)", lambda m: f"звено {m['b']} может "
+     + ("поворачиваться вокруг оси" if m["turn"] else "скользить вдоль")
+     + f" ({m['axis']}) в положении {m['p']}"
+     + (f" через пары {m['on']}" if m["on"] else "")
+     + ", и его не удерживает ни одна пара, но его силы инерции и нагрузки в этом движении "
+     + ("не уравновешены: момент " if m["turn"] else "не уравновешены: сила ")
+     + f"{m['i']} {m['u']} от сил инерции и {m['l']} {m['u']} от нагрузок (положений: "
+     f"{m['c']})"),
+    (_p("make body {b}'s inertia tensor symmetric about that axis with no load turning it "
+        "about the axis (inertia: rod, or [J_axis, J, J]), or hold the motion with a joint "
+        "(revolute instead of spherical)"), "сделайте тензор инерции звена {b} "
+     "симметричным относительно этой оси и без нагрузок, поворачивающих его вокруг неё "
+     "(inertia: rod или [J_axis, J, J]), или удержите это движение парой (вращательной "
+     "вместо сферической)"),
 ]

@@ -565,9 +565,9 @@ ENTRIES: list[Entry] = [
      "задайте нормаль плоскости [nx, ny, nz] или два её угла a и b"),
     (r"the plane's normal is zero", "нормаль плоскости нулевая"),
     (r"'(?P<k>[^']*)' is not solved for a model with spatial contours yet \(their "
-     r"dynamics reads bodies, forces, moments and gravity only\)", "'{k}' пока не решается "
-     "для модели с пространственными контурами (их динамика учитывает только звенья, "
-     "силы, моменты и силу тяжести)"),
+     r"dynamics reads bodies, joints, forces, moments and gravity only\)", "'{k}' пока не "
+     "решается для модели с пространственными контурами (их динамика учитывает только "
+     "звенья, кинематические пары, силы, моменты и силу тяжести)"),
     (r"remove '(?P<k>[^']*)', or solve the planar part as a separate model",
      "удалите '{k}' или решите плоскую часть как отдельную модель"),
     (r"contour (?P<c>\S+) is planar; a convention of parameter ranges applies to a spatial "
@@ -625,4 +625,11 @@ ENTRIES: list[Entry] = [
     (r"solve it with mechloop\.solve \(mechloop solve\), or vary its dimensions with "
      r"mechloop sweep", "решите её функцией 'mechloop.solve' ('mechloop solve') или "
      "варьируйте её размеры командой 'mechloop sweep'"),
+    # a joint's axis in a model with spatial contours (model/dynamic.py)
+    (r"a joint's axis is a vector number K \(along vector K\) or a direction \[x, y, z\]",
+     "ось пары — номер вектора K (вдоль вектора K) или направление [x, y, z]"),
+    (r"the joints' reactions need the bodies they connect, and the model has no bodies",
+     "для реакций в парах нужны соединяемые ими звенья, а звеньев в модели нет"),
+    (r"list the moving bodies under bodies:, or remove joints",
+     "перечислите подвижные звенья в 'bodies:' или удалите 'joints'"),
 ]
