@@ -398,12 +398,14 @@ def block_rates(plan: Plan, values: list[Array], rates: list[Array], accels: lis
 
 
 def _directions_in_convention(model, block, index: dict[str, int], U: Array,
-                              good: NDArray[np.bool_]) -> set[int]:
+                              good: NDArray[np.bool_], roots: set[str]) -> set[int]:
     """Move the vectors of ``block`` whose α and β are both its unknowns into their
     contour's parameter-range convention (Newton may end on either of the two angle
     pairs of one direction, ``(α, β)`` and ``(π − α, β + π)``), then make them continuous
     along the positions as a single contour's are (:func:`mechloop.spatial.solve.
-    _continuous`: α of convention 1 from [0, 2π)).  ``U`` (…, m) is changed in place;
+    _continuous`: α of convention 1 from [0, 2π)).  A vector whose α or β another
+    parameter links to (``roots``) keeps Newton's pair: the other pair would move the linked
+    one, a different assembly, not the same direction.  ``U`` (…, m) is changed in place;
     returns the columns moved."""
     from mechloop.spatial.solve import _continuous
     from mechloop.spatial.vector import in_convention
@@ -417,7 +419,8 @@ def _directions_in_convention(model, block, index: dict[str, int], U: Array,
             continue
         for n in contour.vectors:
             i, j = index.get(f"a{abs(n)}"), index.get(f"b{abs(n)}")
-            if i is None or j is None or i in moved:
+            if i is None or j is None or i in moved or \
+                    {f"a{abs(n)}", f"b{abs(n)}"} & roots:
                 continue
             with np.errstate(invalid="ignore"):
                 a, b = in_convention(U[..., i], U[..., j], convention=contour.convention)
@@ -498,7 +501,8 @@ def solve_coupled(model, structure, block, params, singular_sin: float
     U = U.reshape(*shape, m)
     status = status.reshape(shape)
     good = status == OK
-    paired = _directions_in_convention(model, block, index, U, good)
+    roots = {link.root for name, link in structure.links.items() if name != link.root}
+    paired = _directions_in_convention(model, block, index, U, good, roots)
     for i, name in enumerate(block.unknowns):
         if name[0] == "a" and good.any() and i not in paired:
             U[..., i] = unwrap_angles(U[..., i], good)
