@@ -5,12 +5,15 @@ hover value is the API's at the pointed position; the wheel zooms (the x range s
 a double click shows everything again; the slider moves the cursor to the position's x
 (and the hodograph's marker to the reaction at that position); a click on a curve moves
 the slider; the view follows the language.  The README's screenshot of the views is made
-here (``docs/screenshots/web-views.png``)."""
+here (``docs/screenshots/web-views.png``).  The view's file downloads as the API draws it
+(the curves of ``mechloop plot`` and the current position marked)."""
 
 from __future__ import annotations
 
+import json
 import math
 import re
+import urllib.request
 
 import pytest
 from selenium.webdriver.common.action_chains import ActionChains
@@ -19,6 +22,7 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 from test_web_browser import (  # noqa: F401  (the fixtures: one server/browser here)
     SHOTS,
+    _downloaded,
     _open,
     _post,
     _wait,
@@ -64,6 +68,17 @@ def _set_position(driver, k: int) -> None:
         "data-position") == str(k), "the view did not follow the slider")
 
 
+def _post_text(base: str, data: dict) -> str:
+    request = urllib.request.Request(base + "/api/view", data=json.dumps(data).encode(),
+                                     headers={"content-type": "application/json"})
+    with urllib.request.urlopen(request, timeout=30) as answer:
+        return answer.read().decode()
+
+
+def _paths(svg: str) -> list[str]:
+    return re.findall(r'<path d="([^"]{40,})"', svg)
+
+
 def _counts(data: dict) -> tuple[list[int], int]:
     """The finite points of each curve and the number of point groups, as the API says."""
     curves, points = [], 0
@@ -88,12 +103,12 @@ def _at(data: dict, name: str, k: int) -> tuple[float, float]:
     return s["x"][i], s["y"][i]
 
 
-def test_every_view_kind_is_drawn_from_the_apis_series(browser, server):
+def test_every_view_kind_is_drawn_from_the_apis_series(browser, server):  # noqa: F811
     base, _ = server
     _open(browser, base + f"/?example={ENGINE}")
     for kind, names, joint in KINDS:
         _show(browser, kind, names, joint)
-        data = _api(browser, base, kind, names, joint)
+        data = browser.execute_script("return viewPlot.data")  # the API's answer
         curves, points = _counts(data)
         drawn = [int(p.get_attribute("data-points")) for p in
                  browser.find_elements(By.CSS_SELECTOR, "#view-plot path.view-curve")]
@@ -113,7 +128,8 @@ def test_every_view_kind_is_drawn_from_the_apis_series(browser, server):
             assert curves, kind
 
 
-def test_hover_zoom_slider_and_click_on_the_views(browser, server):
+def test_hover_zoom_slider_and_click_on_the_views(browser, server,  # noqa: F811
+                                                  downloads):  # noqa: F811
     base, _ = server
     _open(browser, base + f"/?example={ENGINE}")
     _show(browser, "reduced")
@@ -168,6 +184,16 @@ def test_hover_zoom_slider_and_click_on_the_views(browser, server):
         == (x, y)
     vector = browser.find_element(By.CSS_SELECTOR, "#view-plot line.view-vector")
     assert math.isclose(float(vector.get_attribute("x2")), float(marker.get_attribute("cx")))
+    # the file of the reduced view: the server's SVG with position 5 marked
+    _show(browser, "reduced")
+    Select(browser.find_element(By.ID, "view-format")).select_by_value("svg")
+    browser.find_element(By.ID, "view-download").click()
+    svg_file = _downloaded(browser, downloads / f"{ENGINE}-reduced.svg").read_text()
+    text = browser.find_element(By.ID, "editor").get_property("value")
+    expected = _post_text(base, {"text": text, "example": ENGINE, "kind": "reduced",
+                                 "position": 5})
+    assert _paths(svg_file) == _paths(expected) and 'id="position' in svg_file
+    _show(browser, "hodograph", joint="J1_2")
     browser.execute_script("document.getElementById('view-kind').scrollIntoView()")
     SHOTS.mkdir(parents=True, exist_ok=True)
     browser.save_screenshot(str(SHOTS / "web-views.png"))
