@@ -138,6 +138,8 @@ def test_hover_zoom_slider_and_click_on_the_views(browser, server,  # noqa: F811
     svg = browser.find_element(By.ID, "view-plot")
     cursors = browser.find_elements(By.CSS_SELECTOR, "#view-plot line.view-cursor")
     assert len(cursors) == 2 and {float(c.get_attribute("data-x")) for c in cursors} == {10}
+    at = browser.execute_script("return arguments[0].viewFrames.map((f) => f.x(10))", svg)
+    assert [float(c.get_attribute("x1")) for c in cursors] == pytest.approx(at)
     # hover on the J_red marker: the tip says the API's value at position 10
     marker = browser.find_element(By.CSS_SELECTOR,
                                   "#view-plot circle.view-marker[data-name='J_red']")
