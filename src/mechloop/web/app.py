@@ -20,8 +20,10 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
   six parameters, ``png`` or ``svg``;
 * ``POST /api/structure`` ``{text, path|example}`` — the structure formula, the Assur
   groups and the mobility (:func:`mechloop.web.exports.structure`);
-* ``POST /api/view`` ``{text, path|example, kind, names, joint, position, lang}`` — one
-  of the other views of ``mechloop plot`` as SVG (:mod:`mechloop.web.views`);
+* ``POST /api/view`` ``{text, path|example, kind, names, joint, position, op, lang,
+  format}`` — one of the other views of ``mechloop plot`` (:mod:`mechloop.web.views`):
+  ``svg`` (default) or ``png``, or ``data``: the JSON of the page's interactive plot
+  read back from the same figure (:func:`mechloop.web.views.view_data`);
 * ``POST /api/jobs`` ``{text, path|example, kind: "synthesis", iterations?, time?}`` —
   a background job (:mod:`mechloop.web.jobs`), ``{id}``; ``GET /api/jobs/{id}`` — its
   state, progress, best design so far and result; ``POST /api/jobs/{id}/cancel`` — stop
@@ -79,7 +81,7 @@ from mechloop.web.language import problems_in, request_language
 from mechloop.web.payload import solution
 from mechloop.web.safety import Guard, WebError, Workspace
 from mechloop.web.units import unit_choices
-from mechloop.web.views import view_svg
+from mechloop.web.views import VIEW_TYPES, view_data, view_svg
 from mechloop.web.worker import REPORT_SECONDS, SOLVE_SECONDS, WorkFailed, run_limited
 
 STATIC = Path(__file__).parent / "static"
@@ -312,11 +314,17 @@ def create_app(folder: str | Path, *, token: str | None = None,
         position = data.get("position", 0)
         if isinstance(position, bool) or not isinstance(position, int):
             raise WebError("'position' is not a whole number", "give a position number")
-        content = await run_in_threadpool(
-            run_limited, view_svg, data.get("text", ""), path, root,
-            str(data.get("kind", "")), names, None if joint is None else str(joint),
-            position, exports.language(data.get("lang", "en")), seconds=solve_seconds)
-        return Response(content, media_type="image/svg+xml")
+        fmt = exports.pick("figure", data.get("format", "svg"), {**VIEW_TYPES, "data": ""})
+        args = (data.get("text", ""), path, root, str(data.get("kind", "")), names,
+                None if joint is None else str(joint), position,
+                exports.language(data.get("lang", "en")), str(data.get("op") or "ratio"))
+        if fmt == "data":
+            content = await run_in_threadpool(run_limited, view_data, *args,
+                                              seconds=solve_seconds)
+            return Response(content, media_type="application/json")
+        content = await run_in_threadpool(run_limited, view_svg, *args, fmt,
+                                          seconds=solve_seconds)
+        return Response(content, media_type=VIEW_TYPES[fmt])
 
     async def job_start(request: Request) -> Response:
         data = await body(request)

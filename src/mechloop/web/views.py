@@ -1,12 +1,15 @@
-"""The other plot kinds of the page, drawn by the server as SVG: the views of
-``mechloop plot`` (increment, angle between vectors, reduced characteristics, balancing
-load, reactions, hodograph, energy summary, machine motion) with the same functions and
-options, in the page's language, and — where the x axis is the position number — the
-current position marked by a vertical line (gid ``'position'``).
+"""The other plot kinds of the page: the views of ``mechloop plot`` (parameters,
+combination, increment, angle between vectors, reduced characteristics, balancing load,
+reactions, hodograph, energy summary, machine motion) with the same functions and options,
+in the page's language — drawn by the server as an SVG or PNG file (where the x axis is
+the position number, the current position marked by a vertical line, gid ``'position'``),
+or as the data of the page's own interactive plot (:func:`view_data`), read back from the
+same figure (:mod:`mechloop.web.figure_data`) so it is what the file shows.
 """
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 from typing import Any
 
@@ -15,16 +18,24 @@ from mechloop.web.documents import read_model
 from mechloop.web.safety import WebError
 
 #: The kinds the page offers, and whether they need a model with bodies.
-VIEW_KINDS = {"increment": False, "angle": False, "reduced": True, "balancing": True,
-              "reactions": True, "hodograph": True, "summary": True, "motion": True}
+VIEW_KINDS = {"parameters": False, "combination": False, "increment": False, "angle": False,
+              "reduced": True, "balancing": True, "reactions": True,
+              "hodograph": True, "summary": True, "motion": True}
 #: The kinds drawn against the position number (the current position is marked there).
-MARKED = ("increment", "angle", "reduced", "balancing", "reactions")
+MARKED = ("parameters", "combination", "increment", "angle", "reduced", "balancing",
+          "reactions")
+#: What the x axis of a kind is, for :func:`~mechloop.web.figure_data.figure_data`.
+OVER = {**dict.fromkeys(MARKED, "position"), "hodograph": "xy", "summary": "table",
+        "motion": "cycle"}
+#: The files a view is drawn to.
+VIEW_TYPES = {"svg": "image/svg+xml", "png": "image/png"}
 
 
 def view_figure(model: Any, kind: str, *, names: list[str], joint: str | None,
-                position: int) -> Any:
+                position: int, op: str = "ratio", mark: bool = True) -> tuple[Any, int]:
     """The matplotlib figure of view ``kind`` of a loaded model, as ``mechloop plot``
-    draws it (display units of the model), with the current ``position`` marked."""
+    draws it (display units of the model), with the current ``position`` marked (``mark``;
+    also the reference of an increment), and the number of positions."""
     from mechloop.dynamics.analysis import solve_dynamics
     from mechloop.output.display import plot_display, resolve
     from mechloop.solve.kinematics import solve
@@ -38,9 +49,20 @@ def view_figure(model: Any, kind: str, *, names: list[str], joint: str | None,
                        "add bodies (see examples/crank_slider_dynamics.yaml)")
     display = plot_display(resolve(model.display)) or DEFAULT_DISPLAY
     results = solve_dynamics(model) if model.bodies else solve(model)
-    count = len(results.kinematics.time if model.bodies else results.time)
+    count = (results.kinematics if model.bodies else results).positions.size
     position = min(max(int(position), 0), count - 1)
-    if kind == "increment":
+    if kind == "parameters":
+        if not names:
+            raise WebError("the parameters plot needs a name", "give names, e.g. r3,dr3")
+        figure = curves.plot_parameters(results, names, display=display)
+    elif kind == "combination":
+        if len(names) != 2:
+            raise WebError("a combination needs two names", "give two names, e.g. r3,r1")
+        b: str | float = names[1]
+        with contextlib.suppress(ValueError):
+            b = float(names[1])
+        figure = curves.plot_combination(results, names[0], b, op, display=display)
+    elif kind == "increment":
         if len(names) != 1:
             raise WebError("the increment needs one parameter", "give one name, e.g. r3")
         figure = curves.plot_increment(results, names[0], position, display=display)
@@ -64,16 +86,18 @@ def view_figure(model: Any, kind: str, *, names: list[str], joint: str | None,
         figure = dynamics.plot_summary(results, display=display)
     else:
         figure = dynamics.plot_machine_motion(results, display=display)
-    if kind in MARKED:
+    if kind in MARKED and mark:
         for ax in figure.axes:
             ax.axvline(position, color="#d62728", linewidth=1.0, linestyle=":",
                        gid="position")
-    return figure
+    return figure, count
 
 
 def view_svg(text: str, path: Path, root: Path, kind: str, names: list[str],
-             joint: str | None, position: int, lang: str) -> bytes:
-    """The SVG of :func:`view_figure` for the model in ``text`` (run in a child)."""
+             joint: str | None, position: int, lang: str, op: str = "ratio",
+             fmt: str = "svg") -> bytes:
+    """The file (``fmt``: svg or png) of :func:`view_figure` for the model in ``text``
+    (run in a child)."""
     import tempfile
 
     from mechloop.views.figure import save_figure
@@ -81,11 +105,34 @@ def view_svg(text: str, path: Path, root: Path, kind: str, names: list[str],
 
     document = read_model(text, path, root)
     try:
-        figure = view_figure(document.model, kind, names=names, joint=joint,
-                             position=position)
+        figure, _ = view_figure(document.model, kind, names=names, joint=joint,
+                                position=position, op=op)
     except ModelError as exc:
         raise document.locate(exc) from None
     with tempfile.TemporaryDirectory(prefix="mechloop-web-") as folder:
-        target = Path(folder) / "view.svg"
+        target = Path(folder) / f"view.{fmt}"
         save_figure(translate(figure, lang), target)
         return target.read_bytes()
+
+
+def view_data(text: str, path: Path, root: Path, kind: str, names: list[str],
+              joint: str | None, position: int, lang: str, op: str = "ratio") -> bytes:
+    """The data of :func:`view_figure` for the page's interactive plot, as JSON bytes
+    (run in a child): ``{kind, count, reference, panels, tables}`` — the panels and
+    tables of :func:`~mechloop.web.figure_data.figure_data`, read back from the figure
+    the SVG shows (without its position mark), the number of positions and ``reference``,
+    the position an increment is taken from (``position``; null for other kinds)."""
+    import orjson
+
+    from mechloop.views.russian import translate
+    from mechloop.web.figure_data import figure_data
+
+    document = read_model(text, path, root)
+    try:
+        figure, count = view_figure(document.model, kind, names=names, joint=joint,
+                                    position=position, op=op, mark=False)
+    except ModelError as exc:
+        raise document.locate(exc) from None
+    data = figure_data(translate(figure, lang), count=count, over=OVER[kind], lang=lang)
+    data.update(kind=kind, count=count, reference=position if kind == "increment" else None)
+    return orjson.dumps(data, option=orjson.OPT_SERIALIZE_NUMPY)

@@ -214,4 +214,8 @@ ENTRIES: list[Entry] = [
      "задание длилось дольше {n} с и было остановлено"),
     (r"use fewer values, fewer positions or a shorter duration",
      "возьмите меньше значений, меньше положений или меньшую длительность"),
+    # the views of the page (web/views.py)
+    (r"the parameters plot needs a name", "для графика параметров нужно имя"),
+    (r"give names, e\.g\. (?P<ex>\S+)", "укажите имена, например {ex}"),
+    (r"give two names, e\.g\. (?P<ex>\S+)", "укажите два имени, например {ex}"),
 ]

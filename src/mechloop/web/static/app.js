@@ -293,6 +293,7 @@ function render() {
   drawPlot($("plot"), solution,
     plotted().map((name) => solution.columns.find((c) => c.name === name)), k,
     plotZoom.rangeFor(solution.count - 1, k));
+  drawViewPlot();  // plots.js: the view's cursor at this position
   let label = t("position", { k, n: solution.count - 1 });
   if (solution.time) label += ", " + t("time", { t: format(solution.time[k]) });
   $("position-label").textContent = label;
@@ -339,7 +340,6 @@ function setPosition(k) {
   state.position = k;
   $("slider").value = k;
   render();
-  viewLater();
 }
 
 // KDAM's play modes: forward or backward, one cycle looped, at a chosen speed; the step
@@ -368,7 +368,6 @@ function togglePlay() {
   }
   $("play").dataset.i18n = state.timer ? "pause" : "play";
   $("play").textContent = t($("play").dataset.i18n);
-  if (!state.timer) viewLater();  // paused: the view marks where it stopped
 }
 
 function stepOnce(direction) {
@@ -377,48 +376,71 @@ function stepOnce(direction) {
 }
 
 // ------------------------------------------------------------------ other views
-// The other plot kinds of mechloop plot, drawn by the server as SVG in the page's
-// language; asked again when the model, the language or (paused) the position changes.
-const view = { pending: null, url: null, asked: 0 };
+// The other plot kinds of mechloop plot, drawn by the page (plots.js) from the data the
+// server reads back from the same figure, in the page's language; asked again when the
+// model, the language or the view's choices change (the position only moves its cursor).
+const view = { asked: 0 };
+// The choices each kind takes: names, a joint, the operation, the increment's reference.
+const VIEW_INPUTS = {
+  combination: ["names", "op"], increment: ["names", "from"], angle: ["names"],
+  reactions: ["names"], hodograph: ["joint"],
+};
 
-function viewLater() {
-  clearTimeout(view.pending);
-  if (state.timer) return;  // not while playing: one image per position would be too many
-  view.pending = setTimeout(loadView, 300);
+function viewBody(kind) {
+  const names = $("view-names").value.split(",").map((n) => n.trim()).filter(Boolean);
+  const joints = state.solution ? state.solution.diagram.joints.map((j) => j.name) : [];
+  const joint = $("view-joint").value.trim() || (kind === "hodograph" ? joints[0] : null);
+  return Object.assign({ text: $("editor").value, kind, names, joint: joint || null,
+    position: Math.max(0, Math.round(Number($("view-from").value) || 0)),
+    op: $("view-op").value, lang: LANG }, state.source);
 }
 
 async function loadView() {
   const kind = $("view-kind").value;
-  const image = $("view-image");
+  const inputs = VIEW_INPUTS[kind] || [];
+  $("view-names").hidden = !inputs.includes("names");
+  $("view-joint").hidden = !inputs.includes("joint");
+  $("view-op").hidden = !inputs.includes("op");
+  $("view-from-label").hidden = !inputs.includes("from");
   const problem = $("view-problem");
+  const shown = (on) => {
+    $("view-downloads").hidden = !on;
+    $("view-help").hidden = !on;
+  };
   if (!kind || !state.solution) {
-    image.hidden = true;
+    hideViewData();
     problem.hidden = true;
+    shown(false);
     return;
   }
   const asked = ++view.asked;
-  const names = $("view-names").value.split(",").map((n) => n.trim()).filter(Boolean);
-  const body = Object.assign({ text: $("editor").value, kind, names,
-    joint: $("view-joint").value.trim() || null, position: state.position, lang: LANG },
-  state.source);
+  const body = Object.assign(viewBody(kind), { format: "data" });
   const response = await postJSON("api/view", body);
+  const answer = await read(response);
   if (asked !== view.asked) return;
   if (!response.ok) {
-    const answer = await read(response);
     problem.textContent = t("viewFailed", { error: answer.error })
       + (answer.hint ? ` (${t("fix")}: ${answer.hint})` : "");
     problem.hidden = false;
-    image.hidden = true;
+    hideViewData();
+    shown(false);
     return;
   }
-  const blob = await response.blob();
-  if (view.url) URL.revokeObjectURL(view.url);
-  view.url = URL.createObjectURL(blob);
-  image.dataset.kind = kind;
-  image.dataset.position = body.position;
-  image.src = view.url;
-  image.hidden = false;
   problem.hidden = true;
+  showViewData(answer);
+  shown(true);
+  document.body.dataset.view = `${kind}:${asked}`;
+}
+
+async function viewFile() {
+  const kind = $("view-kind").value;
+  if (!kind) return;
+  const format = $("view-format").value;
+  const body = viewBody(kind);
+  delete body.text;  // download() sends the editor's text
+  if (kind !== "increment") body.position = state.position;  // marked in the file
+  await download("api/view", Object.assign(body, { format }),
+    fileName(`-${kind}.${format}`), { busy: "downloading", done: "downloaded" });
 }
 
 // ------------------------------------------------------------------ background jobs
@@ -778,6 +800,9 @@ window.addEventListener("DOMContentLoaded", async () => {
   $("view-kind").addEventListener("change", loadView);
   $("view-names").addEventListener("change", loadView);
   $("view-joint").addEventListener("change", loadView);
+  $("view-op").addEventListener("change", loadView);
+  $("view-from").addEventListener("change", loadView);
+  $("view-download").addEventListener("click", viewFile);
   $("job-start").addEventListener("click", jobStart);
   $("job-cancel").addEventListener("click", jobCancel);
   $("job-open").addEventListener("click", jobOpen);
