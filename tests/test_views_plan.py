@@ -258,8 +258,8 @@ def test_default_limits_are_shared_by_every_position_and_the_scale_is_equal():
 def test_a_wide_mechanism_spans_the_figure_with_its_legend_below_and_a_tall_one_beside():
     """The slider-crank (wider than tall): the drawing takes the figure's width, the legend
     in columns under the x-axis label clear of the axes and their labels, and the figure's
-    height fits the drawing (little empty space); a tall box keeps the legend at the
-    right."""
+    height fits the drawing (little empty space); a box twice as tall as wide keeps the
+    legend at the right."""
     results = mechloop.solve(load("crank_slider.yaml"))
     figure = plot_plan(results, 9)
     FigureCanvasAgg(figure).draw()

@@ -504,12 +504,17 @@ def figure_size(limits: Limits, width: float = 8.0) -> tuple[float, float]:
 LEGEND_COLUMNS = 3
 
 
+#: The tallest drawing (height over width of the limits) whose legend goes below it.
+TALLEST_BELOW = 1.5
+
+
 def legend_side(limits: Limits) -> str:
-    """Where the legend leaves the drawing the most room: ``"below"`` for a mechanism at
-    least as wide as it is tall (the drawing takes the figure's width), ``"right"`` for a
-    taller one (the legend fills the width the drawing leaves)."""
+    """Where the legend leaves the drawing the most room: ``"below"`` unless the
+    mechanism is more than :data:`TALLEST_BELOW` times as tall as wide (the drawing takes
+    the figure's width), ``"right"`` for a taller one (the legend fills the width the
+    drawing leaves)."""
     x0, x1, y0, y1 = limits
-    return "below" if x1 - x0 >= y1 - y0 else "right"
+    return "below" if y1 - y0 <= TALLEST_BELOW * (x1 - x0) else "right"
 
 
 def figure_size_below(limits: Limits, entries: int, width: float = 8.0
