@@ -13,7 +13,10 @@ Coordinates come from :class:`~mechloop.dynamics.points.Placement` (each contour
 its ``start:``) and are drawn in the model's length unit unless ``length_unit`` says
 otherwise.  The scale is the same on both axes; by default the limits cover every position
 (so the frames of an animation share one scale).  A position where the chain breaks draws
-only what is known there and says "chain break at position k" — never a NaN.
+only what is known there and says "chain break at position k" — never a NaN.  A new
+figure is shaped for the limits: the legend goes below the drawing in columns (the drawing
+spanning the figure's width) unless the mechanism is much taller than wide, when it goes
+beside it (:func:`legend_side`).
 
 The lower-level pieces (:func:`plan_scene`, :func:`setup_axes`, :func:`draw_position`) are
 what :mod:`mechloop.views.animation` uses to draw its frames.
