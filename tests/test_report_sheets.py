@@ -259,8 +259,9 @@ def test_planetary_sheet_gives_willis_ratio_conditions_and_speeds():
     sheet = gear_sheet(task, "en")
     assert sheet.title == "Sheet 3. Planetary train"
     teeth, train = sheet.tables
-    assert teeth.rows == [("central gear a (input)", "z_a", "20"), ("planet g", "z_g", "30"),
-                          ("central gear b (fixed)", "z_b", "80")]
+    assert teeth.rows == [("central gear a", "a", "20", "input"), ("planet g", "g", "30", "—"),
+                          ("central gear b", "b", "80", "fixed"),
+                          ("carrier h", "h", "—", "output")]
     rows = {r[1]: r for r in train.rows if r[1]}
     # simple train 20/30/80, m = 2, sun at 1500 rpm, ring fixed (closed forms):
     # i_ab^h = −z_b/z_a, i_ah = 1 + z_b/z_a, a_w = m(z_a + z_g)/2, n_h = n_a/i_ah,

@@ -255,6 +255,31 @@ def test_default_limits_are_shared_by_every_position_and_the_scale_is_equal():
     assert fixed.get_xlim() == (-0.1, 0.3) and fixed.get_ylim() == (-0.1, 0.1)
 
 
+def test_a_wide_mechanism_spans_the_figure_with_its_legend_below_and_a_tall_one_beside():
+    """The slider-crank (wider than tall): the drawing takes the figure's width, the legend
+    in columns under the x-axis label clear of the axes and their labels, and the figure's
+    height fits the drawing (little empty space); a box twice as tall as wide keeps the
+    legend at the right."""
+    results = mechloop.solve(load("crank_slider.yaml"))
+    figure = plot_plan(results, 9)
+    FigureCanvasAgg(figure).draw()
+    renderer = figure.canvas.get_renderer()
+    ax = figure.axes[0]
+    box, legend = ax.get_window_extent(renderer), ax.get_legend().get_window_extent(renderer)
+    labels = ax.xaxis.get_tightbbox(renderer)
+    assert box.width >= 0.85 * figure.bbox.width
+    assert legend.y1 <= labels.y0 and labels.y1 <= box.y1 and legend.y0 >= figure.bbox.y0
+    assert figure.bbox.x0 <= legend.x0 and legend.x1 <= figure.bbox.x1
+    assert ax.get_legend()._ncols == 3
+    assert figure.get_tightbbox(renderer).height >= 0.9 * figure.get_size_inches()[1]
+    tall = plot_plan(results, 9, limits=(-0.1, 0.1, -0.2, 0.2))
+    FigureCanvasAgg(tall).draw()
+    renderer = tall.canvas.get_renderer()
+    ax = tall.axes[0]
+    assert ax.get_legend().get_window_extent(renderer).x0 >= \
+        ax.get_window_extent(renderer).x1
+
+
 def test_grid_and_axes_switch_on_and_off():
     results = mechloop.solve(load("crank_slider.yaml"))
     plain = plot_plan(results, 3, grid=False, axes=False).axes[0]

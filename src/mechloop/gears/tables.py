@@ -116,7 +116,7 @@ def wolfrom_table(train: WolfromTrain, speed_rpm: float) -> pd.DataFrame:
     speeds = train.speeds(speed_rpm * np.pi / 30.0)
     first, second = train.assembly
     rows = [("first stage i_ah = 1 + z_b/z_a", train.carrier_ratio, ""),
-            ("second stage, Willis i_be^h = z_b z_f/(z_g z_e)", train.willis_be, ""),
+            ("second stage, Willis i_eb^h = z_b z_f/(z_g z_e)", train.willis_be, ""),
             ("ratio i_ae = ω_a/ω_e (b fixed)", train.ratio, ""),
             ("centre distance of the planets a_w", train.a_w, "mm"),
             ("coaxial (all three meshes at a_w)", float(train.coaxial), "1 = yes"),

@@ -60,7 +60,8 @@ def plot_velocity_plan(train: PlanetaryTrain, speed_rpm: float = 1000.0) -> Figu
     for key, colour, label, top in (("a", "tab:blue", "a", plan.r_a),
                                     ("h", "tab:green", "carrier h", plan.a_w),
                                     ("b", "k", "b", plan.r_b)):
-        label += " (fixed)" if key == held else ""
+        label += {held: " (fixed)", train.driver: " (input)",
+                  train.output: " (output)"}[key]
         w = plan.omega[key]
         ys = np.array([0.0, top])
         ax.plot(w * ys / 1000.0, ys, color=colour,

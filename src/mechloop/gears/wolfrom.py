@@ -7,7 +7,7 @@ train (ring ``b`` fixed) driving the carrier; the second is the two-ring train `
 seen from that carrier.  Willis' formula for each:
 
     ω_h = ω_a · z_a/(z_a + z_b),
-    (ω_e − ω_h)/(ω_b − ω_h) = i_be^h = z_b z_f/(z_g z_e)   (two internal meshes),
+    (ω_e − ω_h)/(ω_b − ω_h) = i_eb^h = z_b z_f/(z_g z_e)   (two internal meshes),
 
 so with ``ω_b = 0``
 
@@ -77,7 +77,8 @@ class WolfromTrain:
 
     @property
     def willis_be(self) -> float:
-        """``i_be^h = z_b z_f/(z_g z_e)`` of the second stage, seen from the carrier."""
+        """``i_eb^h = (ω_e − ω_h)/(ω_b − ω_h) = z_b z_f/(z_g z_e)`` of the second stage,
+        seen from the carrier."""
         return self.z_b * self.z_f / (self.z_g * self.z_e)
 
     @property

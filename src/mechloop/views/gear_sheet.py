@@ -1,11 +1,15 @@
 """Sheet 3 of the course project, the gear pair and/or the planetary train (a ``mechloop
 gear`` document), as content: the meshing drawing, the geometry table with the ISO 21771
 names and units, the checks (undercut, pointed tooth, interference, contact ratio) and the
-specific sliding; for a planetary train its tooth numbers, the ratio by Willis' formula, the
-conditions (coaxiality, assembly, neighbours) and the velocity plan — in English or Russian.
+specific sliding; for a planetary train (a James 2K-H train with any member held and any
+input, or the Wolfrom train) its members with their tooth numbers and roles, the ratio by
+Willis' formula read for the member held, the conditions (coaxiality, assembly, neighbours),
+the speeds and the velocity plan (:mod:`mechloop.views.train_sheet`) — in English or
+Russian.
 
 Every number comes from :mod:`mechloop.gears` (:func:`mechloop.gears.tables.pair_table`,
-:meth:`mechloop.gears.GearPair.checks`, :class:`mechloop.gears.PlanetaryTrain`); lengths
+:meth:`mechloop.gears.GearPair.checks`, :class:`mechloop.gears.PlanetaryTrain`,
+:class:`mechloop.gears.wolfrom.WolfromTrain`); lengths
 in mm, angles in degrees, as the gear documents are.
 """
 
@@ -29,7 +33,7 @@ from mechloop.gears.drawing import draw_mesh, plot_sliding
 from mechloop.gears.pair import GearPair
 from mechloop.gears.planetary import PlanetaryTrain
 from mechloop.gears.tables import pair_table
-from mechloop.gears.velocity_plan import plot_velocity_plan
+from mechloop.gears.wolfrom import WolfromTrain
 from mechloop.model.document import located_error
 from mechloop.views.sheet import (
     FigureItem,
@@ -38,6 +42,13 @@ from mechloop.views.sheet import (
     localized_sheet,
     number_text,
     translate_figure,
+)
+from mechloop.views.train_sheet import (
+    PLAN_WORDS_RU,
+    TRAIN_TEXT,
+    train_paragraphs,
+    train_plan,
+    train_tables,
 )
 
 
@@ -49,7 +60,7 @@ class GearTask:
 
     pair: GearPair | None
     pair_name: str
-    train: PlanetaryTrain | None
+    train: PlanetaryTrain | WolfromTrain | None
     train_name: str
     speed: float
     target: float | None
@@ -69,12 +80,6 @@ def load_gears(path: str | os.PathLike[str]) -> GearTask:
     spec = doc.planetary
     if spec is not None:
         train = train_of(spec, file=file, lines=lines)
-        if spec.scheme == "wolfrom" or (spec.fixed, spec.input) != ("b", "a"):
-            raise located_error([Problem(("planetary", "scheme"), "the gear sheet of the "
-                                         "report shows a 2K-H train driven by a with b "
-                                         "fixed", "analyse this train with mechloop gear "
-                                         "planetary; give the report a 2K-H train")],
-                                file, lines)
         if train is None:  # the best design of the choice for the target ratio
             choice = choice_of(spec, file=file, lines=lines)
             if not len(choice):
@@ -85,7 +90,7 @@ def load_gears(path: str | os.PathLike[str]) -> GearTask:
                     else 0.0, None if spec is None else spec.target_ratio)
 
 
-TEXT: dict[str, dict[str, str]] = {
+PAIR_TEXT: dict[str, dict[str, str]] = {
     "en": {
         "pair": "Sheet 3. Gear pair", "train": "Sheet 3. Planetary train",
         "both": "Sheet 3. Gear pair and planetary train",
@@ -103,25 +108,6 @@ TEXT: dict[str, dict[str, str]] = {
         "fig_mesh": "Meshing of the gear pair: circles, line of action N1N2, active line A–E",
         "fig_sliding": "Specific sliding of the pinion and the wheel along the line of "
                        "action",
-        "train_table": "Planetary train: ratio by Willis' formula and the conditions",
-        "teeth": "Numbers of teeth",
-        "member": "member", "z": "z",
-        "a": "central gear a (input)", "g": "planet g", "f": "planet's second row f",
-        "b": "central gear b (fixed)", "h": "carrier h (output)",
-        "scheme": "scheme", "planets": "number of planets", "module": "module",
-        "willis": "ratio of the train seen from the carrier (Willis)",
-        "ratio": "reduction ratio, b fixed: i_ah = 1 − i_ab^h",
-        "target": "target ratio", "error": "error against the target",
-        "a_w": "centre distance of the planets", "coaxial": "coaxiality (both rows at a_w)",
-        "assembly": "assembly number (whole: the planets can be fitted evenly)",
-        "margin": "clearance between neighbouring planets' tip circles",
-        "speed": "speed of {member}", "rpm": "rpm", "yes": "yes", "no": "no",
-        "cond_ok": "met", "cond_fails": "NOT MET",
-        "cond_coaxial": "Coaxiality: {verdict}.", "cond_assembly": "Assembly: {verdict}.",
-        "cond_neighbours": "Neighbourhood (the planets clear each other): {verdict}.",
-        "fig_plan": "Velocity plan (Kutzbach) of the planetary train",
-        "simple": "simple (a–g–b)", "double_planet": "two-row (a–g, f–b)",
-        "two_rings": "two rings (a–g, f–b)", "two_suns": "two suns (a–g, f–b)",
     },
     "ru": {
         "pair": "Лист 3. Зубчатая передача", "train": "Лист 3. Планетарный механизм",
@@ -145,32 +131,12 @@ TEXT: dict[str, dict[str, str]] = {
         "fig_mesh": "Картина зацепления: окружности, линия зацепления N1N2, активная "
                     "линия A–E",
         "fig_sliding": "Удельное скольжение шестерни и колеса вдоль линии зацепления",
-        "train_table": "Планетарный механизм: передаточное отношение по формуле Виллиса "
-                       "и условия",
-        "teeth": "Числа зубьев",
-        "member": "звено", "z": "z",
-        "a": "центральное колесо a (вход)", "g": "сателлит g", "f": "второй венец "
-             "сателлита f", "b": "центральное колесо b (неподвижное)",
-        "h": "водило h (выход)",
-        "scheme": "схема", "planets": "число сателлитов", "module": "модуль",
-        "willis": "отношение обращённого механизма (формула Виллиса)",
-        "ratio": "передаточное отношение, b неподвижно: i_ah = 1 − i_ab^h",
-        "target": "заданное передаточное отношение", "error": "отклонение от заданного",
-        "a_w": "межосевое расстояние сателлитов", "coaxial": "соосность (оба ряда на a_w)",
-        "assembly": "число сборки (целое: сборка возможна)",
-        "margin": "зазор между вершинами соседних сателлитов",
-        "speed": "частота вращения {member}", "rpm": "об/мин", "yes": "да", "no": "нет",
-        "cond_ok": "выполнено", "cond_fails": "НЕ ВЫПОЛНЕНО",
-        "cond_coaxial": "Условие соосности: {verdict}.",
-        "cond_assembly": "Условие сборки: {verdict}.",
-        "cond_neighbours": "Условие соседства (сателлиты не задевают друг друга): "
-                           "{verdict}.",
-        "fig_plan": "План линейных скоростей планетарного механизма",
-        "simple": "однорядная (a–g–b)", "double_planet": "двухрядная (a–g, f–b)",
-        "two_rings": "с двумя эпициклами (a–g, f–b)",
-        "two_suns": "с двумя солнечными колёсами (a–g, f–b)",
     },
 }
+
+#: Every text of the sheet, the pair's and the train's, by language.
+TEXT: dict[str, dict[str, str]] = {lang: PAIR_TEXT[lang] | TRAIN_TEXT[lang]
+                                   for lang in PAIR_TEXT}
 
 #: The gear pair's quantities (mechloop.gears.tables.pair_table) in Russian.
 QUANTITIES_RU: dict[str, str] = {
@@ -223,11 +189,7 @@ FIGURE_WORDS_RU: dict[str, str] = {
     "specific sliding": "удельное скольжение",
     "pinion": "шестерня",
     "wheel": "колесо",
-    "carrier h": "водило h",
-    "b (fixed)": "b (неподвижное)",
-    "planet g": "сателлит g",
-    "linear speed": "линейная скорость",
-    "distance from the central axis": "расстояние от центральной оси",
+    **PLAN_WORDS_RU,
 }
 
 #: The two numbers each check compares (value, limit).
@@ -248,12 +210,10 @@ def gear_sheet(task: GearTask, lang: str = "en") -> Sheet:
         figures += [_figure(lambda: draw_mesh(task.pair), text["fig_mesh"], lang),
                     _figure(lambda: plot_sliding(task.pair), text["fig_sliding"], lang)]
     if task.train is not None:
-        tables += _train_tables(task, text)
-        train = task.train
-        for key, ok in (("cond_coaxial", train.coaxial), ("cond_assembly", train.assembles),
-                        ("cond_neighbours", train.neighbour_margin > 0)):
-            paragraphs.append(text[key].format(verdict=text["cond_ok" if ok else "cond_fails"]))
-        figures.append(_figure(lambda: _velocity_plan(task, text), text["fig_plan"], lang))
+        tables += train_tables(task.train, task.speed, task.target, text)
+        paragraphs += train_paragraphs(task.train, text)
+        figures.append(_figure(lambda: train_plan(task.train, task.speed, text),
+                               text["fig_plan"], lang))
     title = text["both" if task.pair is not None and task.train is not None else
                  "pair" if task.pair is not None else "train"]
     return localized_sheet(Sheet(3, title, lang, figures, tables, paragraphs))
@@ -314,40 +274,3 @@ def _checks(pair: GearPair, text: dict[str, str]) -> Table:
                      text["ok" if check.ok else "fails"]))
     return Table(text["checks"], (text["check"], text["gear"], text["value"], text["limit"],
                                   text["result"]), rows)
-
-
-def _train_tables(task: GearTask, text: dict[str, str]) -> list[Table]:
-    train = task.train
-    assert train is not None
-    teeth = [(text[key], f"z_{key}", str(z)) for key, z in train.teeth.items()]
-    head = (text["member"], text["symbol"], text["z"])
-    rows = [(text["scheme"], "", text.get(train.scheme.name, train.scheme.name), ""),
-            (text["planets"], "k", str(train.k), ""),
-            (text["module"], "m", number_text(train.m_n), "mm"),
-            (text["willis"], "i_ab^h", number_text(train.willis), ""),
-            (text["ratio"], "i_ah", number_text(train.ratio), "")]
-    if task.target is not None:
-        rows += [(text["target"], "i_ah*", number_text(task.target), ""),
-                 (text["error"], "Δi", number_text(100 * abs(train.ratio - task.target)
-                                                   / abs(task.target)), "%")]
-    rows += [(text["a_w"], "a_w", number_text(train.a_w), "mm"),
-             (text["coaxial"], "", text["yes" if train.coaxial else "no"], ""),
-             (text["assembly"], "", number_text(train.assembly), ""),
-             (text["margin"], "", number_text(train.neighbour_margin), "mm")]
-    speeds = train.speeds(task.speed * math.pi / 30)
-    for key in ("a", "h", "g"):
-        rows.append((text["speed"].format(member=key), f"n_{key}",
-                     number_text(speeds[key] * 30 / math.pi), text["rpm"]))
-    return [Table(text["teeth"], head, teeth),
-            Table(text["train_table"], (text["quantity"], text["symbol"], text["value"],
-                                        text["unit"]), rows)]
-
-
-def _velocity_plan(task: GearTask, text: dict[str, str]) -> Figure:
-    train = task.train
-    assert train is not None
-    figure = plot_velocity_plan(train, task.speed)
-    figure.axes[0].set_title("z = " + "/".join(f"{k}{v}" for k, v in train.teeth.items())
-                             + f", i_ah = {train.ratio:.6g}, n_a = {task.speed:g} "
-                             f"{text['rpm']}", fontsize=9)
-    return figure

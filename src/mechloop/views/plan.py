@@ -13,7 +13,10 @@ Coordinates come from :class:`~mechloop.dynamics.points.Placement` (each contour
 its ``start:``) and are drawn in the model's length unit unless ``length_unit`` says
 otherwise.  The scale is the same on both axes; by default the limits cover every position
 (so the frames of an animation share one scale).  A position where the chain breaks draws
-only what is known there and says "chain break at position k" — never a NaN.
+only what is known there and says "chain break at position k" — never a NaN.  A new
+figure is shaped for the limits: the legend goes below the drawing in columns (the drawing
+spanning the figure's width) unless the mechanism is much taller than wide, when it goes
+beside it (:func:`legend_side`).
 
 The lower-level pieces (:func:`plan_scene`, :func:`setup_axes`, :func:`draw_position`) are
 what :mod:`mechloop.views.animation` uses to draw its frames.
@@ -274,9 +277,11 @@ def _legend_handles(scene: PlanScene, *, marks: bool = True) -> list[Artist]:
 
 
 def setup_axes(ax: Axes, scene: PlanScene, limits: Limits, *, grid: bool = False,
-               axes: bool = True, legend: Sequence[Artist] = ()) -> None:
+               axes: bool = True, legend: Sequence[Artist] = (),
+               legend_side: str = "right") -> None:
     """What does not change from position to position: limits (equal scale), axis labels,
-    grid, the origin lines, the ground symbols and the legend."""
+    grid, the origin lines, the ground symbols and the legend (``legend_side``:
+    ``"right"`` beside the axes, ``"below"`` under the x-axis in columns)."""
     x0, x1, y0, y1 = limits
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
@@ -294,7 +299,12 @@ def setup_axes(ax: Axes, scene: PlanScene, limits: Limits, *, grid: bool = False
         ax.grid(True, color="0.85", lw=0.6)
         ax.set_axisbelow(True)
     draw_ground(ax, scene.ground, GROUND_SIZE * max(x1 - x0, y1 - y0))
-    if legend:
+    if legend and legend_side == "below":
+        from mechloop.views.curves import legend_below
+
+        legend_below(ax, legend)
+        ax.get_legend().set_frame_on(False)
+    elif legend:
         ax.legend(handles=list(legend), loc="upper left", bbox_to_anchor=(1.02, 1.0),
                   fontsize=7, frameon=False, borderaxespad=0.0)
 
@@ -493,16 +503,51 @@ def figure_size(limits: Limits, width: float = 8.0) -> tuple[float, float]:
     return width, height
 
 
-def _target(ax: Axes | None, limits: Limits) -> tuple[Figure, Axes]:
+#: Legend columns when the legend goes below the drawing (as in views.curves).
+LEGEND_COLUMNS = 3
+
+
+#: The tallest drawing (height over width of the limits) whose legend goes below it.
+TALLEST_BELOW = 1.5
+
+
+def legend_side(limits: Limits) -> str:
+    """Where the legend leaves the drawing the most room: ``"below"`` unless the
+    mechanism is more than :data:`TALLEST_BELOW` times as tall as wide (the drawing takes
+    the figure's width), ``"right"`` for a taller one (the legend fills the width the
+    drawing leaves)."""
+    x0, x1, y0, y1 = limits
+    return "below" if y1 - y0 <= TALLEST_BELOW * (x1 - x0) else "right"
+
+
+def figure_size_below(limits: Limits, entries: int, width: float = 8.0
+                      ) -> tuple[float, float]:
+    """A figure size (inches) whose drawing of ``limits`` spans the width, with the
+    two-line title above and the axis labels and a legend of ``entries`` in
+    :data:`LEGEND_COLUMNS` columns below it (sizes of matplotlib's default fonts)."""
+    x0, x1, y0, y1 = limits
+    rows = -(-entries // LEGEND_COLUMNS)
+    drawing = (width - 0.75) * (y1 - y0) / (x1 - x0)
+    return width, float(np.clip(drawing + 1.05 + 0.2 * rows, 3.0, 11.0))
+
+
+def _target(ax: Axes | None, limits: Limits, entries: int = 0
+            ) -> tuple[Figure, Axes, str]:
+    """The figure and axes to draw in and the legend's side: a new figure shaped for
+    ``limits`` and a legend of ``entries`` (:func:`legend_side`), or the given axes with
+    the legend beside them."""
     if ax is None:
-        figure = new_figure(*figure_size(limits))
+        side = legend_side(limits) if entries else "right"
+        size = figure_size_below(limits, entries) if side == "below" else \
+            figure_size(limits)
+        figure = new_figure(*size)
         # "compressed": constrained layout that also fits equal-aspect axes and the legend
         figure.set_layout_engine("compressed")
-        return figure, figure.add_subplot()
+        return figure, figure.add_subplot(), side
     figure = ax.get_figure()
     if not isinstance(figure, Figure):
         raise ViewError("the axes belong to no figure", "pass axes made by Figure.add_subplot")
-    return figure, ax
+    return figure, ax, "right"
 
 
 # ------------------------------------------------------------------------------- the views
@@ -533,9 +578,10 @@ def plot_plan(results: Results | DynamicResults, position: int, *, ax: Axes | No
     scene = plan_scene(results, length_unit=length_unit)
     position = check_position(scene, position)
     box = resolve_limits(scene, limits, position)
-    figure, ax = _target(ax, box)
+    handles = _legend_handles(scene)
+    figure, ax, side = _target(ax, box, len(handles))
     keep_names(figure, model_names(scene.results.model))
-    setup_axes(ax, scene, box, grid=grid, axes=axes, legend=_legend_handles(scene))
+    setup_axes(ax, scene, box, grid=grid, axes=axes, legend=handles, legend_side=side)
     ax.set_title(position_title(scene, position), fontsize=10)
     _draw_arranged(figure, ax, scene, position, numbers=numbers)
     return figure
@@ -560,10 +606,10 @@ def plot_overlay(results: Results | DynamicResults, positions: Iterable[int] | N
         box = scene_limits(_all_points(scene, chosen))
     else:
         box = resolve_limits(scene, limits)
-    figure, ax = _target(ax, box)
+    handles = _legend_handles(scene, marks=highlight is not None)
+    figure, ax, side = _target(ax, box, len(handles))
     keep_names(figure, model_names(scene.results.model))
-    setup_axes(ax, scene, box, grid=grid, axes=axes,
-               legend=_legend_handles(scene, marks=highlight is not None))
+    setup_axes(ax, scene, box, grid=grid, axes=axes, legend=handles, legend_side=side)
     alpha = float(np.clip(4.0 / len(chosen), 0.12, 0.6))
     for n in scene.vectors():
         tails, heads = scene.tails[n][chosen], scene.heads[n][chosen]
@@ -664,13 +710,13 @@ def plot_trajectories(results: Results | DynamicResults, points: Sequence[Any], 
     if not paths:
         raise ViewError("no points to trace", "give at least one point, e.g. [{'head': 2}]")
     box = resolve_limits(scene, limits, position, [z for _, z in paths])
-    figure, ax = _target(ax, box)
-    keep_names(figure, model_names(scene.results.model))
     handles = _legend_handles(scene)
     colors = matplotlib.colormaps["Dark2"]
     for i, (label, _) in enumerate(paths):
         handles.append(Line2D([], [], color=colors(i % 8), lw=1.6, label=label))
-    setup_axes(ax, scene, box, grid=grid, axes=axes, legend=handles)
+    figure, ax, side = _target(ax, box, len(handles))
+    keep_names(figure, model_names(scene.results.model))
+    setup_axes(ax, scene, box, grid=grid, axes=axes, legend=handles, legend_side=side)
     ax.set_title(position_title(scene, position) + ", trajectories", fontsize=10)
     _draw_arranged(figure, ax, scene, position, numbers=numbers, alpha=0.7)
     for i, (label, z) in enumerate(paths):

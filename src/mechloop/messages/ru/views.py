@@ -239,12 +239,6 @@ ENTRIES: list[Entry] = [
     # the gear sheet of the report (views/gear_sheet.py)
     (r"the file has neither a 'gear_pair:' nor a 'planetary:' section",
      "в файле нет ни раздела 'gear_pair:', ни раздела 'planetary:'"),
-    (r"the gear sheet of the report shows a 2K-H train driven by a with b fixed",
-     "лист зубчатых передач в отчёте показывает только планетарный механизм 2K-H с ведущим "
-     "колесом a и неподвижным колесом b"),
-    (r"analyse this train with mechloop gear planetary; give the report a 2K-H train",
-     "рассчитайте этот механизм командой 'mechloop gear planetary'; для отчёта задайте "
-     "механизм 2K-H"),
     # plans and trajectories (views/plan.py)
     (r"cannot draw a plan of (?P<cls>\w+)", "нельзя нарисовать план по объекту '{cls}'"),
     (r"pass the results of mechloop\.solve or mechloop\.solve_dynamics",
