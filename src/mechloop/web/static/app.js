@@ -125,16 +125,38 @@ function edited() {
   if (window.mechloopForms) window.mechloopForms.changed();  // forms.js
   renderGutter();
   clearTimeout(pending);
-  pending = setTimeout(check, 350);
+  // while a handle is dragged (drag.js), at once: the mechanism follows the pointer
+  pending = setTimeout(check, document.body.dataset.dragging ? 0 : 350);
 }
 
+// One check at a time; an edit made meanwhile is checked right after it (so a drag's
+// texts, each a moment apart, are solved one after another and each drawn).
+const checking = { busy: false, again: false };
 async function check() {
+  if (checking.busy) {
+    checking.again = true;
+    return;
+  }
+  checking.busy = true;
+  try {
+    await checkNow();
+  } finally {
+    checking.busy = false;
+    if (checking.again) {
+      checking.again = false;
+      check();
+    }
+  }
+}
+
+async function checkNow() {
   const version = state.version;
-  const body = Object.assign({ text: $("editor").value }, state.source);
+  const text = $("editor").value;
+  const body = Object.assign({ text }, state.source);
   status("checking", null);
   const response = await postJSON("api/validate", body);
   const answer = await read(response);
-  if (version !== state.version) return;
+  if (version !== state.version && !document.body.dataset.dragging) return;
   if (!response.ok) {
     state.problems = answer.problems || [{ message: answer.error, hint: answer.hint }];
     renderProblems();
@@ -144,19 +166,22 @@ async function check() {
   state.problems = answer.problems;
   renderProblems();
   if (answer.ok) {
-    await solve(version);
+    await solve(version, text);
   } else {
     status("invalid", null, "error");
   }
 }
 
 // ------------------------------------------------------------------ the results
-async function solve(version) {
+async function solve(version, text) {
   status("solving", null);
-  const body = Object.assign({ text: $("editor").value }, state.source);
+  const body = Object.assign({ text: text === undefined ? $("editor").value : text },
+    state.source);
   const response = await postJSON("api/solve", body);
   const answer = await read(response);
-  if (version !== state.version) return;
+  // an older text is drawn only during a drag (the mechanism follows the pointer)
+  const current = version === state.version;
+  if (!current && !(response.ok && document.body.dataset.dragging)) return;
   if (!response.ok) {
     state.problems = answer.problems || [];
     renderProblems();
@@ -171,9 +196,15 @@ async function solve(version) {
   fillPlotChoices();
   fillTraces();
   render();
+  if (!current) return;
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
-  loadStructure(version);
+  if (answer.structure) {  // made with the solution, in both languages
+    state.structure = answer.structure;
+    renderStructure();
+  } else {
+    loadStructure(version);
+  }
   loadView();
 }
 
@@ -331,8 +362,31 @@ function step(direction) {
 function startTimer() {
   clearInterval(state.timer);
   const speed = Number($("play-speed").value) || 1;
-  state.timer = setInterval(() => step(Number($("play-direction").value) || 1),
-    FRAME_MS / speed);
+  state.timer = setInterval(playTick, FRAME_MS / speed);
+}
+
+// One frame of the play in the chosen mode (KDAM's): continuously (round the cycle), one
+// cycle (to the last position in the direction, then it stops) or back and forth (the
+// direction turns at either end).
+function playTick() {
+  if (!state.solution) return;
+  const last = state.solution.count - 1;
+  const mode = $("play-mode").value;
+  let direction = Number($("play-direction").value) || 1;
+  if (mode === "loop") {
+    step(direction);
+    return;
+  }
+  const end = direction > 0 ? last : 0;
+  if (state.position === end) {
+    if (mode === "once") {
+      togglePlay();
+      return;
+    }
+    direction = -direction;
+    $("play-direction").value = String(direction);
+  }
+  setPosition(Math.min(Math.max(state.position + direction, 0), last));
 }
 
 function togglePlay() {
@@ -340,6 +394,11 @@ function togglePlay() {
     clearInterval(state.timer);
     state.timer = null;
   } else if (state.solution) {
+    const direction = Number($("play-direction").value) || 1;
+    if ($("play-mode").value === "once"
+      && state.position === (direction > 0 ? state.solution.count - 1 : 0)) {
+      setPosition(direction > 0 ? 0 : state.solution.count - 1);  // the cycle from its start
+    }
     startTimer();
   }
   $("play").dataset.i18n = state.timer ? "pause" : "play";
@@ -405,7 +464,8 @@ const job = { id: null, poll: null, result: null, info: ["", null] };
 function jobInfo(key, values) {
   job.info = [key, values];
   const shown = values && values.why !== undefined
-    ? Object.assign({ stopped: stopText(values.why) }, values) : values;
+    ? Object.assign({ stopped: stopText(values.why) }, values) : Object.assign({}, values);
+  if (typeof shown.q === "number") shown.q = format(shown.q);  // in the page's language
   $("job-info").textContent = key ? t(key, shown) : "";
 }
 
@@ -455,7 +515,7 @@ async function jobPoll() {
     if (answer.state === "stopping") jobInfo("jobStopping");
     else if (p.total) {
       jobInfo("jobProgress", { k: p.iteration, n: p.total,
-        q: p.feasible ? format(p.best) : t("jobNoFeasible") });
+        q: p.feasible ? p.best : t("jobNoFeasible") });
     }
     job.poll = setTimeout(jobPoll, 250);
     return;
@@ -469,7 +529,7 @@ async function jobPoll() {
   job.result = result;
   $("job-open").hidden = false;
   $("job-bar").dataset.best = result.best === null ? "" : result.best;
-  if (result.feasible) jobInfo("jobDone", { why: result.stopped, q: format(result.best) });
+  if (result.feasible) jobInfo("jobDone", { why: result.stopped, q: result.best });
   else jobInfo("jobInfeasible", { why: result.stopped });
 }
 
@@ -653,7 +713,8 @@ async function loadStructure(version) {
 function renderStructure() {
   const panel = $("structure");
   panel.textContent = "";
-  const answer = state.structure;
+  const answer = state.structure && (state.structure.en ? state.structure[LANG]
+    : state.structure);  // the solution's structure is in both languages
   if (!answer) return;
   const line = (text, className) => {
     const p = document.createElement("p");
@@ -694,10 +755,10 @@ function renderStructure() {
       }
     }
     panel.appendChild(table);
-    for (const note of m.notes) line(note);  // the library's words (English)
+    for (const note of m.notes) line(note);  // the library's words, in the page's language
   }
   const description = document.createElement("pre");
-  description.textContent = answer.description;  // the library's words (English)
+  description.textContent = answer.description;  // the same
   panel.appendChild(description);
 }
 

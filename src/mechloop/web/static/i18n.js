@@ -113,6 +113,8 @@ const WORDS = {
     formUnitAngularAcceleration: "angular acceleration", formUnitMass: "mass",
     formUnitInertia: "moment of inertia", formUnitForce: "force", formUnitMoment: "moment",
     formUnitEnergy: "energy, work", formUnitPower: "power",
+    playModeTitle: "how the play runs (KDAM's modes)", playLoop: "continuously",
+    playOnce: "one cycle", playReflect: "back and forth",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -232,6 +234,8 @@ const WORDS = {
     formUnitAngularAcceleration: "угловое ускорение", formUnitMass: "масса",
     formUnitInertia: "момент инерции", formUnitForce: "сила", formUnitMoment: "момент",
     formUnitEnergy: "энергия, работа", formUnitPower: "мощность",
+    playModeTitle: "как идёт показ (режимы КДАМ)", playLoop: "непрерывно",
+    playOnce: "один цикл", playReflect: "вперёд и назад",
   },
 };
 
