@@ -37,7 +37,7 @@
     const n = digits || 6;
     const magnitude = Math.abs(x);
     const text = magnitude >= 1e6 || magnitude < 1e-3
-      ? x.toExponential(Math.max(n - 2, 0))
+      ? x.toExponential(Math.max(n - 2, 0)).replace(/\.?0+e/, "e")
       : String(Number(x.toPrecision(n)));
     return localText(text, lang);
   }
