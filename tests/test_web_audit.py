@@ -92,3 +92,17 @@ def test_the_html_player_needs_no_other_site(tmp_path):
     assert b"anim-buttons" in page and b"&#x25B6;" in page  # the player, with its buttons
     assert not URL.search(page), URL.search(page)
     assert b"font-awesome" not in page
+
+
+def test_the_printed_address_opens_a_file_whose_name_has_a_space_or_an_ampersand(tmp_path):
+    from urllib.parse import parse_qs, urlsplit
+
+    from mechloop.web.serve import plan
+
+    model = tmp_path / "my crank & rod #2.yaml"
+    model.write_text((EXAMPLES / "crank_slider.yaml").read_text(encoding="utf-8"))
+    for host in ("127.0.0.1", "0.0.0.0"):
+        url = plan(model, host=host, port=8765).url
+        query = parse_qs(urlsplit(url).query)
+        assert query["path"] == ["my crank & rod #2.yaml"], url
+        assert ("token" in query) == (host != "127.0.0.1")
