@@ -146,3 +146,28 @@ def test_the_structure_follows_the_language(browser, server):
     text = browser.find_element(By.ID, "structure").text
     assert "плоская" in text and "planar" not in text
     browser.find_element(By.ID, "lang-en").click()
+
+
+def test_at_a_chain_break_the_nearest_closed_position_is_drawn_faded(browser, server):
+    """Not a blank diagram: the mechanism where it last closes, faded, said in the note,
+    with its handles (a drag can bring the chain back)."""
+    base, _ = server
+    _open(browser, base + "/?example=four_bar_break_ahead&lang=en")
+    api = _post(base, "/api/solve", {"example": "four_bar_break_ahead", "text": browser.
+                                     find_element(By.ID, "editor").get_property("value")})
+    first = api["broken"].index(True)  # broken from here (the crank cannot turn on)
+    browser.execute_script(f"setPosition({first + 1})")
+    diagram = browser.find_element(By.ID, "diagram")
+    assert "faded" in diagram.get_attribute("class")
+    assert diagram.get_attribute("data-shown") == str(first - 1)
+    crank = next(v for v in api["diagram"]["vectors"] if v["number"] == 1)
+    line = browser.find_element(By.ID, "vector-1")
+    assert float(line.get_attribute("data-x2")) == crank["head"]["x"][first - 1]
+    assert browser.find_elements(By.CSS_SELECTOR, "#diagram .drag-handle")
+    assert f"faded at position {first - 1}" in browser.find_element(By.ID, "break-note").text
+    browser.find_element(By.ID, "lang-ru").click()  # the reason in the page's language
+    assert api["breaks"][0]["reason_ru"] in browser.find_element(By.ID, "break-note").text
+    assert "неравенство треугольника" in api["breaks"][0]["reason_ru"]
+    browser.find_element(By.ID, "lang-en").click()
+    browser.execute_script(f"setPosition({first - 1})")
+    assert "faded" not in diagram.get_attribute("class")

@@ -311,7 +311,13 @@ function render() {
   const solution = state.solution;
   if (!solution) return;
   const k = state.position;
-  drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
+  // at a chain break the mechanism is drawn faded at the nearest position that closes
+  // (its handles too: a drag can bring the chain back)
+  const drawn = solution.broken[k] ? nearestClosed(solution, k) : k;
+  drawDiagram($("diagram"), solution, drawn === null ? k : drawn, $("overlay").checked,
+    state.traces);
+  $("diagram").dataset.shown = drawn === null ? k : drawn;
+  $("diagram").classList.toggle("faded", drawn !== k);
   if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
   drawPlot($("plot"), solution,
     plotted().map((name) => solution.columns.find((c) => c.name === name)), k,
@@ -322,8 +328,11 @@ function render() {
   const note = $("break-note");
   if (solution.broken[k]) {
     const reasons = solution.breaks.filter((b) => b.positions.includes(k))
-      .map((b) => t("breakReason", b));
-    note.textContent = [t("broken", { k }), ...reasons].join("; ");
+      .map((b) => t("breakReason", Object.assign({}, b,
+        LANG === "ru" && b.reason_ru ? { reason: b.reason_ru } : {})));
+    const shownAt = $("diagram").dataset.shown;
+    note.textContent = [t("broken", { k }), ...reasons].join("; ")
+      + (Number(shownAt) !== k ? "; " + t("brokenShown", { j: shownAt }) : "");
     note.hidden = false;
   } else {
     note.hidden = true;
@@ -340,6 +349,15 @@ function render() {
     value.className = "number";
     row.insertCell().textContent = unitText(c.unit);
   }
+}
+
+// The position nearest to ``k`` where the chain closes (null: none).
+function nearestClosed(solution, k) {
+  for (let d = 1; d < solution.count; d++) {
+    if (k - d >= 0 && !solution.broken[k - d]) return k - d;
+    if (k + d < solution.count && !solution.broken[k + d]) return k + d;
+  }
+  return null;
 }
 
 function setPosition(k) {

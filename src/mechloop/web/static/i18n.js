@@ -115,6 +115,7 @@ const WORDS = {
     formUnitEnergy: "energy, work", formUnitPower: "power",
     playModeTitle: "how the play runs (KDAM's modes)", playLoop: "continuously",
     playOnce: "one cycle", playReflect: "back and forth",
+    brokenShown: "the mechanism is drawn faded at position {j}, the nearest where it closes",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -236,6 +237,7 @@ const WORDS = {
     formUnitEnergy: "энергия, работа", formUnitPower: "мощность",
     playModeTitle: "как идёт показ (режимы КДАМ)", playLoop: "непрерывно",
     playOnce: "один цикл", playReflect: "вперёд и назад",
+    brokenShown: "механизм показан бледно в положении {j}, ближайшем, где контур замыкается",
   },
 };
 
