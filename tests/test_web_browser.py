@@ -237,7 +237,7 @@ def test_russian_and_english_screens_and_the_report(browser, server, downloads):
     assert "r3, м" in browser.find_element(By.ID, "plot-select").text
     assert browser.find_element(By.ID, "status").text == "рассчитано"
     row = browser.find_element(By.CSS_SELECTOR, "#results tr[data-name='time']")
-    assert row.text.split() == ["время", "0.00333333", "с"]  # 12 of 72 at 3000 rpm
+    assert row.text.split() == ["время", "0,00333333", "с"]  # 12 of 72 at 3000 rpm, GOST
     browser.save_screenshot(str(SHOTS / "web-ru.png"))
     browser.find_element(By.ID, "lang-en").click()
     assert browser.find_element(By.ID, "play").text == "Play"

@@ -8,14 +8,16 @@ from mechloop.dynamics.mechanism import build_mechanism
 from mechloop.dynamics.points import Placement
 from mechloop.model.schema import Model
 from mechloop.solve.kinematics import solve
+from mechloop.solve.results import Results
 from mechloop.structure.assur import Decomposition, decompose
 from mechloop.structure.meshes import gear_meshes, replaced
 from mechloop.structure.mobility import Mobility, mobility
 
 
-def analyze(model: Model) -> tuple[Mobility, Decomposition]:
+def analyze(model: Model, results: Results | None = None) -> tuple[Mobility, Decomposition]:
     """Mobility and decomposition of ``model`` (which needs ``bodies``), with the assembly
-    variants of its groups taken from its contours.
+    variants of its groups taken from its contours; ``results``: its kinematics when
+    already solved (else solved here).
 
     A ratio link between two bodies is a gear mesh, a higher pair (:mod:`.meshes`):
     counted as ``p4``, and replaced by its equivalent link with two revolute pairs for the
@@ -25,7 +27,7 @@ def analyze(model: Model) -> tuple[Mobility, Decomposition]:
     cannot be told (see :func:`~mechloop.dynamics.mechanism.build_mechanism`).
     """
     meshes = gear_meshes(model)
-    results = solve(model)
+    results = solve(model) if results is None else results
     mechanism = build_mechanism(model, Placement(results), determinate=False)
     equivalent, notes = replaced(mechanism, meshes)
     dec = decompose(equivalent, structure=results.structure)

@@ -43,6 +43,7 @@ from mechloop.dynamics.analysis import DynamicResults
 from mechloop.output.atomic import atomic_file, atomic_path
 from mechloop.solve.results import Results
 from mechloop.views.figure import ViewError
+from mechloop.views.offline_html import make_offline
 from mechloop.views.plan import (
     PlanScene,
     check_positions,
@@ -257,11 +258,13 @@ def _save_html(frames: Iterator[NDArray[np.uint8]], size: tuple[int, int], targe
     figure, image = _player(size)
     writer = HTMLWriter(fps=1000.0 / interval_ms, embed_frames=True, default_mode="loop",
                         embed_limit=HTML_LIMIT_MB)
-    with atomic_path(target) as staged, writer.saving(figure, target, figure.dpi):
-        writer.outfile = Path(staged)  # the page is written there at the end (frames embedded)
-        for frame in frames:
-            image.set_data(frame)
-            writer.grab_frame()
+    with atomic_path(target) as staged:
+        with writer.saving(figure, target, figure.dpi):
+            writer.outfile = Path(staged)  # the page is written there at the end (frames embedded)
+            for frame in frames:
+                image.set_data(frame)
+                writer.grab_frame()
+        make_offline(Path(staged))  # its buttons without Font Awesome's CDN
 
 
 def write_frames(frames: Iterator[NDArray[np.uint8]], size: tuple[int, int], target: Path,

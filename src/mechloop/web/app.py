@@ -10,7 +10,9 @@ file it belongs to (``{"path": "models/a.yaml"}`` in the served folder, or
 * ``POST /api/validate`` ``{text, path|example}`` — ``{ok, problems}``, each problem with
   its line, YAML path, message and fix;
 * ``POST /api/solve`` — the diagram of every position, the breaks and the results table
-  (:func:`mechloop.web.payload.solution`), computed in a child process with a time limit;
+  (:func:`mechloop.web.payload.solution`), and the ``structure`` in English and Russian
+  (:func:`mechloop.web.exports.structures`, from the same kinematics), computed in a child
+  process with a time limit;
 * ``POST /api/save`` ``{text, path}`` — written atomically inside the folder;
 * ``POST /api/report`` ``{text, path|example, lang, format}`` — the report, ``pdf``
   (default) or ``docx``;
@@ -70,6 +72,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from mechloop.bundled.catalog import examples, examples_dir, find_example
+from mechloop.dynamics.analysis import DynamicResults
 from mechloop.errors import HintedError, MechloopError, ModelError
 from mechloop.output.atomic import atomic_write_text
 from mechloop.web import exports, templates, work
@@ -78,7 +81,7 @@ from mechloop.web.documents import problems, read_model
 from mechloop.web.edit import edit_text, json_data
 from mechloop.web.jobs import JOB_SECONDS, Jobs
 from mechloop.web.language import problems_in, request_language
-from mechloop.web.payload import solution
+from mechloop.web.payload import solution, solve_model
 from mechloop.web.safety import Guard, WebError, Workspace
 from mechloop.web.units import unit_choices
 from mechloop.web.views import VIEW_TYPES, view_data, view_svg
@@ -108,9 +111,14 @@ def _solve_text(text: str, path: Path, root: Path) -> bytes:
     """The solution of the model in ``text`` as JSON bytes (run in the child)."""
     document = read_model(text, path, root)
     try:
-        return orjson.dumps(solution(document.model), option=orjson.OPT_SERIALIZE_NUMPY)
+        solved = solve_model(document.model)
+        answer = solution(document.model, solved)
     except ModelError as exc:
         raise document.locate(exc) from None
+    # the structure panel's answer from the same kinematics (nothing solved twice)
+    answer["structure"] = exports.structures(
+        document, solved.kinematics if isinstance(solved, DynamicResults) else solved)
+    return orjson.dumps(answer, option=orjson.OPT_SERIALIZE_NUMPY)
 
 
 def create_app(folder: str | Path, *, token: str | None = None,

@@ -125,6 +125,32 @@ def report_file(text: str, path: Path, root: Path, lang: str, fmt: str = "pdf") 
 
 
 def structure(text: str, path: Path, root: Path, lang: str = "en") -> dict[str, Any]:
+    """The structure of the model in ``text`` in ``lang`` (see :func:`structure_of`)."""
+    return structure_of(read_model(text, path, root), lang)
+
+
+def structures(document: Document, results: Any) -> dict[str, dict[str, Any]]:
+    """The structure of a solved model in English and Russian, ``{"en": ..., "ru": ...}``
+    (the page shows it in its language, and a change of language asks nothing), from its
+    kinematic ``results`` (nothing solved again); a problem of the structure is
+    ``{"error", "hint"}`` in each language (the solution itself stays good)."""
+    from mechloop.errors import MechloopError
+    from mechloop.structure.analysis import analyze
+    from mechloop.web.documents import problems
+    from mechloop.web.language import problems_in
+
+    try:
+        analyzed = analyze(document.model, results) if document.model.bodies else None
+        return {lang: structure_of(document, lang, analyzed=analyzed) for lang in ("en", "ru")}
+    except MechloopError as exc:
+        located = document.locate(exc) if isinstance(exc, ModelError) else exc
+        said = {lang: problems_in(problems(located), lang)[0] for lang in ("en", "ru")}
+        return {lang: {"error": item["message"], "hint": item["hint"]}
+                for lang, item in said.items()}
+
+
+def structure_of(document: Document, lang: str = "en",
+                 analyzed: tuple[Any, Any] | None = None) -> dict[str, Any]:
     """The structure of the model in ``text`` as ``mechloop structure`` prints it:
     Chebyshev's count (``n``, ``p5``, ``p4``, ``W``, ``inputs``, ``ok``, ``explanation``),
     the ``formula``, the ``class`` of the mechanism (Roman, None when not determined),
@@ -132,18 +158,18 @@ def structure(text: str, path: Path, root: Path, lang: str = "en") -> dict[str, 
     assembly variant, contour), the ``notes``, and the contour-by-contour ``description``
     of the vector model (:func:`mechloop.model.formula.describe_structure`).  A model
     without bodies has only the description (``mechanism`` None).  The texts (explanation,
-    notes, class, description) are in ``lang`` ('en' or 'ru')."""
+    notes, class, description) are in ``lang`` ('en' or 'ru').  ``analyzed``: the
+    model's :func:`~mechloop.structure.analysis.analyze` when already made."""
     from mechloop.model.formula import describe_structure
-    from mechloop.structure import analyze
+    from mechloop.structure.analysis import analyze
     from mechloop.structure.text import class_text, explanation, note_text
 
-    document = read_model(text, path, root)
     model = document.model
     try:
         description = describe_structure(model, lang)
         if not model.bodies:
             return {"mechanism": None, "description": description}
-        mob, dec = analyze(model)
+        mob, dec = analyze(model) if analyzed is None else analyzed
     except ModelError as exc:
         raise document.locate(exc) from None
     cls = dec.mechanism_class

@@ -19,6 +19,7 @@ import numpy as np
 from mechloop.dynamics.analysis import DynamicResults, solve_dynamics
 from mechloop.model.schema import Model
 from mechloop.output.display import apply_display, resolve, round_frame
+from mechloop.report.words import reason
 from mechloop.solve.kinematics import solve
 from mechloop.solve.results import Results
 from mechloop.views.plan import PlanScene, parameter_roles, plan_scene, scene_limits
@@ -112,6 +113,7 @@ def solution(model: Model, solved: Results | DynamicResults | None = None) -> di
     kin = solved.kinematics if isinstance(solved, DynamicResults) else solved
     scene = plan_scene(solved)
     breaks = [{"contour": b.contour, "module": b.module, "reason": b.reason,
+               "reason_ru": reason(b.reason, "ru"),  # the page's words in Russian
                "positions": np.asarray(b.positions, dtype=np.int64)} for b in kin.breaks]
     return {"name": model.name or "", "count": scene.count, "dynamics": bool(model.bodies),
             "time": kin.time, "broken": np.asarray(kin.broken, dtype=bool),

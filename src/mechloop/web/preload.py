@@ -1,7 +1,8 @@
 """Imported once by the fork server of the solves (:mod:`mechloop.web.worker`): loads
-mechloop and solves a bundled example (kinematics and dynamics), so that numba's compiled
-code is loaded into the fork server and every child starts with it, instead of loading it
-from the disk cache again for each solve (about a second)."""
+mechloop and solves bundled examples (kinematics and dynamics, and a coupled block of
+contours, whose first assembly takes SciPy's quasi-random starts), so that numba's compiled
+code and SciPy are loaded into the fork server and every child starts with them, instead of
+loading them again for each solve (about a second)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from mechloop.model.load import load_model
 from mechloop.web import app  # noqa: F401 (the routes' functions, run in the children)
 from mechloop.web.payload import solution
 
-for _name in ("crank_slider", "crank_slider_dynamics"):
+for _name in ("crank_slider", "crank_slider_dynamics", "roof_support_real"):
     try:
         solution(load_model(find_example(_name).path))
     except MechloopError:  # only a warm-up: the real solves report their own problems

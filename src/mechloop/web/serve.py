@@ -14,6 +14,7 @@ import webbrowser
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from urllib.parse import quote
 
 from mechloop.web.safety import MODEL_SUFFIXES, WebError, Workspace
 
@@ -54,8 +55,8 @@ class Plan:
         shown = "127.0.0.1" if self.host in ("0.0.0.0", "") else self.host
         shown = f"[{shown}]" if ":" in shown else shown
         query = f"?token={self.token}" if self.token else ""
-        if self.start:
-            query += ("&" if query else "?") + f"path={self.start}"
+        if self.start:  # a file name with a space, & or # stays one name in the address
+            query += ("&" if query else "?") + f"path={quote(self.start)}"
         return f"http://{shown}:{self.port}/{query}"
 
     @property

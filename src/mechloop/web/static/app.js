@@ -125,16 +125,38 @@ function edited() {
   if (window.mechloopForms) window.mechloopForms.changed();  // forms.js
   renderGutter();
   clearTimeout(pending);
-  pending = setTimeout(check, 350);
+  // while a handle is dragged (drag.js), at once: the mechanism follows the pointer
+  pending = setTimeout(check, document.body.dataset.dragging ? 0 : 350);
 }
 
+// One check at a time; an edit made meanwhile is checked right after it (so a drag's
+// texts, each a moment apart, are solved one after another and each drawn).
+const checking = { busy: false, again: false };
 async function check() {
+  if (checking.busy) {
+    checking.again = true;
+    return;
+  }
+  checking.busy = true;
+  try {
+    await checkNow();
+  } finally {
+    checking.busy = false;
+    if (checking.again) {
+      checking.again = false;
+      check();
+    }
+  }
+}
+
+async function checkNow() {
   const version = state.version;
-  const body = Object.assign({ text: $("editor").value }, state.source);
+  const text = $("editor").value;
+  const body = Object.assign({ text }, state.source);
   status("checking", null);
   const response = await postJSON("api/validate", body);
   const answer = await read(response);
-  if (version !== state.version) return;
+  if (version !== state.version && !document.body.dataset.dragging) return;
   if (!response.ok) {
     state.problems = answer.problems || [{ message: answer.error, hint: answer.hint }];
     renderProblems();
@@ -144,19 +166,22 @@ async function check() {
   state.problems = answer.problems;
   renderProblems();
   if (answer.ok) {
-    await solve(version);
+    await solve(version, text);
   } else {
     status("invalid", null, "error");
   }
 }
 
 // ------------------------------------------------------------------ the results
-async function solve(version) {
+async function solve(version, text) {
   status("solving", null);
-  const body = Object.assign({ text: $("editor").value }, state.source);
+  const body = Object.assign({ text: text === undefined ? $("editor").value : text },
+    state.source);
   const response = await postJSON("api/solve", body);
   const answer = await read(response);
-  if (version !== state.version) return;
+  // an older text is drawn only during a drag (the mechanism follows the pointer)
+  const current = version === state.version;
+  if (!current && !(response.ok && document.body.dataset.dragging)) return;
   if (!response.ok) {
     state.problems = answer.problems || [];
     renderProblems();
@@ -171,9 +196,15 @@ async function solve(version) {
   fillPlotChoices();
   fillTraces();
   render();
+  if (!current) return;
   status("solved", null, "ok");
   document.body.dataset.solved = String(version);
-  loadStructure(version);
+  if (answer.structure) {  // made with the solution, in both languages
+    state.structure = answer.structure;
+    renderStructure();
+  } else {
+    loadStructure(version);
+  }
   loadView();
 }
 
@@ -284,10 +315,16 @@ function render() {
   $("diagram").style.display = spatial ? "none" : "";
   $("view3d").hidden = !spatial;
   document.querySelector(".drag-help").hidden = spatial;
+  // at a chain break the mechanism is drawn faded at the nearest position that closes
+  // (its handles too: a drag can bring the chain back)
+  const drawn = solution.broken[k] && !spatial ? nearestClosed(solution, k) : k;
+  $("diagram").dataset.shown = drawn === null ? k : drawn;
   if (spatial) {
     drawSpatial(solution, k);
   } else {
-    drawDiagram($("diagram"), solution, k, $("overlay").checked, state.traces);
+    drawDiagram($("diagram"), solution, drawn === null ? k : drawn, $("overlay").checked,
+      state.traces);
+    $("diagram").classList.toggle("faded", drawn !== k);
     if (window.mechloopDrag) window.mechloopDrag.render();  // drag.js: the handles
   }
   drawPlot($("plot"), solution,
@@ -300,8 +337,11 @@ function render() {
   const note = $("break-note");
   if (solution.broken[k]) {
     const reasons = solution.breaks.filter((b) => b.positions.includes(k))
-      .map((b) => t("breakReason", b));
-    note.textContent = [t("broken", { k }), ...reasons].join("; ");
+      .map((b) => t("breakReason", Object.assign({}, b,
+        LANG === "ru" && b.reason_ru ? { reason: b.reason_ru } : {})));
+    const shownAt = $("diagram").dataset.shown;
+    note.textContent = [t("broken", { k }), ...reasons].join("; ")
+      + (Number(shownAt) !== k ? "; " + t("brokenShown", { j: shownAt }) : "");
     note.hidden = false;
   } else {
     note.hidden = true;
@@ -336,6 +376,15 @@ function drawSpatial(solution, k) {
   view.show(k, $("overlay").checked, state.traces);
 }
 
+// The position nearest to ``k`` where the chain closes (null: none).
+function nearestClosed(solution, k) {
+  for (let d = 1; d < solution.count; d++) {
+    if (k - d >= 0 && !solution.broken[k - d]) return k - d;
+    if (k + d < solution.count && !solution.broken[k + d]) return k + d;
+  }
+  return null;
+}
+
 function setPosition(k) {
   state.position = k;
   $("slider").value = k;
@@ -355,8 +404,31 @@ function step(direction) {
 function startTimer() {
   clearInterval(state.timer);
   const speed = Number($("play-speed").value) || 1;
-  state.timer = setInterval(() => step(Number($("play-direction").value) || 1),
-    FRAME_MS / speed);
+  state.timer = setInterval(playTick, FRAME_MS / speed);
+}
+
+// One frame of the play in the chosen mode (KDAM's): continuously (round the cycle), one
+// cycle (to the last position in the direction, then it stops) or back and forth (the
+// direction turns at either end).
+function playTick() {
+  if (!state.solution) return;
+  const last = state.solution.count - 1;
+  const mode = $("play-mode").value;
+  let direction = Number($("play-direction").value) || 1;
+  if (mode === "loop") {
+    step(direction);
+    return;
+  }
+  const end = direction > 0 ? last : 0;
+  if (state.position === end) {
+    if (mode === "once") {
+      togglePlay();
+      return;
+    }
+    direction = -direction;
+    $("play-direction").value = String(direction);
+  }
+  setPosition(Math.min(Math.max(state.position + direction, 0), last));
 }
 
 function togglePlay() {
@@ -364,6 +436,11 @@ function togglePlay() {
     clearInterval(state.timer);
     state.timer = null;
   } else if (state.solution) {
+    const direction = Number($("play-direction").value) || 1;
+    if ($("play-mode").value === "once"
+      && state.position === (direction > 0 ? state.solution.count - 1 : 0)) {
+      setPosition(direction > 0 ? 0 : state.solution.count - 1);  // the cycle from its start
+    }
     startTimer();
   }
   $("play").dataset.i18n = state.timer ? "pause" : "play";
@@ -451,7 +528,8 @@ const job = { id: null, poll: null, result: null, info: ["", null] };
 function jobInfo(key, values) {
   job.info = [key, values];
   const shown = values && values.why !== undefined
-    ? Object.assign({ stopped: stopText(values.why) }, values) : values;
+    ? Object.assign({ stopped: stopText(values.why) }, values) : Object.assign({}, values);
+  if (typeof shown.q === "number") shown.q = format(shown.q);  // in the page's language
   $("job-info").textContent = key ? t(key, shown) : "";
 }
 
@@ -501,7 +579,7 @@ async function jobPoll() {
     if (answer.state === "stopping") jobInfo("jobStopping");
     else if (p.total) {
       jobInfo("jobProgress", { k: p.iteration, n: p.total,
-        q: p.feasible ? format(p.best) : t("jobNoFeasible") });
+        q: p.feasible ? p.best : t("jobNoFeasible") });
     }
     job.poll = setTimeout(jobPoll, 250);
     return;
@@ -515,7 +593,7 @@ async function jobPoll() {
   job.result = result;
   $("job-open").hidden = false;
   $("job-bar").dataset.best = result.best === null ? "" : result.best;
-  if (result.feasible) jobInfo("jobDone", { why: result.stopped, q: format(result.best) });
+  if (result.feasible) jobInfo("jobDone", { why: result.stopped, q: result.best });
   else jobInfo("jobInfeasible", { why: result.stopped });
 }
 
@@ -699,7 +777,8 @@ async function loadStructure(version) {
 function renderStructure() {
   const panel = $("structure");
   panel.textContent = "";
-  const answer = state.structure;
+  const answer = state.structure && (state.structure.en ? state.structure[LANG]
+    : state.structure);  // the solution's structure is in both languages
   if (!answer) return;
   const line = (text, className) => {
     const p = document.createElement("p");
@@ -740,10 +819,10 @@ function renderStructure() {
       }
     }
     panel.appendChild(table);
-    for (const note of m.notes) line(note);  // the library's words (English)
+    for (const note of m.notes) line(note);  // the library's words, in the page's language
   }
   const description = document.createElement("pre");
-  description.textContent = answer.description;  // the library's words (English)
+  description.textContent = answer.description;  // the same
   panel.appendChild(description);
 }
 

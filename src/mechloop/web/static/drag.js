@@ -70,7 +70,8 @@
     const width = Number(svg.getAttribute("width")), height = Number(svg.getAttribute("height"));
     const map = planeMap(solution.diagram.limits, width, height, 16);
     const group = el("g", { class: "drag-handles" }, svg);
-    for (const item of draggable(solution, data, state.position)) {
+    const shown = Number(svg.dataset.shown ?? state.position);  // faded at a break
+    for (const item of draggable(solution, data, shown)) {
       const handle = el("circle", { cx: map.x(item.head.x), cy: map.y(item.head.y), r: 6,
         class: "drag-handle" + (item.ground ? " ground" : ""), "data-vector": item.number,
         fill: item.ground ? "#ffd866" : "white", stroke: item.color, "stroke-width": 2 },

@@ -185,12 +185,9 @@ function ticks(low, high, count) {
   return out;
 }
 
+// A number for reading, in the page's language (numbers.js: the decimal comma in Russian).
 function format(value) {
-  if (!Number.isFinite(value)) return "—";
-  if (value === 0) return "0";
-  const magnitude = Math.abs(value);
-  if (magnitude >= 1e6 || magnitude < 1e-3) return value.toExponential(4);
-  return String(Number(value.toPrecision(6)));
+  return mechloopNumber(value);
 }
 
 // A number of the results table with the model's precision (the API's ``precision``:
@@ -198,8 +195,10 @@ function format(value) {
 // rounded by the library, this only prints it, trailing zeros kept); else as format().
 function formatPrecise(value, precision) {
   if (!Number.isFinite(value) || !precision) return format(value);
-  if (precision.digits) return value.toPrecision(precision.digits);
-  if (precision.decimals !== undefined) return value.toFixed(precision.decimals);
+  if (precision.digits) return mechloopLocalText(value.toPrecision(precision.digits));
+  if (precision.decimals !== undefined) {
+    return mechloopLocalText(value.toFixed(precision.decimals));
+  }
   return format(value);
 }
 

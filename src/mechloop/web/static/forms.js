@@ -117,24 +117,34 @@
     return value === null || ["number", "string", "boolean"].includes(typeof value);
   }
 
+  // A value as its field shows it; a number in the page's language (numbers.js: the
+  // decimal comma in Russian, where a list's items are then parted by "; ").
   function shown(value) {
     if (value === null || value === undefined) return "";
-    if (Array.isArray(value)) return value.map(shown).join(", ");
+    if (Array.isArray(value)) return value.map(shown).join(LANG === "ru" ? "; " : ", ");
     if (typeof value === "object") return JSON.stringify(value);
+    if (typeof value === "number") return mechloopLocalText(String(value), LANG, true);
     return String(value);
   }
 
-  // A typed text as the value it means: a number, true/false, or the text itself.
+  // A typed text as the value it means: a number (in Russian "0,05" too), true/false, or
+  // the text itself.
   function parseScalar(text) {
     const s = text.trim();
-    if (/^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$/.test(s)) return Number(s);
+    const number = mechloopParseNumber(s);
+    if (!Number.isNaN(number)) return number;
     if (s === "true") return true;
     if (s === "false") return false;
     return s;
   }
 
+  // "1, 2, 3" or "1; 2; 3"; in Russian "0,5; 1,5" (a comma inside a number is decimal
+  // unless the items are parted by ", " or the text has several commas and no ";").
   function parseList(text) {
-    return text.split(/[,;]/).map((part) => part.trim()).filter(Boolean).map(parseScalar);
+    let parts = text.split(/[,;]/);
+    if (LANG === "ru" && !/,\s/.test(text) && (text.includes(";")
+      || (text.match(/,/g) || []).length === 1)) parts = text.split(";");
+    return parts.map((part) => part.trim()).filter(Boolean).map(parseScalar);
   }
 
   // An input of the value at ``keys``: a change writes it (an empty optional one deletes

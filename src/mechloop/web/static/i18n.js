@@ -123,6 +123,9 @@ const WORDS = {
     view3dAngles: "elevation {elev}°, azimuth {azim}°",
     view3dHelp: "drag to turn the view, the wheel zooms, a double click goes back to the first angles",
     view3dTraces: "trajectories",
+    playModeTitle: "how the play runs (KDAM's modes)", playLoop: "continuously",
+    playOnce: "one cycle", playReflect: "back and forth",
+    brokenShown: "the mechanism is drawn faded at position {j}, the nearest where it closes",
   },
   ru: {
     model: "Модель", file: "Файл", save: "Сохранить", report: "Отчёт",
@@ -252,6 +255,9 @@ const WORDS = {
     view3dAngles: "возвышение {elev}°, азимут {azim}°",
     view3dHelp: "перетаскивание поворачивает вид, колесо меняет масштаб, двойной щелчок возвращает начальные углы",
     view3dTraces: "траектории",
+    playModeTitle: "как идёт показ (режимы КДАМ)", playLoop: "непрерывно",
+    playOnce: "один цикл", playReflect: "вперёд и назад",
+    brokenShown: "механизм показан бледно в положении {j}, ближайшем, где контур замыкается",
   },
 };
 

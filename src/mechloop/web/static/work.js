@@ -21,7 +21,8 @@ function workInfo(kind, key, values) {
   if (kind === "animation") {
     if (key) status(key, values, key === "workFailed" ? "error" : "");
   } else if (node) {
-    node.textContent = key ? t(key, values) : "";
+    node.textContent = key ? t(key, values && Object.fromEntries(Object.entries(values)
+      .map(([name, v]) => [name, typeof v === "number" ? format(v) : v]))) : "";
   }
 }
 
@@ -29,14 +30,26 @@ function workOptions(kind) {
   if (kind === "animation") return { format: $("anim-format").value };
   if (kind === "sweep") {
     const vary = [$("sweep-vary").value, $("sweep-vary2").value].map((s) => s.trim())
-      .filter((s) => s);
+      .filter((s) => s).map(varySpec);
     const collect = $("sweep-collect").value.split(/[,;\s]+/).filter((s) => s);
     return { vary, collect, lang: LANG };
   }
   const options = { lang: LANG };
-  const duration = Number($("sim-duration").value);
+  const duration = mechloopParseNumber($("sim-duration").value);  // "0,5" in Russian
   if ($("sim-duration").value.trim()) options.duration = duration;
   return options;
+}
+
+// A sweep's PATH=VALUES as the server reads it (points): in Russian the values may be
+// written with decimal commas, a range "0,1:0,3:5" or a list parted by ";" ("0,1; 0,2").
+function varySpec(text) {
+  const at = text.indexOf("=");
+  if (LANG !== "ru" || at < 0) return text;
+  const values = text.slice(at + 1);
+  const decimal = (part) => part.trim().replace(/(\d),(\d)/g, "$1.$2");
+  if (values.includes(";")) return text.slice(0, at + 1) + values.split(";").map(decimal).join(",");
+  if (values.includes(":")) return text.slice(0, at + 1) + decimal(values);
+  return text;
 }
 
 async function workStart(kind) {
@@ -154,7 +167,7 @@ async function workShow(kind, result) {
     workInfo(kind, "sweepDone", { n: result.rows.length, broken });
   } else {
     simSummary(result.summary);
-    workInfo(kind, "simDone", { t: format(result.summary.end), n: result.summary.rows });
+    workInfo(kind, "simDone", { t: result.summary.end, n: result.summary.rows });
   }
 }
 
