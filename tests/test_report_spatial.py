@@ -2,9 +2,10 @@
 typesetting (every page typeset: tests/test_report_pages.py): the planar report's
 sections in its order with the spatial ones, none for what is not computed (the machine
 motion; the reactions of a model without joints, which the report says need them: the
-reactions' section is in tests/test_report_spatial_reactions.py); the tables hold the solver's values in the display units — β, the vector
-ends placed independently (:class:`mechloop.spatial.points.Placement3`), the appendix's
-columns — and the works of the loads equal their closed forms; both languages."""
+reactions' section is in tests/test_report_spatial_reactions.py); the tables hold the
+solver's values in the display units — β, the vector ends placed independently
+(:class:`mechloop.spatial.points.Placement3`), the appendix's columns — and the works of
+the loads equal their closed forms; both languages."""
 
 from __future__ import annotations
 
