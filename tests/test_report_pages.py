@@ -40,8 +40,9 @@ def _dynamic(path: Path) -> bool:
 
 DYNAMIC = [p for p in sorted((ROOT / "examples").glob("*.yaml")) if _dynamic(p)]
 COURSE = sorted((ROOT / "examples" / "course").glob("[0-9][0-9]_*.yaml"))
-#: One model with spatial contours and bodies (issue 17: 3-D schemes, virtual power).
-SPATIAL = [ROOT / "examples" / "spatial" / "rssr_dynamics.yaml"]
+#: One model with spatial contours, bodies and joints (issue 17: 3-D schemes, virtual
+#: power, the joint reactions with their 3-D hodographs).
+SPATIAL = [ROOT / "examples" / "spatial" / "rssr_reactions.yaml"]
 #: A number with a decimal point (not a dotted run: a date, a section number, a name).
 DECIMAL_POINT = re.compile(r"(?<![\w.])\d+\.\d+(?![\w.])")
 CASES = [pytest.param(p, lang, id=f"{p.parent.name}/{p.stem}-{lang}")

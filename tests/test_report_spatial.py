@@ -1,9 +1,11 @@
 """The report of a model with spatial contours (issue 17), built as a document without
 typesetting (every page typeset: tests/test_report_pages.py): the planar report's
-sections in its order with the spatial ones, none for what is not computed (reactions,
-machine motion); the tables hold the solver's values in the display units — β, the vector
-ends placed independently (:class:`mechloop.spatial.points.Placement3`), the appendix's
-columns — and the works of the loads equal their closed forms; both languages."""
+sections in its order with the spatial ones, none for what is not computed (the machine
+motion; the reactions of a model without joints, which the report says need them: the
+reactions' section is in tests/test_report_spatial_reactions.py); the tables hold the
+solver's values in the display units — β, the vector ends placed independently
+(:class:`mechloop.spatial.points.Placement3`), the appendix's columns — and the works of
+the loads equal their closed forms; both languages."""
 
 from __future__ import annotations
 
@@ -77,7 +79,7 @@ def test_sections_in_the_planar_order_with_the_spatial_ones(documents, lang):
     assert not titles & {w["s_reactions"], w["s_motion"]}  # not computed: no heading
     said = " ".join(b.text for b in walk(_section(document, "s_reduced", lang).blocks)
                     if isinstance(b, Paragraph))
-    assert w["p_virtual_power"] in said
+    assert w["p_virtual_power"] in said and w["p_no_joints"] in said
     figures = [b for s in document.sections for b in walk(s.blocks)
                if isinstance(b, FigureItem)]
     assert w["f_plan3"].format(position=24) in [f.caption for f in figures]

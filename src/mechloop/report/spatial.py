@@ -10,12 +10,16 @@ between adjacent vectors in space, 5 dependence of the driven link on the drivin
 6 trajectories of the moving vector ends; for a model with bodies 7 mass
 characteristics and loads (inertia tensors, 3-D directions), 8 reduced loads and inertia
 by virtual power (the reduced characteristics, the balancing load, the works of the loads
-and the kinetic energy), 9 trajectories of the centres of mass; then the course
-project's sheets when given, the conclusion and the appendix with the values at every
-position (β, the vectors' x/y/z, the centres of mass, the bodies' angular velocities).
+and the kinetic energy), with ``joints:`` 9 the reactions in the kinematic pairs by the
+Newton–Euler equations (:mod:`mechloop.report.spatial_reactions`: the joints, the
+reactions at positions, their magnitudes and 3-D hodographs), 10 trajectories of the
+centres of mass; then the course project's sheets when given, the conclusion and the
+appendix with the values at every position (β, the vectors' x/y/z, the centres of mass,
+the bodies' angular velocities, the reactions).
 
-The joint reactions (the planar section 8) and the machine motion are not computed for
-spatial models yet, so they have no section; the reduced section says so.
+Without ``joints:`` there are no reactions, and the reduced section says that they need
+the joints; the machine motion is not computed for spatial models yet, so it has no
+section (the reduced section says so).
 """
 
 from __future__ import annotations
@@ -46,6 +50,7 @@ from mechloop.report.spatial_kinematics import (
     trajectories_section,
     vector_table3,
 )
+from mechloop.report.spatial_reactions import reactions_section3
 from mechloop.report.spatial_words import spatial_words
 from mechloop.report.title import title_info, title_page
 from mechloop.views.display import DEFAULT_DISPLAY
@@ -95,8 +100,9 @@ def spatial_document(model: Model, *, lang: str, output: str | None = None,
     if dyn is not None:
         sections += [masses_section3(dyn, model, shown, w),
                      reduced_section3(dyn, display, shown, lang, w)]
-        # the joint reactions of a spatial model (issue 17, being written) go here, as
-        # the planar report's section 'Reactions in the kinematic pairs'
+        reactions = reactions_section3(dyn, model, position, display, shown, lang, w)
+        if reactions is not None:
+            sections.append(reactions)
         centres = centres_section3(dyn, position, length_unit, lang, w)
         if centres is not None:
             sections.append(centres)
@@ -105,7 +111,8 @@ def spatial_document(model: Model, *, lang: str, output: str | None = None,
     sections.append(Section(w["s_conclusion"], list(conclusion3(dyn, results, name, shown,
                                                                  w))))
     frame = dyn.to_frame() if dyn is not None else results.to_frame()
-    appendix = Section(w["s_appendix"], list(appendix_tables(frame, shown, w)))
+    joints = tuple(dyn.reactions.joints) if dyn is not None and dyn.reactions else ()
+    appendix = Section(w["s_appendix"], list(appendix_tables(frame, shown, w, joints)))
     return Document(lang=lang, name=model.name or w["title"],
                     title=title_page(model, title_info(model, title), w),
                     sections=content.compact(sections), appendices=[appendix])

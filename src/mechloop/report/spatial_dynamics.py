@@ -21,6 +21,7 @@ from mechloop.report.conclusion import kinematic_lines
 from mechloop.report.document import FigureItem, Paragraph, Section, Table
 from mechloop.report.dynamic_parameters import _value_text, _when, other_table
 from mechloop.report.numbers import Shown
+from mechloop.report.spatial_reactions import agreement_lines, reaction_lines
 from mechloop.report.values import angle_text, finite_span, peak, point_text
 from mechloop.solve.results import compress_positions
 from mechloop.spatial.dynamics import SpatialDynamics
@@ -124,7 +125,7 @@ def moment_table3(dyn: SpatialDynamics, model: Model, shown: Shown, w: dict[str,
 def masses_section3(dyn: SpatialDynamics, model: Model, shown: Shown, w: dict[str, str]
                     ) -> Section:
     """The planar report's section 6 for a spatial model: bodies, forces, moments,
-    gravity (no kinematic pairs: the joints' force analysis is not made)."""
+    gravity (the kinematic pairs are tabulated in the reactions' section)."""
     blocks: list = [body_table3(dyn, model, shown, w)]
     if model.forces:
         blocks.append(force_table3(dyn, model, shown, w))
@@ -170,17 +171,30 @@ def plot_reduced3(dyn: SpatialDynamics, display: Display):
 
 
 def plot_balancing3(dyn: SpatialDynamics, display: Display):
-    """The balancing load of every argument by virtual power over the positions."""
+    """The balancing load of every argument by virtual power over the positions; with
+    joints the one by the Newton–Euler equations (solid, ``M_bal``) beside it (dashed,
+    ``M_bal_vp``), as the planar report's kinetostatics and virtual power."""
     from mechloop.views.curves import Series, draw_curves
     from mechloop.views.figure import new_figure
     from mechloop.views.russian import keep_names, model_names
 
-    figure = keep_names(new_figure(8.0, 4.5), model_names(dyn.kinematics.model))
-    curves = []
+    reactions = dyn.reactions
+    figure = keep_names(new_figure(8.0, 4.5 if reactions is None else 5.0),
+                        model_names(dyn.kinematics.model))
+    curves, styles = [], []
     for k, values in dyn.balancing.items():
         stem, unit = dyn.balancing_name(k)
-        curves.append(Series(stem, values, "moment" if unit == "N*m" else "force"))
-    draw_curves(figure.add_subplot(), _position(dyn), curves, display)
+        kind = "moment" if unit == "N*m" else "force"
+        if reactions is not None:
+            curves.append(Series(stem, reactions.balancing[k], kind))
+            styles.append("-")
+        curves.append(Series(stem if reactions is None else f"{stem}_vp", values, kind))
+        styles.append("--" if reactions is not None else "-")
+    ax = figure.add_subplot()
+    draw_curves(ax, _position(dyn), curves, display, styles=styles)
+    if reactions is not None:  # two lines: one would not fit the figure in Russian
+        ax.set_title("balancing load\nNewton–Euler equations (solid), virtual power "
+                     "(dashed)")
     return figure
 
 
@@ -267,14 +281,18 @@ def reduced_section3(dyn: SpatialDynamics, display: Display, shown: Shown, lang:
                      w: dict[str, str]) -> Section:
     """The planar report's section 7 for a spatial model: what is computed, the reduced
     characteristics (one argument), the balancing load, the works and the energy."""
-    blocks: list = [Paragraph(w["p_virtual_power"])]
+    joints = dyn.reactions is not None
+    blocks: list = [Paragraph(" ".join((w["p_virtual_power"],
+                                        w["p_joints" if joints else "p_no_joints"])))]
     if dyn.static:
         blocks.append(Paragraph(w["p_static"]))
     if dyn.reduced is not None:
         blocks.append(Section(w["s_reduced_sub"], [FigureItem(w["f_reduced"], lambda:
                               translate(plot_reduced3(dyn, display), lang))]))
-    blocks.append(Section(w["s_balancing"], [FigureItem(w["f_balancing3"], lambda:
-                          translate(plot_balancing3(dyn, display), lang))]))
+    blocks.append(Section(w["s_balancing"], [FigureItem(
+        w["f_balancing3_ne" if joints else "f_balancing3"],
+        lambda: translate(plot_balancing3(dyn, display), lang)),
+        *agreement_lines(dyn, shown, w)]))
     blocks.append(energy_section(dyn, display, shown, lang, w))
     return Section(w["s_reduced"], blocks)
 
@@ -334,7 +352,8 @@ def centres_section3(dyn: SpatialDynamics, position: int, length_unit: str | Non
 def conclusion3(dyn: SpatialDynamics | None, results, name: str, shown: Shown,
                 w: dict[str, str]) -> list[Paragraph]:
     """The conclusion: the output parameter and the breaks (as the planar report), then
-    the peak balancing loads, the reduced inertia and the kinetic energy."""
+    the peak balancing loads, the peak reaction force and moment (with joints), the
+    reduced inertia and the kinetic energy."""
     out = kinematic_lines(results, name, shown, w)
     if dyn is None:
         return out
@@ -344,6 +363,7 @@ def conclusion3(dyn: SpatialDynamics | None, results, name: str, shown: Shown,
         if found is not None:
             out.append(Paragraph(w["peak_bal"].format(name=stem, value=shown.text(
                 abs(found[1]), unit), position=found[0])))
+    out += reaction_lines(dyn, shown, w)
     if dyn.reduced is not None:
         linear = _linear(dyn)
         names = ("m_red", "dm_red") if linear else ("J_red", "dJ_red")

@@ -11,6 +11,8 @@ file); :func:`mechloop.views.figure.save_figure` writes PNG, SVG or PDF atomical
 * ``curves`` — parameters, combinations, angle differences, increments;
 * ``dynamics`` — reduced characteristics, balancing loads, reactions, hodographs,
   the summary table, machine motion;
+* ``spatial_reactions`` — the joint reactions of a spatial model: magnitudes over the
+  positions, the force (moment) hodograph in 3-D with its projections;
 * ``motion`` — the motion in time (:class:`~mechloop.dynamics.simulate.Simulation`):
   angle, speed, acceleration over time and the phase portrait;
 * ``formula`` — the structure and parametric formulas drawn;

@@ -120,6 +120,12 @@ RUSSIAN_WORDS: dict[str, str] = {
     "has no real solution on the chosen variant (the vectors cannot close the loop in "
     "space)": "не имеет действительного решения на выбранном варианте (векторы не "
               "замыкают контур в пространстве)",
+    # reactions of spatial models (views/spatial_reactions.py)
+    "hodograph of the reaction moment in": "годограф момента реакции в шарнире",
+    "reaction moments in the joints": "моменты реакций в шарнирах",
+    "reaction moment": "момент реакции",
+    "Newton–Euler equations (solid), virtual power (dashed)":
+        "уравнения Ньютона — Эйлера (сплошная), метод мощностей (штрих)",
     # structure (views/formula.py, mechloop.model.formula.describe_structure)
     "vector model": "векторная модель",
     "planar": "плоская",

@@ -317,4 +317,15 @@ ENTRIES: list[Entry] = [
     # the interactive 3-D view's HTML file (views/spatial_html.py)
     (r"no page language (?P<v>'[^']*'|\S+)", "нет языка страницы {v}"),
     (r"use en or ru", "укажите en или ru"),
+    # figures of the joint reactions of spatial models (views/spatial_reactions.py)
+    (r"this model has no joint reactions", "у этой модели нет реакций в шарнирах"),
+    (r"name its joints under joints: \(type, bodies, at, axis\) and solve it by "
+     r"mechloop\.solve_spatial_dynamics", "задайте её кинематические пары в разделе "
+     "'joints:' ('type', 'bodies', 'at', 'axis') и решите её функцией "
+     "'mechloop.solve_spatial_dynamics'"),
+    (r"unknown part (?P<v>'[^']*'|\S+) of a reaction", "неизвестная часть реакции {v}"),
+    (r"use 'force' or 'moment'", "используйте 'force' (сила) или 'moment' (момент)"),
+    (r"joint (?P<j>.+?) is spherical: its reaction has no moment",
+     "шарнир {j} сферический: у его реакции нет момента"),
+    (r"trace its force \(part='force'\)", "постройте годограф его силы ('part=force')"),
 ]
