@@ -28,7 +28,7 @@ from llvmlite import ir
 from numba import njit, types
 from numba.extending import intrinsic
 
-from mechloop.output.shortest import write_double, write_int
+from mechloop.output.shortest import SLACK, write_double, write_int
 
 #: Values in one block of rows formatted by one thread at a time (about 1.3 MB of CSV
 #: text: large enough that a thread's hand-over costs nothing, small enough for the
@@ -142,8 +142,8 @@ class Lines:
 
     def __call__(self, start: int, stop: int, out: np.ndarray | None = None) -> memoryview:
         """The lines of rows ``start:stop``, in ``out`` (uint8, at least
-        ``(stop - start) * row_bytes`` long) or a new buffer."""
-        need = (stop - start) * self.row_bytes
+        ``(stop - start) * row_bytes + SLACK`` long) or a new buffer."""
+        need = (stop - start) * self.row_bytes + SLACK
         if out is None or out.size < need:
             out = np.empty(need, dtype=np.uint8)
         size = _format_rows(self.addresses, self.strides, self.kinds, start, stop,
@@ -176,7 +176,8 @@ def write_lines(handle: BinaryIO, lines: Lines, threads: int, *, skip: int = 0) 
                 if len(pending) >= AHEAD * threads + 1:
                     _write_next(handle, pending, free, skip)
                     skip = 0
-                buffer = free.pop() if free else np.empty(step * lines.row_bytes, np.uint8)
+                buffer = free.pop() if free else np.empty(step * lines.row_bytes + SLACK,
+                                                             np.uint8)
                 pending.append((pool.submit(lines, start, stop, buffer), buffer))
             while pending:
                 _write_next(handle, pending, free, skip)

@@ -22,7 +22,12 @@ with ``nogil``: threads format disjoint rows at once (:mod:`mechloop.output.line
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from llvmlite import ir
+from numba import njit, types
+from numba.extending import intrinsic
+
+#: Bytes :func:`write_double` may touch from where it writes.
+SLACK = 40
 
 _POW5_INV_BITCOUNT = 125
 _POW5_BITCOUNT = 125
@@ -62,7 +67,29 @@ _HIDDEN = np.uint64(1 << 52)
 _EXPONENT = np.uint64(0x7FF)
 _SIGN = np.uint64(1 << 63)
 _U52 = np.uint64(52)
-_U63 = np.uint64(63)
+_ZEROS = np.uint64(int.from_bytes(b"00000000", "little"))
+_POINT_ZEROS = np.uint64(int.from_bytes(b"0.000000", "little"))
+
+
+@intrinsic
+def _load8(typingctx, address):
+    """The 8 bytes at a memory address (any alignment), as a uint64 (little-endian)."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
+        return builder.load(pointer, align=1)
+
+    return types.uint64(types.intp), codegen
+
+
+@intrinsic
+def _store8(typingctx, address, word):
+    """Store a uint64's 8 bytes at a memory address (any alignment)."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
+        builder.store(args[1], pointer, align=1)
+        return context.get_dummy_value()
+
+    return types.none(types.intp, types.uint64), codegen
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
@@ -103,7 +130,7 @@ def _pow5bits(e: int) -> int:
     return ((e * 1217359) >> 19) + 1
 
 
-@njit(nogil=True, cache=True, error_model="numpy")
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
 def _d2d(ieee_mantissa: np.uint64, ieee_exponent: int) -> tuple[np.uint64, int]:
     """Ryu's ``d2d``: the shortest decimal (digits, exponent of ten) of a finite,
     nonzero double given by its mantissa bits and biased exponent."""
@@ -286,11 +313,11 @@ def _put_digits(v: np.uint64, out: np.ndarray, end: int) -> None:
         out[end - 1] = np.uint8(48 + int(v))
 
 
-@njit(nogil=True, cache=True, error_model="numpy")
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
 def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
     """Write the finite double with bit pattern ``bits`` into ``out`` (uint8) from ``at``
-    as orjson writes it (see the module); the index after it.  ``out`` needs 24 bytes
-    from ``at``."""
+    as orjson writes it (see the module); the index after it.  ``out`` needs SLACK bytes
+    from ``at`` (the text takes at most 24; whole 8-byte words are copied)."""
     if bits & _SIGN:
         out[at] = 45  # "-"
         at += 1
@@ -304,41 +331,34 @@ def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
     mantissa, exponent = _d2d(ieee_mantissa, ieee_exponent)
     length = _length(mantissa)
     kk = length + exponent  # 10^(kk-1) <= |x| < 10^kk
-    # the layout first, then the digits written once (at end), then the fix-ups
-    point = 0  # digits moved left by one before a "." (1234e-2 -> 12.34, 1.234e33)
+    base = out.ctypes.data + at  # (whole words written: past the text, within the slack)
     if 0 <= exponent and kk <= 16:  # 1234e7 -> 12340000000.0
-        end = at + length
-    elif 0 < kk <= 16:  # 1234e-2 -> 12.34
-        end = at + length + 1
-        point = kk
-    elif -5 < kk <= 0:  # 1234e-6 -> 0.001234
-        end = at + 2 - kk + length
-    elif length == 1:  # 1e30
-        end = at + 1
-    else:  # 1234e30 -> 1.234e33
-        end = at + length + 1
-        point = 1
-    _put_digits(mantissa, out, end)
-    if point:
-        for i in range(point):
-            out[at + i] = out[at + i + 1]
-        out[at + point] = 46
-        if point == 1 and not 0 < kk <= 16:
-            return _write_exponent(kk - 1, out, end)
-        return end
-    if 0 <= exponent and kk <= 16:
-        for i in range(length, kk):
-            out[at + i] = 48
+        _put_digits(mantissa, out, at + length)
+        _store8(base + length, _ZEROS)  # kk - length <= 15 zeros
+        _store8(base + length + 8, _ZEROS)
         out[at + kk] = 46
         out[at + kk + 1] = 48
         return at + kk + 2
-    if -5 < kk <= 0:
-        out[at] = 48
-        out[at + 1] = 46
-        for i in range(2, 2 - kk):
-            out[at + i] = 48
+    if 0 < kk <= 16:  # 1234e-2 -> 12.34: the fraction moved right by one for the point
+        _put_digits(mantissa, out, at + length)
+        low = _load8(base + kk)
+        high = _load8(base + kk + 8)
+        _store8(base + kk + 1, low)
+        _store8(base + kk + 9, high)
+        out[at + kk] = 46
+        return at + length + 1
+    if -5 < kk <= 0:  # 1234e-6 -> 0.001234
+        _store8(base, _POINT_ZEROS)
+        end = at + 2 - kk + length
+        _put_digits(mantissa, out, end)
         return end
-    return _write_exponent(kk - 1, out, end)
+    if length == 1:  # 1e30
+        out[at] = np.uint8(48 + int(mantissa))
+        return _write_exponent(kk - 1, out, at + 1)
+    _put_digits(mantissa, out, at + length + 1)  # 1234e30 -> 1.234e33
+    out[at] = out[at + 1]
+    out[at + 1] = 46
+    return _write_exponent(kk - 1, out, at + length + 1)
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
@@ -389,7 +409,7 @@ def shortest_texts(values: np.ndarray) -> list[bytes]:
     values = np.ascontiguousarray(values, dtype=np.float64).ravel()
     if not np.isfinite(values).all():
         raise ValueError("shortest_texts formats finite values only")
-    out = np.empty(24 * values.size + 1, dtype=np.uint8)
+    out = np.empty(24 * values.size + SLACK, dtype=np.uint8)
     ends = np.empty(values.size, dtype=np.int64)
     _format_all(values.view(np.uint64), out, ends)
     text = out.tobytes()
