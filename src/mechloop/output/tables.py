@@ -369,8 +369,9 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
 def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
     """``frame`` as Parquet (row groups of about 8 million values; dictionary encoding
-    only for columns that are not floats; PARQUET_COMPRESSION) into ``handle``: a group is encoded and written
-    by a thread while the next is converted from the frame (at most two in memory)."""
+    only for columns that are not floats; PARQUET_COMPRESSION) into ``handle``: a group
+    is encoded and written by a thread while the next is converted from the frame (at
+    most two in memory)."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
