@@ -7,17 +7,17 @@ columns, 1,803 columns at the default, solved by ``mechloop.solve``.
 
 Each format is written in a forked child process (the table is shared copy-on-write), so
 its peak memory is its own: ``peak RSS`` is the child's ``ru_maxrss`` and ``above the
-table`` that minus the resident size at the fork.  CSV and JSON are formatted by worker
-processes the writer forks (one per core): ``worker MB`` is the largest private memory of
-one of them (their own pages, not the table they share), sampled every 20 ms.
-``MB/CPU-s`` is the size over the CPU time of the writer and its workers together (how
-fast one free core formats; ``MB/s`` depends on the machine's load and its free cores).  The file
+table`` that minus the resident size at the fork.  CSV and JSON are formatted in
+compiled code by a thread per idle core while the writer's thread writes (``threads``:
+how many the writer chose).  ``MB/CPU-s`` is the size over the CPU time of the writer's
+threads together (how fast one free core formats; ``MB/s`` depends on the machine's load
+and its free cores).  The file
 is read back and checked against the table (its row count, and the first and last 1,000
 rows bit for bit, read without loading the whole file) and removed.
 
     python benchmarks/bench_output.py                  # options: --contours 200
     python benchmarks/bench_output.py --contours 20 --positions 20000 --pandas
-    python benchmarks/bench_output.py --contours 50 --workers all   # or none
+    python benchmarks/bench_output.py --contours 50 --threads all   # or one
 
 ``--pandas`` also times pandas' own ``to_csv`` and ``to_json`` (what mechloop used before)
 for comparison.  ``--ecosystem`` times the library writers mechloop does not use, streamed
@@ -256,10 +256,8 @@ def run_child(frame: pd.DataFrame, path: Path, how: str, disk_bytes: int = 0) ->
             os._exit(0)
     os.close(write)
     data = b""
-    workers = 0.0
     os.set_blocking(read, False)
     while True:
-        workers = max(workers, _workers_private_mb(pid))
         try:
             chunk = os.read(read, 65536)
         except BlockingIOError:
@@ -271,27 +269,7 @@ def run_child(frame: pd.DataFrame, path: Path, how: str, disk_bytes: int = 0) ->
     os.close(read)
     os.waitpid(pid, 0)
     report = json.loads(data) if data else {"check": "FAILED: the child died"}
-    report["workers"] = workers
     return report
-
-
-def _workers_private_mb(pid: int) -> float:
-    """The largest private memory (pages of its own, not the table it shares with the
-    writer) of the writer's worker processes now, in MB; 0 when it has none."""
-    try:
-        children = open(f"/proc/{pid}/task/{pid}/children").read().split()
-    except OSError:
-        return 0.0
-    largest = 0.0
-    for child in children:
-        try:
-            with open(f"/proc/{child}/smaps_rollup") as f:
-                kb = sum(int(line.split()[1]) for line in f
-                         if line.startswith(("Private_Clean:", "Private_Dirty:")))
-        except (OSError, ValueError, IndexError):
-            continue
-        largest = max(largest, kb / 1024)
-    return largest
 
 
 def main() -> int:
@@ -311,17 +289,18 @@ def main() -> int:
     parser.add_argument("--ecosystem", action="store_true",
                         help="also time polars' write_csv/write_ndjson and Arrow's C++ "
                         "CSV writer")
-    parser.add_argument("--workers", choices=("auto", "all", "none"), default="auto",
-                        help="CSV/JSON worker processes: auto (one per idle core, as "
+    parser.add_argument("--threads", choices=("auto", "all", "one"), default="auto",
+                        help="CSV/JSON formatting threads: auto (one per idle core, as "
                         "mechloop does), all (one per core, whatever the load: to measure "
-                        "them on a busy machine), none (format in the writing process)")
+                        "them on a busy machine), one")
     args = parser.parse_args()
-    from mechloop.output import parallel
+    from mechloop.output import parallel, tables
 
-    if args.workers == "all":
+    if args.threads == "all":
         os.getloadavg = lambda: (0.0, 0.0, 0.0)  # this process only: every core counts
-    elif args.workers == "none":
-        parallel.PARALLEL_VALUES = 1 << 62
+        parallel.running_threads = lambda: None
+    elif args.threads == "one":
+        tables.threads_for = lambda values: 1
 
     t0 = time.perf_counter()
     frame = build_frame(args.contours, args.positions)
@@ -330,7 +309,7 @@ def main() -> int:
           f"memory), built in {time.perf_counter() - t0:.1f} s; resident "
           f"{_rss_mb():.0f} MB")
     cells = len(frame) * len(frame.columns)
-    print(f"workers ({args.workers}): {parallel.workers_for(cells, cells // 2**18)} for "
+    print(f"threads ({args.threads}): {tables.threads_for(cells)} for "
           f"CSV and JSON; load average {os.getloadavg()[0]:.1f} on "
           f"{len(os.sched_getaffinity(0))} cores")
     runs = [("disk", "csv")] if args.disk_mb else []
@@ -344,7 +323,7 @@ def main() -> int:
     failed = False
     print(f"{'writer':<10} {'format':<8} {'seconds':>8} {'MB':>8} {'MB/s':>7} "
           f"{'MB/CPU-s':>9} "
-          f"{'peak RSS MB':>12} {'above table MB':>15} {'worker MB':>10} {'of disk':>8}  "
+          f"{'peak RSS MB':>12} {'above table MB':>15} {'of disk':>8}  "
           "check")
     with tempfile.TemporaryDirectory(dir=args.dir) as folder:
         for how, fmt in runs:
@@ -364,7 +343,7 @@ def main() -> int:
                      if disk and "seconds" in disk else f"{'':8}")
             print(f"{how:<10} {fmt:<8} {r['seconds']:8.1f} {mb:8.0f} "
                   f"{mb / r['seconds']:7.0f} {mb / r['cpu']:9.0f} {r['peak']:12.0f} "
-                  f"{r['above']:15.0f} {r['workers']:10.0f} {ratio}  {r['check']}")
+                  f"{r['above']:15.0f} {ratio}  {r['check']}")
             failed |= r["check"].startswith("FAILED")
             if disk:
                 if "seconds" not in disk:
@@ -373,7 +352,7 @@ def main() -> int:
                     continue
                 print(f"{'disk':<10} {fmt:<8} {disk['seconds']:8.1f} {mb:8.0f} "
                       f"{mb / disk['seconds']:7.0f} {mb / disk['cpu']:9.0f} "
-                      f"{disk['peak']:12.0f} {disk['above']:15.0f} {0:10.0f} "
+                      f"{disk['peak']:12.0f} {disk['above']:15.0f} "
                       f"{'':8}  the same bytes, ready")
     return 1 if failed else 0
 

@@ -18,7 +18,7 @@ import pandas as pd
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechloop.output import tables
+from mechloop.output import lines, tables
 
 #: Doubles of every kind: any bit pattern (subnormals, huge and tiny exponents, NaN with
 #: any payload, infinities, -0.0), integer-valued floats, and round decimals.
@@ -49,11 +49,13 @@ def _frame(data: st.DataObject) -> pd.DataFrame:
 
 
 def _written(writer, frame: pd.DataFrame, chunk: int, woven: bool) -> bytes:
-    """The text ``writer`` writes, in chunks of about ``chunk`` values, woven in compiled
-    code (:mod:`mechloop.output.weave`, as for large tables) or joined in Python."""
+    """The text ``writer`` writes, in chunks (blocks) of about ``chunk`` values, formatted
+    in compiled code (:mod:`mechloop.output.lines`, as for large tables) or by orjson and
+    joined in Python."""
     with mock.patch.object(tables, "CHUNK_VALUES", chunk), \
             mock.patch.object(tables, "GATHER_VALUES", 3 * chunk + 1), \
-            mock.patch.object(tables, "_weaving", lambda values: woven):
+            mock.patch.object(lines, "BLOCK_VALUES", chunk), \
+            mock.patch.object(tables, "_compiled", lambda values: woven):
         handle = io.BytesIO()
         writer(frame, handle)
     return handle.getvalue()

@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from mechloop.output import parallel, tables
+from mechloop.output import lines, tables
 
 
 class _Sink:
@@ -42,12 +42,11 @@ def _frame(rows: int) -> pd.DataFrame:
 
 def _peak(writer, frame: pd.DataFrame) -> tuple[int, int]:
     """Peak traced bytes allocated while ``writer`` writes ``frame``, and the bytes
-    written (lines woven in compiled code and written by a thread, as for a large table
-    on a busy machine)."""
+    written (lines formatted in compiled code by two threads while this one writes, as
+    for a large table)."""
     sink = _Sink()
-    with mock.patch.object(tables, "_weaving", lambda values: True), \
-            mock.patch.object(tables, "GATHER_VALUES", 1 << 16), \
-            mock.patch.object(parallel, "PARALLEL_VALUES", 1 << 62):
+    with mock.patch.object(tables, "_compiled", lambda values: True), \
+            mock.patch.object(tables, "threads_for", lambda values: 2):
         writer(frame.iloc[:100], _Sink())  # compiled code loaded before tracing
         tracemalloc.start()
         try:
@@ -63,12 +62,15 @@ def test_memory_does_not_grow_with_the_rows(writer):
     for rows in (30_000, 120_000):
         frame = _frame(rows)
         peak, size = _peak(writer, frame)
-        width = len(frame.columns)
-        chunk = max(16, tables.CHUNK_VALUES // width) * size / rows  # bytes of a part
-        # what the writer may hold, whatever the rows: a gathered block of each run of
-        # columns (3 runs, 8-byte values), the parts queued for the writing thread, the
-        # one it writes and the one being formatted (its texts and its lines)
-        bound = 3 * 8 * (1 << 16) + (parallel.WRITE_AHEAD + 2) * chunk + 2 * chunk
+        csv = writer is tables.write_csv
+        prefixes = ([b","] * len(frame.columns) if csv else
+                    [b'},\n{"' + str(c).encode() + b'":' for c in frame.columns])
+        frame_lines = lines.Lines([frame[c].to_numpy() for c in frame.columns],
+                                  prefixes, b"\n" if csv else b"", csv=csv)
+        block = lines.block_rows(frame_lines) * frame_lines.row_bytes  # bytes of a buffer
+        # what the writer may hold, whatever the rows: the buffers of the blocks being
+        # formatted or waiting to be written (AHEAD per thread, one more being written)
+        bound = (lines.AHEAD * 2 + 2) * block
         assert peak < bound + (1 << 20), (rows, peak, bound)
         if rows == 120_000:
-            assert bound < size / 8, (bound, size)  # far less than the text written
+            assert bound < size / 4, (bound, size)  # far less than the text written

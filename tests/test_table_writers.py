@@ -15,7 +15,7 @@ import pytest
 from typer.testing import CliRunner
 
 from mechloop.cli import app
-from mechloop.output import OutputError, parallel, tables
+from mechloop.output import OutputError, lines, parallel, tables
 from mechloop.output.tables import check_table_size, write_frame
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -43,21 +43,21 @@ def _frame(rows: int = 53) -> pd.DataFrame:
     })
 
 
-@pytest.fixture(autouse=True, params=["here", "forked"])
+@pytest.fixture(autouse=True, params=["compiled, 1 thread", "compiled, 3 threads"])
 def small_chunks(monkeypatch, request):
     """Chunks of a few rows and gathers of a few chunks (not a whole number of them), so
-    that every test crosses chunk and gather boundaries; pieces of a few chunks formatted
-    in this process (and written by its writing thread), or by three forked workers (each
-    test runs both ways); lines woven in compiled code as for a large table where no
-    column holds strings (the Python joins: test_table_number_format.py)."""
+    that every test crosses chunk and gather boundaries; lines formatted in compiled code
+    as for a large table where no column holds strings (orjson's Python joins:
+    test_table_number_format.py), in blocks of a few rows by one thread or by three (each
+    test runs both ways)."""
     monkeypatch.setattr(tables, "CHUNK_VALUES", 20)
     monkeypatch.setattr(tables, "GATHER_VALUES", 45)
     monkeypatch.setattr(tables, "PIECE_VALUES", 70)
     monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
-    monkeypatch.setattr(tables, "_weaving", lambda values: True)  # as for a large table
-    monkeypatch.setattr(parallel, "PARALLEL_VALUES", 0 if request.param == "forked" else 1 << 62)
-    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2}, raising=False)
-    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # three idle cores
+    monkeypatch.setattr(lines, "BLOCK_VALUES", 25)
+    monkeypatch.setattr(tables, "_compiled", lambda values: True)  # as for a large table
+    threads = 3 if request.param.endswith("3 threads") else 1
+    monkeypatch.setattr(tables, "threads_for", lambda values: threads)
 
 
 def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
@@ -225,99 +225,37 @@ def test_a_pipe_or_a_buffer_gets_the_same_text_as_a_file(tmp_path, suffix):
     assert received == [expected]
 
 
-def test_a_failing_worker_is_raised_and_leaves_nothing(tmp_path, monkeypatch, request):
-    """A failure while formatting (in a forked worker or here) reaches the caller, with
-    the worker's traceback; the old file stays and no worker or temporary file is left."""
-    real = tables._csv_chunk
+@pytest.mark.parametrize("numbers_only", [True, False])
+def test_a_failing_format_is_raised_and_leaves_nothing(tmp_path, monkeypatch, numbers_only):
+    """A failure while formatting (in a formatting thread, or in Python for a table with
+    strings) reaches the caller; the old file stays, no temporary file is left and no
+    formatting thread goes on."""
+    import threading
 
-    def failing(columns, start, stop):
+    real_lines, real_chunk = lines.Lines.__call__, tables._csv_chunk
+
+    def failing_lines(self, start, stop, out=None):
         if start >= 40:
             raise ValueError("formatting failed at row 40")
-        return real(columns, start, stop)
+        return real_lines(self, start, stop, out)
 
-    monkeypatch.setattr(tables, "_csv_chunk", failing)
+    def failing_chunk(columns, start, stop):
+        if start >= 40:
+            raise ValueError("formatting failed at row 40")
+        return real_chunk(columns, start, stop)
+
+    monkeypatch.setattr(lines.Lines, "__call__", failing_lines)
+    monkeypatch.setattr(tables, "_csv_chunk", failing_chunk)
     target = tmp_path / "t.csv"
     target.write_bytes(b"old\n")
-    before = _children()
-    with pytest.raises((RuntimeError, ValueError), match="formatting failed at row 40"):
-        write_frame(_frame(), target)
+    frame = _frame(300)
+    if numbers_only:
+        frame = frame.drop(columns="note")
+    with pytest.raises(ValueError, match="formatting failed at row 40"):
+        write_frame(frame, target)
     assert target.read_bytes() == b"old\n"
     assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]
-    assert _children() <= before  # every worker was waited for (no zombie is left)
-
-
-def _children() -> set[int]:
-    """This process's child processes, alive or not yet waited for (other tests may have
-    left theirs, e.g. the fuzz harness's server)."""
-    found: set[int] = set()
-    for task in Path("/proc/self/task").iterdir():
-        found.update(int(pid) for pid in (task / "children").read_text().split())
-    return found
-
-
-_KILLED_TABLE_WRITER = """
-import os, sys, time
-import numpy as np, pandas as pd
-from mechloop.output import parallel, tables
-parallel.PARALLEL_VALUES = 0
-os.sched_getaffinity = lambda pid: {0, 1}
-os.getloadavg = lambda: (0.0, 0.0, 0.0)
-tables.PIECE_VALUES = 2000
-real_chunk, real_copier = tables._csv_chunk, parallel._copier
-
-def slow_chunk(columns, start, stop):
-    time.sleep(0.05)
-    return real_chunk(columns, start, stop)
-
-def copier(handle):
-    copy = real_copier(handle)
-    def told(source, size):
-        copy(source, size)
-        if not sys.stdout.closed:
-            print("writing", flush=True)
-            sys.stdout.close()
-    return told
-
-tables._csv_chunk, parallel._copier = slow_chunk, copier
-frame = pd.DataFrame(np.random.default_rng(1).normal(size=(4000, 50)))
-tables.write_frame(frame, sys.argv[1])
-"""
-
-
-@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="needs Linux /proc")
-def test_a_killed_parallel_writer_leaves_no_file_and_no_worker(tmp_path, request):
-    if request.node.callspec.params["small_chunks"] != "forked":
-        pytest.skip("one run is enough")
-    import signal
-    import subprocess
-    import sys
-    import time
-
-    target = tmp_path / "big.csv"
-    child = subprocess.Popen([sys.executable, "-c", _KILLED_TABLE_WRITER, str(target)],
-                             stdout=subprocess.PIPE, text=True)
-    try:
-        assert child.stdout.readline() == "writing\n"
-        workers = [int(p) for p in Path(f"/proc/{child.pid}/task/{child.pid}/children")
-                   .read_text().split()]
-        assert len(workers) == 2
-        child.send_signal(signal.SIGKILL)
-        child.wait(timeout=30)
-    finally:
-        child.kill()
-        child.wait()
-
-    def running(pid: int) -> bool:
-        try:
-            return Path(f"/proc/{pid}/stat").read_text().split(") ")[1][0] != "Z"
-        except (FileNotFoundError, ProcessLookupError):
-            return False
-
-    deadline = time.monotonic() + 20
-    while any(running(pid) for pid in workers) and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert not any(running(pid) for pid in workers)  # they found the pipe closed
-    assert list(tmp_path.iterdir()) == []
+    assert not [t for t in threading.enumerate() if t.name.startswith("mechloop-lines")]
 
 
 @pytest.mark.parametrize("rows", [1, 2])
@@ -338,32 +276,33 @@ def test_one_or_two_rows_and_single_columns(tmp_path, rows, columns):
         [type(v) for v in r.values()] for r in expected]
 
 
-def test_workers_only_for_idle_cores(monkeypatch):
-    """A worker per idle core (cores less the load), none below two or for a small table."""
-    monkeypatch.setattr(parallel, "PARALLEL_VALUES", 1000)
+def test_threads_for_idle_cores(monkeypatch):
+    """A formatting thread per idle core (cores less the load), at least one, and not
+    more than one per 2^16 values."""
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(4)), raising=False)
     monkeypatch.setattr(parallel, "running_threads", lambda: 99)  # the average decides
-    for load, workers in ((0.0, 4), (0.6, 3), (1.4, 3), (2.4, 2), (2.6, 0), (9.0, 0)):
+    for load, threads in ((0.0, 4), (0.6, 3), (1.4, 3), (2.4, 2), (2.6, 1), (9.0, 1)):
         monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, 0.0, 0.0))
-        assert parallel.workers_for(10**6, 100) == workers, load
+        assert parallel.threads_for(10**6) == threads, load
     # the average still holds this process's own solve (or a job just ended), but
     # nothing else runs now: every core is idle
     monkeypatch.setattr(os, "getloadavg", lambda: (3.0, 0.0, 0.0))
-    for running, workers in ((1, 4), (2, 3), (3, 2), (4, 0)):
+    for running, threads in ((1, 4), (2, 3), (3, 2), (4, 1)):
         monkeypatch.setattr(parallel, "running_threads", lambda running=running: running)
-        assert parallel.workers_for(10**6, 100) == workers, running
+        assert parallel.threads_for(10**6) == threads, running
     monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
-    assert parallel.workers_for(999, 100) == 0 and parallel.workers_for(10**6, 3) == 3
+    assert parallel.threads_for(3 << 16) == 3 and parallel.threads_for(10) == 1
 
 
-def test_a_failed_fork_formats_here(tmp_path, monkeypatch, request):
-    if request.node.callspec.params["small_chunks"] != "forked":
-        pytest.skip("one run is enough")
-
-    def no_fork():
-        raise OSError(12, "Cannot allocate memory")
-
-    write_frame(_frame(), tmp_path / "a.csv")
-    monkeypatch.setattr(parallel.os, "fork", no_fork)
-    write_frame(_frame(), tmp_path / "b.csv")
-    assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()
+def test_tables_of_every_size_are_the_same_text_compiled_or_not(tmp_path, monkeypatch):
+    """The compiled lines and orjson's Python joins write the same bytes, for tables of
+    one block or many, CSV and JSON."""
+    for rows in (1, 7, 300):
+        frame = _frame(max(rows, 53)).iloc[:rows].drop(columns="note")
+        for suffix in (".csv", ".json"):
+            texts = []
+            for compiled in (True, False):
+                monkeypatch.setattr(tables, "_compiled", lambda values, c=compiled: c)
+                write_frame(frame, tmp_path / f"t{suffix}")
+                texts.append((tmp_path / f"t{suffix}").read_bytes())
+            assert texts[0] == texts[1], (rows, suffix)

@@ -5,10 +5,12 @@ mode of the file it replaces, writes through a symlink, leaves no temporary file
 the checks of an output path before a long run (:mod:`.paths`: the folder exists and is
 writable, the path is no folder, the input model and its CSV tables are not
 overwritten) and the streaming
-table writers (:mod:`.tables`: CSV, JSON, Parquet and XLSX in bounded memory).
+table writers (:mod:`.tables`: CSV, JSON, Parquet and XLSX in bounded memory; large tables
+of numbers formatted in compiled code on threads, :mod:`.lines`, every float by the
+shortest round-trip formatter :mod:`.shortest`).
 
-May import: :mod:`mechloop.errors`, NumPy, pandas, orjson and pyarrow (the last three
-only inside the functions that need them, so that the command line starts fast), and
+May import: :mod:`mechloop.errors`, NumPy, pandas, orjson, pyarrow and numba (the last
+four only inside the functions that need them, so that the command line starts fast), and
 :func:`mechloop.model.load.read_document` inside the function that lists the files a
 model reads.
 """

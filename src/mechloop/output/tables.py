@@ -1,17 +1,17 @@
 """Streaming table writers: CSV, JSON, Parquet and XLSX by the file's suffix.
 
-A table of a million rows and thousands of columns is written in chunks of rows, each
-formatted by C code (orjson for the numbers of CSV and JSON, pyarrow for Parquet) and
-written at once, so memory stays bounded by a few chunks.  The lines of a CSV or JSON
-chunk of a large table are woven from orjson's texts of its runs of columns in one
-compiled pass (:mod:`mechloop.output.weave`); small tables, chunks with strings or
-objects, and CSV chunks with an infinity are joined in Python, into the same text.  The
-text is written by a thread of its own while the next chunks are formatted.  A large CSV
-or JSON table is formatted on every idle core, by forked workers each taking pieces of rows in turn
-(:mod:`mechloop.output.parallel`).  Every float is written in its shortest form that reads
-back to the same double (bit for bit).  Arrow's C++ CSV writer and polars' writers were
-measured against these (``benchmarks/bench_output.py --ecosystem``): neither formats more
-per CPU-second, streamed in chunks (see ``benchmarks/README.md``).
+A table of a million rows and thousands of columns is written in chunks of rows, so memory
+stays bounded by a few chunks.  A large table of numbers (float, int and bool columns) is
+formatted in compiled code without Python's lock (:mod:`mechloop.output.lines`; every float
+by :mod:`mechloop.output.shortest`), on a thread per idle core, while the calling thread
+writes the blocks in order.  Small tables (loading the compiled code costs about half a
+CPU-second) and tables with strings or objects are formatted by orjson and joined in
+Python, into the same text, and written by a thread of their own while the next chunks
+are formatted (:mod:`mechloop.output.parallel`).  Every float is written in its shortest
+form that reads back to the same double (bit for bit), as orjson writes it.  Arrow's C++
+CSV writer and polars' writers were measured against orjson's (``benchmarks/bench_output.py
+--ecosystem``): neither formats more per CPU-second, streamed in chunks (see
+``benchmarks/README.md``).
 
 Formats (as before the writers streamed):
 
@@ -26,7 +26,6 @@ Formats (as before the writers streamed):
 from __future__ import annotations
 
 import csv
-import functools
 import io
 import os
 from collections.abc import Iterator
@@ -37,13 +36,11 @@ from typing import TYPE_CHECKING, BinaryIO
 import numpy as np
 
 from mechloop.output.atomic import atomic_file
-from mechloop.output.parallel import Part, Render, workers_for, write_ordered
+from mechloop.output.parallel import Part, Render, threads_for, write_ordered
 from mechloop.output.paths import TABLE_SUFFIXES, OutputError
 
 if TYPE_CHECKING:
     import pandas as pd
-
-    from mechloop.output.weave import Weaver
 
 #: File types a table can be written as.
 
@@ -55,27 +52,38 @@ XLSX_COLUMNS = 16_384
 #: small enough for the CPU cache (larger chunks format more slowly).
 CHUNK_VALUES = 1 << 12
 
-#: Fewest values in a table worth weaving its lines in compiled code
-#: (:mod:`mechloop.output.weave`): loading numba and the compiled code takes about half a
-#: CPU-second, about what weaving saves on 10^7 values (smaller tables are joined in
-#: Python, into the same text).
-WEAVE_VALUES = 1 << 23
+#: Fewest values in a table worth formatting in compiled code
+#: (:mod:`mechloop.output.lines`): loading numba and the compiled code takes about half a
+#: CPU-second (smaller tables are formatted by orjson and joined in Python, into the same
+#: text).
+COMPILED_VALUES = 1 << 22
 
 #: Values gathered from the columns of a run at once (8 MB of doubles).
 GATHER_VALUES = 1 << 20
 
-#: Values in one piece of rows, formatted and held by one worker process (about 5 MB of
-#: CSV text; gathers of columns do not cross pieces).
+#: Values in one piece of rows (about 5 MB of CSV text; gathers of columns do not cross
+#: pieces).
 PIECE_VALUES = 1 << 18
+
+#: Parquet's compression of the columns' pages: none.  The writer is bound by the CPU, not
+#: by the disk: a table of 300,000 rows x 202 columns (``benchmarks/bench_output.py
+#: --contours 22 --positions 300000 --formats parquet``, two runs each on the loaded 2-core
+#: development machine) took 2.4-2.5 s with snappy (363 MB, 282-336 MB per CPU-second)
+#: and 1.3-2.0 s without compression (461 MB, 442-485 MB per CPU-second): of the CPU time,
+#: the conversion from pandas takes about 0.35 CPU-s, snappy's encoding 0.7 and the
+#: uncompressed encoding 0.57 (measured apart, written to the page cache).  Results of
+#: mechanisms are doubles with noise in their last digits, which snappy shrinks by only a
+#: fifth.  The values read back the same whatever the compression.
+PARQUET_COMPRESSION = "none"
 
 #: Values in one Parquet row group (about 64 MB of doubles: fewer, larger groups write
 #: faster and read better; the group is held in memory while it is written).
 PARQUET_GROUP_VALUES = 1 << 23
 
 
-def _weaving(values: int) -> bool:
-    """Whether to weave the lines of a table of ``values`` values in compiled code."""
-    return values >= WEAVE_VALUES
+def _compiled(values: int) -> bool:
+    """Whether to format a table of ``values`` values (numbers only) in compiled code."""
+    return values >= COMPILED_VALUES
 
 
 def check_table_size(rows: int, columns: int, path: str | os.PathLike[str]) -> None:
@@ -145,44 +153,31 @@ class _Columns:
             else:
                 self.runs.append((j, j + 1, kind))
         self.widths = [end - first for first, end, _ in self.runs]
-        self.woven = (all(kind != "o" for _, _, kind in self.runs)
-                      and _weaving(self.rows * self.width))
+        self.compiled = (all(kind != "o" for _, _, kind in self.runs)
+                         and _compiled(self.rows * self.width))
 
-    @functools.cached_property
-    def csv_weaver(self) -> Weaver:
-        """Lines of CSV from the runs' texts: a comma between runs, a newline after a row."""
-        from mechloop.output.weave import Weaver  # numba: only when a table is written
+    def lines(self, prefixes: list[bytes], suffix: bytes, *, csv: bool):
+        """The compiled formatter of these columns' lines
+        (:class:`mechloop.output.lines.Lines`)."""
+        from mechloop.output.lines import Lines  # numba: only when a large table is written
 
-        return Weaver(self.widths, [b""] + [b","] * (len(self.runs) - 1), b"\n",
-                      values=False)
+        return Lines(self.arrays, prefixes, suffix, csv=csv)
 
-    def texts(self, start: int, stop: int, *, csv: bool) -> list[bytes] | None:
-        """orjson's 2-D text of every run in rows ``start:stop``, for a
-        :class:`~mechloop.output.weave.Weaver`; None when a run holds strings or objects.
-        With ``csv``, NaN (``null``) is dropped (an empty field) and booleans capitalized,
-        and None is returned for an infinity too (orjson writes it as null, like NaN)."""
-        if not self.woven:
-            return None
-        texts = []
-        for run in self.runs:
-            block = self.block(run, start, stop)
-            text = _dump(block)
-            if csv and run[2] == "f" and not np.isfinite(block).all():
-                if np.isinf(block).any():
-                    return None
-                text = text.replace(b"null", b"")
-            elif csv and run[2] == "b":
-                text = text.replace(b"t", b"T").replace(b"f", b"F")
-            texts.append(text)
-        return texts
+    def write_compiled(self, handle: BinaryIO, prefixes: list[bytes], suffix: bytes, *,
+                       csv: bool, skip: int = 0) -> None:
+        """Every row formatted in compiled code on a thread per idle core and written in
+        order into ``handle`` (the first ``skip`` bytes left out)."""
+        from mechloop.output.lines import write_lines
+
+        write_lines(handle, self.lines(prefixes, suffix, csv=csv),
+                    threads_for(self.rows * self.width), skip=skip)
 
     def step(self) -> int:
         """Rows in one chunk: about CHUNK_VALUES values, at least 16 rows."""
         return max(16, CHUNK_VALUES // max(1, self.width))
 
     def pieces(self) -> list[tuple[int, int]]:
-        """The rows cut into pieces of whole chunks, about PIECE_VALUES values each (the
-        unit a worker formats and holds, see :mod:`mechloop.output.parallel`)."""
+        """The rows cut into pieces of whole chunks, about PIECE_VALUES values each."""
         step = self.step()
         rows = max(1, -(-(PIECE_VALUES // max(1, self.width)) // step)) * step
         return [(start, min(start + rows, self.rows)) for start in range(0, self.rows, rows)]
@@ -275,15 +270,7 @@ def _unbracket(items: list[bytes], brackets: int) -> list[bytes]:
 
 
 def _csv_chunk(columns: _Columns, start: int, stop: int) -> Part:
-    """Rows ``start:stop`` as CSV lines (each ending in a newline): woven in one compiled
-    pass (:mod:`mechloop.output.weave`) for a large table unless a column holds strings or
-    objects or a float column an infinity (rare: those chunks are formatted field by
-    field); woven by the thread that writes them (the weaving does not hold Python's
-    lock)."""
-    texts = columns.texts(start, stop, csv=True)
-    if texts is not None:
-        weave = functools.partial(columns.csv_weaver, texts, stop - start)
-        return lambda: [weave()]
+    """Rows ``start:stop`` as CSV lines (each ending in a newline), joined in Python."""
     if len(columns.runs) == 1 and columns.runs[0][2] == "f":  # floats only: no line split
         block = columns.block(columns.runs[0], start, stop)
         if not np.isinf(block).any():
@@ -301,14 +288,16 @@ def _csv_chunk(columns: _Columns, start: int, stop: int) -> Part:
 
 def write_csv(frame: pd.DataFrame, handle: BinaryIO) -> None:
     """``frame`` as CSV (header, then one line per row) into the binary ``handle``,
-    formatted on every core for a large table (:mod:`mechloop.output.parallel`)."""
+    formatted on every idle core for a large table (:mod:`mechloop.output.lines`)."""
     handle.write(b",".join(_csv_value(str(c)) for c in frame.columns) + b"\n")
     columns = _Columns(frame)
     if not columns.runs:
         handle.write(b"\n" * columns.rows)
         return
-    if columns.woven:
-        columns.csv_weaver  # noqa: B018 (made, and its code compiled, before any fork)
+    if columns.compiled:
+        columns.write_compiled(handle, [b""] + [b","] * (columns.width - 1), b"\n",
+                               csv=True)
+        return
 
     def render(first: int, last: int) -> Iterator[Part]:
         for start, stop in columns.chunks(first, last):
@@ -318,9 +307,7 @@ def write_csv(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
 
 def _write_pieces(columns: _Columns, handle: BinaryIO, render: Render) -> None:
-    pieces = columns.pieces()
-    write_ordered(handle, pieces, render,
-                  workers_for(columns.rows * columns.width, len(pieces)))
+    write_ordered(handle, columns.pieces(), render)
 
 
 def _json_tokens(columns: _Columns, start: int, stop: int) -> list[bytes]:
@@ -363,21 +350,13 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
     opener = b"},\n{"
     prefixes = [opener + keys[0] + b":"] + [b"," + key + b":" for key in keys[1:]]
     handle.write(b"[\n")
-    if columns.woven:  # made, and its code compiled, before any fork
-        from mechloop.output.weave import Weaver
-
-        weaver = Weaver(columns.widths, prefixes, b"", values=True)
-
-    def woven(texts: list[bytes], rows: int, first: bool) -> list[bytes | memoryview]:
-        block = weaver(texts, rows)  # (by the writing thread: compiled, without the lock)
-        return [block[len(opener) - 1:] if first else block]
+    if columns.compiled:
+        columns.write_compiled(handle, prefixes, b"", csv=False, skip=len(opener) - 1)
+        handle.write(b"}\n]\n")
+        return
 
     def render(first: int, last: int) -> Iterator[Part]:
         for start, stop in columns.chunks(first, last):
-            texts = columns.texts(start, stop, csv=False)  # inf: null, as NaN
-            if texts is not None:  # (columns.woven: the weaver is made)
-                yield functools.partial(woven, texts, stop - start, start == 0)
-                continue
             parts: list[bytes] = [b""] * (2 * (stop - start) * columns.width)
             parts[0::2] = prefixes * (stop - start)
             parts[1::2] = _json_tokens(columns, start, stop)
@@ -390,8 +369,9 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
 def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
     """``frame`` as Parquet (row groups of about 8 million values; dictionary encoding
-    only for columns that are not floats) into ``handle``: a group is encoded and written
-    by a thread while the next is converted from the frame (at most two in memory)."""
+    only for columns that are not floats; PARQUET_COMPRESSION) into ``handle``: a group
+    is encoded and written by a thread while the next is converted from the frame (at
+    most two in memory)."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
@@ -399,7 +379,8 @@ def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
     schema = pa.Schema.from_pandas(named, preserve_index=False)
     step = max(1, PARQUET_GROUP_VALUES // max(1, len(named.columns)))
     coded = [str(c) for c in named.columns if named[c].dtype.kind != "f"]  # few values
-    with pq.ParquetWriter(handle, schema, use_dictionary=coded) as writer, \
+    with pq.ParquetWriter(handle, schema, use_dictionary=coded,
+                          compression=PARQUET_COMPRESSION) as writer, \
             ThreadPoolExecutor(1) as pool:  # a group is encoded and written beside the next
         writing: Future[None] | None = None  # conversion (both release Python's lock)
         for start in range(0, len(named), step):

@@ -1,0 +1,196 @@
+"""Table lines made in compiled code, on threads, written in order.
+
+A :class:`Lines` formats rows of a table of float64, int64 and bool columns into the
+lines of a CSV or JSON file in one compiled pass (numba, ``nogil``): every value after its
+column's prefix (``,`` between CSV fields; ``{"name":`` and ``,"name":`` in a JSON
+record), every row followed by a suffix (a newline in CSV).  The columns are read where
+they are (their addresses and strides: no copy, no gather), a float by
+:func:`mechloop.output.shortest.write_double` (orjson's text), an integer in decimal, a
+boolean as ``True``/``False`` (CSV) or ``true``/``false`` (JSON); a NaN is an empty CSV
+field or a JSON ``null``, an infinity ``inf``/``-inf`` in CSV and ``null`` in JSON.
+
+:func:`write_lines` cuts the rows into blocks of about BLOCK_VALUES values, formats them
+on a pool of threads (one per idle core, at least one: the compiled code does not hold
+Python's lock, so the threads run at once) and writes them in order from the calling
+thread while the next blocks are formatted.  At most AHEAD blocks per thread are held, each
+in a buffer reused from block to block: memory stays bounded whatever the rows.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Sequence
+from concurrent.futures import Future, ThreadPoolExecutor
+from typing import BinaryIO
+
+import numpy as np
+from llvmlite import ir
+from numba import njit, types
+from numba.extending import intrinsic
+
+from mechloop.output.shortest import SLACK, write_double, write_int
+
+#: Values in one block of rows formatted by one thread at a time (about 1.3 MB of CSV
+#: text: large enough that a thread's hand-over costs nothing, small enough for the
+#: CPU's cache).
+BLOCK_VALUES = 1 << 16
+
+#: Blocks per thread formatted ahead of the one being written.
+AHEAD = 2
+
+#: Column kinds.
+FLOAT, INT, BOOL = 0, 1, 2
+
+#: The longest text of a value of each kind (``-1.7976931348623157e+308``,
+#: ``-9223372036854775808``, ``False``; ``null``, ``-inf``).
+_WIDEST = {FLOAT: 24, INT: 20, BOOL: 5}
+
+_U52 = np.uint64(52)
+_EXPONENT = np.uint64(0x7FF)
+_MANTISSA = np.uint64((1 << 52) - 1)
+_SIGN = np.uint64(1 << 63)
+
+
+@intrinsic
+def _load_int64(typingctx, address):
+    """The int64 at a memory address (any alignment)."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
+        return builder.load(pointer, align=1)
+
+    return types.int64(types.intp), codegen
+
+
+@intrinsic
+def _load_uint8(typingctx, address):
+    """The byte at a memory address."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(8).as_pointer())
+        return builder.load(pointer)
+
+    return types.uint8(types.intp), codegen
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _put(out: np.ndarray, at: int, text: np.ndarray, first: int, end: int) -> int:
+    for k in range(first, end):
+        out[at] = text[k]
+        at += 1
+    return at
+
+
+@njit(nogil=True, cache=True, error_model="numpy")
+def _format_rows(addresses: np.ndarray, strides: np.ndarray, kinds: np.ndarray,
+                 start: int, stop: int, prefix: np.ndarray, prefix_at: np.ndarray,
+                 suffix: np.ndarray, words: np.ndarray, word_at: np.ndarray,
+                 csv: bool, out: np.ndarray) -> int:
+    """Rows ``start:stop`` of the columns at ``addresses`` (byte ``strides``, ``kinds``)
+    as lines into ``out``; the bytes written.  ``words[word_at[w]:word_at[w + 1]]`` are
+    the fixed texts: 0 NaN, 1 inf, 2 -inf, 3 true, 4 false."""
+    at = 0
+    for row in range(start, stop):
+        for c in range(kinds.size):
+            at = _put(out, at, prefix, prefix_at[c], prefix_at[c + 1])
+            address = addresses[c] + row * strides[c]
+            kind = kinds[c]
+            if kind == 0:
+                bits = np.uint64(_load_int64(address))
+                if (bits >> _U52) & _EXPONENT == _EXPONENT:  # NaN or an infinity
+                    w = 0 if bits & _MANTISSA else (2 if bits & _SIGN else 1)
+                    at = _put(out, at, words, word_at[w], word_at[w + 1])
+                else:
+                    at = write_double(bits, out, at)
+            elif kind == 1:
+                at = write_int(_load_int64(address), out, at)
+            else:
+                w = 3 if _load_uint8(address) else 4
+                at = _put(out, at, words, word_at[w], word_at[w + 1])
+        at = _put(out, at, suffix, 0, suffix.size)
+    return at
+
+
+class Lines:
+    """The lines of rows of ``arrays`` (1-D, float64, int64 or bool, one per column;
+    kept alive here), each value after its entry of ``prefixes``, each row followed by
+    ``suffix``; CSV's texts of NaN, infinities and booleans with ``csv``, else JSON's."""
+
+    def __init__(self, arrays: Sequence[np.ndarray], prefixes: Sequence[bytes],
+                 suffix: bytes, *, csv: bool):
+        kinds = []
+        for a in arrays:
+            if a.ndim != 1 or a.dtype not in (np.float64, np.int64, np.bool_):
+                raise TypeError(f"a column of {a.dtype} cannot be formatted in compiled code")
+            kinds.append({"f": FLOAT, "i": INT, "b": BOOL}[a.dtype.kind])
+        self.arrays = list(arrays)
+        self.rows = len(arrays[0]) if arrays else 0
+        self.kinds = np.array(kinds, dtype=np.int8)
+        self.addresses = np.array([a.ctypes.data for a in arrays], dtype=np.intp)
+        self.strides = np.array([a.strides[0] for a in arrays], dtype=np.intp)
+        lengths = [len(p) for p in prefixes]
+        self.prefix = np.frombuffer(b"".join(prefixes) or b" ", dtype=np.uint8)
+        self.prefix_at = np.concatenate(([0], np.cumsum(lengths))).astype(np.int64)
+        self.suffix = np.frombuffer(suffix, dtype=np.uint8)
+        texts = [b"", b"inf", b"-inf", b"True", b"False"] if csv else \
+            [b"null", b"null", b"null", b"true", b"false"]
+        self.words = np.frombuffer(b"".join(texts), dtype=np.uint8)
+        self.word_at = np.concatenate(([0], np.cumsum([len(t) for t in texts]))
+                                      ).astype(np.int64)
+        self.csv = csv
+        #: the most bytes one row takes
+        self.row_bytes = (sum(lengths) + len(suffix)
+                          + sum(_WIDEST[int(k)] for k in self.kinds))
+
+    def __call__(self, start: int, stop: int, out: np.ndarray | None = None) -> memoryview:
+        """The lines of rows ``start:stop``, in ``out`` (uint8, at least
+        ``(stop - start) * row_bytes + SLACK`` long) or a new buffer."""
+        need = (stop - start) * self.row_bytes + SLACK
+        if out is None or out.size < need:
+            out = np.empty(need, dtype=np.uint8)
+        size = _format_rows(self.addresses, self.strides, self.kinds, start, stop,
+                            self.prefix, self.prefix_at, self.suffix, self.words,
+                            self.word_at, self.csv, out)
+        return memoryview(out)[:size]
+
+
+def block_rows(lines: Lines) -> int:
+    """Rows in one block: about BLOCK_VALUES values, at least one row."""
+    return max(1, BLOCK_VALUES // max(1, len(lines.kinds)))
+
+
+def write_lines(handle: BinaryIO, lines: Lines, threads: int, *, skip: int = 0) -> None:
+    """Every row of ``lines`` into ``handle``, in order, formatted by ``threads`` threads
+    (at least one) while this thread writes; the first ``skip`` bytes left out."""
+    rows, step = lines.rows, block_rows(lines)
+    if rows == 0:
+        return
+    blocks = [(s, min(s + step, rows)) for s in range(0, rows, step)]
+    threads = max(1, min(threads, len(blocks)))
+    if len(blocks) == 1:
+        handle.write(lines(0, rows)[skip:])
+        return
+    free: list[np.ndarray] = []  # buffers of written blocks, reused
+    pending: deque[tuple[Future[memoryview], np.ndarray]] = deque()
+    with ThreadPoolExecutor(threads, thread_name_prefix="mechloop-lines") as pool:
+        try:
+            for start, stop in blocks:
+                if len(pending) >= AHEAD * threads + 1:
+                    _write_next(handle, pending, free, skip)
+                    skip = 0
+                buffer = free.pop() if free else np.empty(step * lines.row_bytes + SLACK,
+                                                             np.uint8)
+                pending.append((pool.submit(lines, start, stop, buffer), buffer))
+            while pending:
+                _write_next(handle, pending, free, skip)
+                skip = 0
+        except BaseException:
+            for future, _ in pending:
+                future.cancel()
+            raise
+
+
+def _write_next(handle: BinaryIO, pending: deque, free: list[np.ndarray], skip: int
+                ) -> None:
+    future, buffer = pending.popleft()
+    text = future.result()
+    handle.write(text[skip:] if skip else text)
+    free.append(buffer)

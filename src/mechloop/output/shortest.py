@@ -1,0 +1,417 @@
+"""The shortest text of a double that reads back to it, in compiled code without Python's lock.
+
+:func:`write_double` writes a finite double into a byte buffer exactly as orjson writes it
+(the form the table writers have always used): the shortest decimal digits that read back
+to the same double, bit for bit, the one nearest the double among them (Ryu, Ulf Adams,
+"Ryū: fast float-to-string conversion", PLDI 2018, its ``d2d`` with the 128-bit products
+made of 64-bit halves), laid out as orjson lays them out:
+
+- ``kk``, the place of the decimal point after the first digit (10^(kk-1) <= |x| < 10^kk):
+  digits then zeros and ``.0`` for an integer of at most 16 figures (``100.0``,
+  ``1000000000000000.0``); digits with a point inside for 0 < kk <= 16 (``12.34``);
+  ``0.`` and zeros for -5 < kk <= 0 (``0.00001``); else ``d.ddde±x`` with the exponent's
+  sign always written and no leading zeros (``1e-7``, ``1.5e+300``, ``5e-324``);
+- ``0.0`` and ``-0.0`` for the zeros, a ``-`` before a negative number.
+
+The tables of powers of five (Ryu's ``DOUBLE_POW5_SPLIT`` and ``DOUBLE_POW5_INV_SPLIT``,
+125-bit approximations stored as two 64-bit halves) are computed exactly at import with
+Python's integers.  :func:`write_int` writes an int64 in decimal.  Everything is compiled
+with ``nogil``: threads format disjoint rows at once (:mod:`mechloop.output.lines`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from llvmlite import ir
+from numba import njit, types
+from numba.extending import intrinsic
+
+#: Bytes :func:`write_double` may touch from where it writes.
+SLACK = 40
+
+_POW5_INV_BITCOUNT = 125
+_POW5_BITCOUNT = 125
+_MASK64 = (1 << 64) - 1
+
+
+def _tables() -> tuple[np.ndarray, np.ndarray]:
+    """Ryu's 125-bit powers of five: 5^i (i < 326, top bits) and 2^k / 5^i + 1 (i < 342),
+    each as (low 64 bits, high 64 bits)."""
+    split = np.zeros((326, 2), dtype=np.uint64)
+    for i in range(326):
+        power = 5**i
+        shift = power.bit_length() - _POW5_BITCOUNT
+        value = power >> shift if shift >= 0 else power << -shift
+        split[i] = value & _MASK64, value >> 64
+    inverse = np.zeros((342, 2), dtype=np.uint64)
+    for i in range(342):
+        power = 5**i
+        value = (1 << (power.bit_length() - 1 + _POW5_INV_BITCOUNT)) // power + 1
+        inverse[i] = value & _MASK64, value >> 64
+    return split, inverse
+
+
+_POW5_SPLIT, _POW5_INV_SPLIT = _tables()
+
+#: "00", "01", ..., "99": two digits at a time.
+_DIGITS = np.frombuffer("".join(f"{i:02d}" for i in range(100)).encode(), dtype=np.uint8)
+
+_U0, _U1, _U2, _U4 = np.uint64(0), np.uint64(1), np.uint64(2), np.uint64(4)
+_U5, _U10, _U100 = np.uint64(5), np.uint64(10), np.uint64(100)
+_U32, _U64 = np.uint64(32), np.uint64(64)
+_U1E4, _U1E8 = np.uint64(10**4), np.uint64(10**8)
+_POW10 = np.array([10**k for k in range(20)], dtype=np.uint64)
+_M32 = np.uint64(0xFFFFFFFF)
+_MANTISSA = np.uint64((1 << 52) - 1)
+_HIDDEN = np.uint64(1 << 52)
+_EXPONENT = np.uint64(0x7FF)
+_SIGN = np.uint64(1 << 63)
+_U52 = np.uint64(52)
+_ZEROS = np.uint64(int.from_bytes(b"00000000", "little"))
+_POINT_ZEROS = np.uint64(int.from_bytes(b"0.000000", "little"))
+
+
+@intrinsic
+def _load8(typingctx, address):
+    """The 8 bytes at a memory address (any alignment), as a uint64 (little-endian)."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
+        return builder.load(pointer, align=1)
+
+    return types.uint64(types.intp), codegen
+
+
+@intrinsic
+def _store8(typingctx, address, word):
+    """Store a uint64's 8 bytes at a memory address (any alignment)."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
+        builder.store(args[1], pointer, align=1)
+        return context.get_dummy_value()
+
+    return types.none(types.intp, types.uint64), codegen
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _umul128(a: np.uint64, b: np.uint64) -> tuple[np.uint64, np.uint64]:
+    """The 128-bit product of two uint64: (low, high)."""
+    a_lo, a_hi = a & _M32, a >> _U32
+    b_lo, b_hi = b & _M32, b >> _U32
+    b00 = a_lo * b_lo
+    b01 = a_lo * b_hi
+    b10 = a_hi * b_lo
+    b11 = a_hi * b_hi
+    mid1 = b10 + (b00 >> _U32)
+    mid2 = b01 + (mid1 & _M32)
+    high = b11 + (mid1 >> _U32) + (mid2 >> _U32)
+    low = (mid2 << _U32) | (b00 & _M32)
+    return low, high
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _shiftright128(low: np.uint64, high: np.uint64, dist: np.uint64) -> np.uint64:
+    """(high:low) >> dist for 0 < dist < 64."""
+    return (high << (_U64 - dist)) | (low >> dist)
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _pow5_factor(value: np.uint64) -> int:
+    count = 0
+    while True:
+        q = value // _U5
+        if value - _U5 * q != _U0:
+            return count
+        value = q
+        count += 1
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _pow5bits(e: int) -> int:
+    return ((e * 1217359) >> 19) + 1
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _d2d(ieee_mantissa: np.uint64, ieee_exponent: int) -> tuple[np.uint64, int]:
+    """Ryu's ``d2d``: the shortest decimal (digits, exponent of ten) of a finite,
+    nonzero double given by its mantissa bits and biased exponent."""
+    if ieee_exponent == 0:
+        e2 = 1 - 1023 - 52 - 2
+        m2 = ieee_mantissa
+    else:
+        e2 = ieee_exponent - 1023 - 52 - 2
+        m2 = _HIDDEN | ieee_mantissa
+    even = (m2 & _U1) == _U0
+    accept_bounds = even
+    mv = _U4 * m2
+    mm_shift = 1 if (ieee_mantissa != _U0 or ieee_exponent <= 1) else 0
+
+    vm_trailing = False
+    vr_trailing = False
+    if e2 >= 0:
+        q = ((e2 * 78913) >> 18) - (1 if e2 > 3 else 0)
+        e10 = q
+        k = _POW5_INV_BITCOUNT + _pow5bits(q) - 1
+        i = -e2 + q + k
+        mul0 = _POW5_INV_SPLIT[q, 0]
+        mul1 = _POW5_INV_SPLIT[q, 1]
+        j = i
+        if q <= 21:
+            mv_mod5 = mv - _U5 * (mv // _U5)
+            if mv_mod5 == _U0:
+                vr_trailing = _pow5_factor(mv) >= q
+            elif accept_bounds:
+                vm_trailing = _pow5_factor(mv - _U1 - np.uint64(mm_shift)) >= q
+        # (not accept_bounds and q <= 21 and mv % 5 != 0: vp -= ..., below)
+    else:
+        q = ((-e2 * 732923) >> 20) - (1 if -e2 > 1 else 0)
+        e10 = q + e2
+        i = -e2 - q
+        k = _pow5bits(i) - _POW5_BITCOUNT
+        j = q - k
+        mul0 = _POW5_SPLIT[i, 0]
+        mul1 = _POW5_SPLIT[i, 1]
+
+    # mulShiftAll64 (Ryu without 128-bit integers): vr, vp, vm from two products
+    m = m2 << _U1
+    lo, tmp = _umul128(m, mul0)
+    lo1, hi = _umul128(m, mul1)
+    mid = tmp + lo1
+    if mid < tmp:
+        hi += _U1
+    lo2 = lo + mul0
+    mid2 = mid + mul1 + (_U1 if lo2 < lo else _U0)
+    hi2 = hi + (_U1 if mid2 < mid else _U0)
+    shift = np.uint64(j - 64 - 1)
+    vp = _shiftright128(mid2, hi2, shift)
+    if mm_shift == 1:
+        lo3 = lo - mul0
+        mid3 = mid - mul1 - (_U1 if lo3 > lo else _U0)
+        hi3 = hi - (_U1 if mid3 > mid else _U0)
+        vm = _shiftright128(mid3, hi3, shift)
+    else:
+        lo3 = lo + lo
+        mid3 = mid + mid + (_U1 if lo3 < lo else _U0)
+        hi3 = hi + hi + (_U1 if mid3 < mid else _U0)
+        lo4 = lo3 - mul0
+        mid4 = mid3 - mul1 - (_U1 if lo4 > lo3 else _U0)
+        hi4 = hi3 - (_U1 if mid4 > mid3 else _U0)
+        vm = _shiftright128(mid4, hi4, np.uint64(j - 64))
+    vr = _shiftright128(mid, hi, shift)
+
+    if e2 >= 0:
+        if q <= 21 and not accept_bounds:
+            if mv - _U5 * (mv // _U5) != _U0 and _pow5_factor(mv + _U2) >= q:
+                vp -= _U1
+    else:
+        if q <= 1:
+            vr_trailing = True
+            if accept_bounds:
+                vm_trailing = mm_shift == 1
+            else:
+                vp -= _U1
+        elif q < 63:
+            vr_trailing = (mv & ((_U1 << np.uint64(q)) - _U1)) == _U0
+
+    removed = 0
+    last = 0
+    if vm_trailing or vr_trailing:  # the general case (rare)
+        while True:
+            vp_div = vp // _U10
+            vm_div = vm // _U10
+            if vp_div <= vm_div:
+                break
+            vm_mod = vm - _U10 * vm_div
+            vr_div = vr // _U10
+            vr_mod = vr - _U10 * vr_div
+            vm_trailing = vm_trailing and vm_mod == _U0
+            vr_trailing = vr_trailing and last == 0
+            last = int(vr_mod)
+            vr, vp, vm = vr_div, vp_div, vm_div
+            removed += 1
+        if vm_trailing:
+            while True:
+                vm_div = vm // _U10
+                vm_mod = vm - _U10 * vm_div
+                if vm_mod != _U0:
+                    break
+                vp_div = vp // _U10
+                vr_div = vr // _U10
+                vr_mod = vr - _U10 * vr_div
+                vr_trailing = vr_trailing and last == 0
+                last = int(vr_mod)
+                vr, vp, vm = vr_div, vp_div, vm_div
+                removed += 1
+        if vr_trailing and last == 5 and (vr & _U1) == _U0:
+            last = 4  # round to even when the exact number is ...50..0
+        up = (vr == vm and (not accept_bounds or not vm_trailing)) or last >= 5
+        output = vr + (_U1 if up else _U0)
+    else:  # the common case
+        round_up = False
+        vp_div = vp // _U100
+        vm_div = vm // _U100
+        if vp_div > vm_div:  # two digits at a time
+            vr_div = vr // _U100
+            round_up = vr - _U100 * vr_div >= np.uint64(50)
+            vr, vp, vm = vr_div, vp_div, vm_div
+            removed += 2
+        while True:
+            vp_div = vp // _U10
+            vm_div = vm // _U10
+            if vp_div <= vm_div:
+                break
+            vr_div = vr // _U10
+            round_up = vr - _U10 * vr_div >= _U5
+            vr, vp, vm = vr_div, vp_div, vm_div
+            removed += 1
+        output = vr + (_U1 if (vr == vm or round_up) else _U0)
+    return output, e10 + removed
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _length(v: np.uint64) -> int:
+    """Decimal digits of v (1 for 0): a sum of comparisons (no branch to mispredict)."""
+    n = 1
+    for k in range(1, 20):
+        n += v >= _POW10[k]
+    return n
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _put_digits(v: np.uint64, out: np.ndarray, end: int) -> None:
+    """The decimal digits of v written right to left ending before ``end``: eight at a
+    time from independent quotients (short chains of divisions), then two at a time."""
+    while v >= _U1E8:
+        q = v // _U1E8
+        r = v - _U1E8 * q
+        high = r // _U1E4
+        low = r - _U1E4 * high
+        d1 = high // _U100
+        d0 = high - _U100 * d1
+        d3 = low // _U100
+        d2 = low - _U100 * d3
+        end -= 8
+        out[end] = _DIGITS[2 * d1]
+        out[end + 1] = _DIGITS[2 * d1 + _U1]
+        out[end + 2] = _DIGITS[2 * d0]
+        out[end + 3] = _DIGITS[2 * d0 + _U1]
+        out[end + 4] = _DIGITS[2 * d3]
+        out[end + 5] = _DIGITS[2 * d3 + _U1]
+        out[end + 6] = _DIGITS[2 * d2]
+        out[end + 7] = _DIGITS[2 * d2 + _U1]
+        v = q
+    while v >= _U100:
+        q = v // _U100
+        r = v - _U100 * q
+        end -= 2
+        out[end] = _DIGITS[2 * r]
+        out[end + 1] = _DIGITS[2 * r + _U1]
+        v = q
+    if v >= _U10:
+        out[end - 2] = _DIGITS[2 * v]
+        out[end - 1] = _DIGITS[2 * v + _U1]
+    else:
+        out[end - 1] = np.uint8(48 + int(v))
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
+    """Write the finite double with bit pattern ``bits`` into ``out`` (uint8) from ``at``
+    as orjson writes it (see the module); the index after it.  ``out`` needs SLACK bytes
+    from ``at`` (the text takes at most 24; whole 8-byte words are copied)."""
+    if bits & _SIGN:
+        out[at] = 45  # "-"
+        at += 1
+    ieee_mantissa = bits & _MANTISSA
+    ieee_exponent = int((bits >> _U52) & _EXPONENT)
+    if ieee_exponent == 0 and ieee_mantissa == _U0:
+        out[at] = 48
+        out[at + 1] = 46
+        out[at + 2] = 48
+        return at + 3
+    mantissa, exponent = _d2d(ieee_mantissa, ieee_exponent)
+    length = _length(mantissa)
+    kk = length + exponent  # 10^(kk-1) <= |x| < 10^kk
+    base = out.ctypes.data + at  # (whole words written: past the text, within the slack)
+    if 0 <= exponent and kk <= 16:  # 1234e7 -> 12340000000.0
+        _put_digits(mantissa, out, at + length)
+        _store8(base + length, _ZEROS)  # kk - length <= 15 zeros
+        _store8(base + length + 8, _ZEROS)
+        out[at + kk] = 46
+        out[at + kk + 1] = 48
+        return at + kk + 2
+    if 0 < kk <= 16:  # 1234e-2 -> 12.34: the fraction moved right by one for the point
+        _put_digits(mantissa, out, at + length)
+        low = _load8(base + kk)
+        high = _load8(base + kk + 8)
+        _store8(base + kk + 1, low)
+        _store8(base + kk + 9, high)
+        out[at + kk] = 46
+        return at + length + 1
+    if -5 < kk <= 0:  # 1234e-6 -> 0.001234
+        _store8(base, _POINT_ZEROS)
+        end = at + 2 - kk + length
+        _put_digits(mantissa, out, end)
+        return end
+    if length == 1:  # 1e30
+        out[at] = np.uint8(48 + int(mantissa))
+        return _write_exponent(kk - 1, out, at + 1)
+    _put_digits(mantissa, out, at + length + 1)  # 1234e30 -> 1.234e33
+    out[at] = out[at + 1]
+    out[at + 1] = 46
+    return _write_exponent(kk - 1, out, at + length + 1)
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _write_exponent(e: int, out: np.ndarray, at: int) -> int:
+    """``e+x`` or ``e-x`` (no leading zeros) at ``at``; the index after it."""
+    out[at] = 101  # "e"
+    out[at + 1] = 45 if e < 0 else 43  # "-" or "+"
+    e = -e if e < 0 else e
+    if e >= 100:
+        out[at + 2] = 48 + e // 100
+        out[at + 3] = 48 + (e // 10) % 10
+        out[at + 4] = 48 + e % 10
+        return at + 5
+    if e >= 10:
+        out[at + 2] = 48 + e // 10
+        out[at + 3] = 48 + e % 10
+        return at + 4
+    out[at + 2] = 48 + e
+    return at + 3
+
+
+@njit(nogil=True, cache=True, error_model="numpy")
+def write_int(value: np.int64, out: np.ndarray, at: int) -> int:
+    """Write an int64 in decimal into ``out`` from ``at`` (20 bytes needed); the index
+    after it."""
+    if value < 0:
+        out[at] = 45
+        at += 1
+        magnitude = np.uint64(-(value + 1)) + _U1  # also for -2^63
+    else:
+        magnitude = np.uint64(value)
+    length = _length(magnitude)
+    _put_digits(magnitude, out, at + length)
+    return at + length
+
+
+@njit(nogil=True, cache=True, error_model="numpy")
+def _format_all(bits: np.ndarray, out: np.ndarray, ends: np.ndarray) -> None:
+    at = 0
+    for i in range(bits.size):
+        at = write_double(bits[i], out, at)
+        ends[i] = at
+
+
+def shortest_texts(values: np.ndarray) -> list[bytes]:
+    """The text :func:`write_double` gives every value of a float64 array (finite values
+    only): for tests and checks."""
+    values = np.ascontiguousarray(values, dtype=np.float64).ravel()
+    if not np.isfinite(values).all():
+        raise ValueError("shortest_texts formats finite values only")
+    out = np.empty(24 * values.size + SLACK, dtype=np.uint8)
+    ends = np.empty(values.size, dtype=np.int64)
+    _format_all(values.view(np.uint64), out, ends)
+    text = out.tobytes()
+    starts = np.concatenate(([0], ends[:-1]))
+    return [text[s:e] for s, e in zip(starts.tolist(), ends.tolist(), strict=True)]
