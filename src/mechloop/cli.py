@@ -637,11 +637,19 @@ def plot(
                               lang), output)
         out.print(f"{wrote} {output}")
         return
-    results = _dynamics(m, model) if m.bodies else solve_model(m)
     dynamic_kinds = ("reduced", "balancing", "reactions", "hodograph", "summary", "motion")
     if kind in dynamic_kinds and not m.bodies:
         raise ViewError(f"'{kind}' needs a model with bodies",
                         "add bodies (see examples/crank_slider_dynamics.yaml)")
+    if kind in dynamic_kinds and is_spatial(m):  # issue 17: by virtual power
+        from mechloop.views.spatial_dynamics import plot_spatial_dynamics
+
+        figure = plot_spatial_dynamics(_spatial_dynamics(m, model), kind, against=against,
+                                       display=display)
+        save_figure(translate(figure, lang), output)
+        out.print(f"{wrote} {output}")
+        return
+    results = _dynamics(m, model) if m.bodies and not is_spatial(m) else solve_model(m)
     listed = _split(names)
     if kind in ("plan", "overlay", "trajectories") and is_spatial(m):  # issue 17: in 3-D
         figure = _spatial_plot(results, kind, position or 0, _split(points), elev=elev,

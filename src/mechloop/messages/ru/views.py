@@ -320,4 +320,24 @@ ENTRIES: list[Entry] = [
     # the language of mechloop info / structure (cli.py)
     (r"no text language (?P<v>'[^']*'|\S+)", "нет языка текста {v}"),
     (r"use --lang en or --lang ru", "укажите --lang en или --lang ru"),
+    # plots of the dynamics of a spatial model (views/spatial_dynamics.py)
+    (r"cannot plot against (?P<v>'[^']*'|\S+) for this model",
+     "по оси абсцисс нельзя откладывать {v} для этой модели"),
+    (r"use one of: (?P<items>[\w, ]+)", "укажите одно из: {items}"),
+    (r"reduced characteristics need a one-input machine; this model has (?P<n>\S+) "
+     r"arguments", "приведённые характеристики строятся только для машины с одним "
+     "входом; аргументов у этой модели: {n}"),
+    (r"plot the balancing loads \(plot \.\.\. balancing\) instead",
+     "постройте вместо них уравновешивающие нагрузки (plot ... balancing)"),
+    (r"the summary is not given: the chain breaks at positions (?P<where>.+)",
+     "сводные характеристики не приводятся: цепь разрывается в положениях {where}"),
+    (r"choose the arguments' range so that the chain closes at every position",
+     "выберите диапазон аргументов, при котором цепь замыкается во всех положениях"),
+    (r"'(?P<kind>\w+)' is not drawn for a model with spatial contours yet \(it needs the "
+     r"joint reactions or the machine motion, which the spatial dynamics by virtual power "
+     r"does not give\)", "'{kind}' для модели с пространственными контурами пока не "
+     "строится (нужны реакции в кинематических парах или движение машины, которых "
+     "динамика по мощностям в пространстве не даёт)"),
+    (r"plot one of (?P<items>[\w, ]+), or write the dynamics table with mechloop solve",
+     "постройте одно из: {items} — или запишите таблицу динамики командой mechloop solve"),
 ]
