@@ -857,6 +857,16 @@ def structure(
 
     lang = _text_lang(lang)
     m = load_model(model)
+    if any(c.spatial for c in m.contours):  # issue 17: Somov–Malyshev, not Assur groups
+        from mechloop.structure.spatial import spatial_structure
+        from mechloop.structure.spatial_text import spatial_structure_lines
+
+        try:
+            lines = spatial_structure_lines(spatial_structure(m), m, lang)
+        except ModelError as exc:
+            raise locate(exc, model) from None
+        out.print(escape("\n".join(lines)))
+        return
     try:
         mob, dec = analyze(m)
     except ModelError as exc:

@@ -143,6 +143,12 @@ def structure(text: str, path: Path, root: Path, lang: str = "en") -> dict[str, 
         description = describe_structure(model, lang)
         if not model.bodies:
             return {"mechanism": None, "description": description}
+        if any(c.spatial for c in model.contours):  # issue 17: Somov–Malyshev as text
+            from mechloop.structure.spatial import spatial_structure
+            from mechloop.structure.spatial_text import spatial_structure_lines
+
+            return {"mechanism": None, "description": "\n".join(
+                spatial_structure_lines(spatial_structure(model), model, lang))}
         mob, dec = analyze(model)
     except ModelError as exc:
         raise document.locate(exc) from None

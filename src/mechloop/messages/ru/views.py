@@ -328,7 +328,7 @@ ENTRIES: list[Entry] = [
      r"arguments", "приведённые характеристики строятся только для машины с одним "
      "входом; аргументов у этой модели: {n}"),
     (r"plot the balancing loads \(plot \.\.\. balancing\) instead",
-     "постройте вместо них уравновешивающие нагрузки (plot ... balancing)"),
+     "постройте вместо них уравновешивающие нагрузки ('plot ... balancing')"),
     (r"the summary is not given: the chain breaks at positions (?P<where>.+)",
      "сводные характеристики не приводятся: цепь разрывается в положениях {where}"),
     (r"choose the arguments' range so that the chain closes at every position",
@@ -339,5 +339,6 @@ ENTRIES: list[Entry] = [
      "строится (нужны реакции в кинематических парах или движение машины, которых "
      "динамика по мощностям в пространстве не даёт)"),
     (r"plot one of (?P<items>[\w, ]+), or write the dynamics table with mechloop solve",
-     "постройте одно из: {items} — или запишите таблицу динамики командой mechloop solve"),
+     "постройте одно из: {items} — или запишите таблицу динамики командой "
+     "'mechloop solve'"),
 ]
