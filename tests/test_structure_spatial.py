@@ -116,3 +116,31 @@ def test_web_structure_panel_shows_the_spatial_structure():
     shown = structure(path.read_text(encoding="utf-8"), path, path.parent, "en")
     assert shown["mechanism"] is None
     assert "W = 6n − 5p5" in shown["description"] and "= 2; inputs: 1" in shown["description"]
+
+
+LANDING_GEAR_BODIES = """
+bodies:
+  1: {name: strut, vectors: [3, 4]}
+  2: {name: barrel, vectors: [2], ends: {2: tail}}
+  3: {name: piston rod, vectors: [2], ends: {2: head}}
+"""
+
+
+def test_landing_gear_cylinder_between_ball_joints_has_two_idle_spins(tmp_path):
+    """The skewed-axis landing gear with its strut, the cylinder's barrel and its rod as
+    bodies: the strut turns about the normal of its plane β = 20° (the hinge axis
+    (−sin 20°, 0, cos 20°)), the barrel and the rod slide and turn on one line (C) between
+    two ball joints (S): W = 6·3 − 5 − 4 − 3·2 = 3, of which the spins of the barrel and
+    of the rod about the cylinder's line are idle, 1 working = the cylinder's drive."""
+    text = (EXAMPLES / "landing_gear_skewed_axis.yaml").read_text(encoding="utf-8")
+    path = tmp_path / "gear.yaml"
+    path.write_text(text + LANDING_GEAR_BODIES, encoding="utf-8")
+    s = spatial_structure(load_model(path))
+    kinds = sorted(p.name for p in s.pairs)
+    assert kinds == ["C2_3", "R0_1", "S0_2", "S1_3"]
+    hinge = next(p for p in s.pairs if p.kind == "R")
+    b = np.radians(20)
+    np.testing.assert_allclose(hinge.axis * np.sign(hinge.axis[2]),
+                               [-np.sin(b), 0, np.cos(b)], atol=1e-9)
+    assert s.W == 6 * 3 - 5 - 4 - 3 * 2 == 3
+    assert s.idle == (2, 3) and s.W - len(s.idle) == s.inputs == 1 and s.q == 0

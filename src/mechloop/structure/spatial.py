@@ -17,8 +17,10 @@ universal joint U (class 4) or a spherical pair S (class 3); a sliding pair with
 relative rotation is prismatic P (class 5), with rotation about one axis cylindrical C
 (class 4).  A body whose vectors all lie on one line (a rod) has no spin about it in the
 model: at a pair whose relative rotation spans two directions or more it is a spherical
-pair, and a rod whose every pair is spherical spins about its line freely — one idle
-(passive) degree of freedom (the RSSR coupler between its two ball joints).
+pair, and a rod whose every pair is spherical, or cylindrical along its line, spins
+about its line freely — one idle (passive) degree of freedom (the RSSR coupler between
+its two ball joints; each of a hydraulic cylinder's barrel and rod between two ball
+joints).  Two rods that slide along one vector form a cylindrical pair C.
 
 When every pair is revolute and all the axes meet at one point the mechanism is spherical
 (three common constraints: Dobrovolsky's formula ``W = 3n − 2p5``); all axes parallel:
@@ -193,7 +195,7 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
 
     Raises :class:`~mechloop.errors.ModelError` without bodies, or when a point is held
     by more than two links."""
-    from mechloop.spatial.points import Placement3
+    from mechloop.spatial.points import Placement3, unit_direction
 
     if not model.bodies:
         raise ModelError([Problem(("bodies",), "the model has no bodies",
@@ -209,6 +211,7 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
     size = max(float(np.nanmax(np.abs(place.vector(v).p[:, ok]), initial=0.0))
                for v in model.vectors) or 1.0
     found: dict[tuple[int, int], list[tuple[Array, bool]]] = defaultdict(list)
+    sliding_along: dict[tuple[int, int], int] = {}
     for ci, contour in enumerate(model.contours):
         vectors = contour.vectors
         for i, v in enumerate(vectors):
@@ -238,6 +241,7 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
         if len(tail) == 1 and len(head) == 1 and tail != head:
             key = tuple(sorted(tail | head))
             found[key].append((place.tail(v).p[:, ok], True))
+            sliding_along[key] = v
     if problems:
         raise ModelError(problems)
     pairs = []
@@ -246,6 +250,9 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
         for k, (path, sliding) in enumerate(points):
             kind = _kind(relative, sliding)
             axis = direction if kind in ("R", "C") else None
+            if sliding and frames[a][2] and frames[b][2]:  # two rods on one line: a
+                # cylinder and its rod — they slide and turn about it (C)
+                kind, axis = "C", unit_direction(results, sliding_along[(a, b)]).p[:, ok][:, 0]
             name = f"{kind}{a}_{b}" + ("" if k == 0 else chr(ord("a") + k))
             pairs.append(SpatialPair(name, kind, (a, b), path[:, 0] if path.size else
                                      place.tail(1).p[:, first], axis))
@@ -309,8 +316,8 @@ def count(links: tuple[int, ...], pairs: list[SpatialPair], rods: dict[int, bool
     n = len(links)
     w = 6 * n - sum(c * p[c] for c in p)
     idle = tuple(b for b in links if rods.get(b) and
-                 all(pair.kind == "S" for pair in pairs if b in pair.links)
-                 and sum(1 for pair in pairs if b in pair.links) == 2)
+                 all(pair.kind in ("S", "C") for pair in pairs if b in pair.links)
+                 and any(pair.kind == "S" for pair in pairs if b in pair.links))
     family = _family(pairs)
     w_family = 3 * n - 2 * p[5] if family else None
     q = max(inputs + len(idle) - w, 0)

@@ -25,7 +25,7 @@ WORDS = {
         "count": "Somov–Malyshev: W = 6n − 5p5 − 4p4 − 3p3 − 2p2 − p1 = 6·{n} − 5·{p5} − "
                  "4·{p4} − 3·{p3} − 2·{p2} − {p1} = {w}; inputs: {inputs}",
         "idle": "idle (passive) degrees of freedom: {count} — the spin of link(s) {list} "
-                "about the line through their two spherical pairs; working mobility "
+                "about its line between spherical (or cylindrical) pairs; working mobility "
                 "W − {count} = {work}",
         "family": "all revolute axes meet at one point: a spherical mechanism with 3 common "
                   "constraints; Dobrovolsky's formula W = 3n − 2p5 = 3·{n} − 2·{p5} = {wf}",
@@ -50,7 +50,7 @@ WORDS = {
         "count": "формула Сомова–Малышева: W = 6n − 5p5 − 4p4 − 3p3 − 2p2 − p1 = 6·{n} − "
                  "5·{p5} − 4·{p4} − 3·{p3} − 2·{p2} − {p1} = {w}; число входов: {inputs}",
         "idle": "местные (пассивные) подвижности: {count} — вращение звеньев {list} вокруг "
-                "прямой через их две сферические пары; рабочая подвижность "
+                "своей оси между сферическими (или цилиндрическими) парами; рабочая подвижность "
                 "W − {count} = {work}",
         "family": "все оси вращательных пар пересекаются в одной точке: сферический "
                   "механизм с 3 общими связями; формула Добровольского W = 3n − 2p5 = "
