@@ -144,3 +144,14 @@ def test_landing_gear_cylinder_between_ball_joints_has_two_idle_spins(tmp_path):
                                [-np.sin(b), 0, np.cos(b)], atol=1e-9)
     assert s.W == 6 * 3 - 5 - 4 - 3 * 2 == 3
     assert s.idle == (2, 3) and s.W - len(s.idle) == s.inputs == 1 and s.q == 0
+
+
+def test_a_body_the_contours_reach_only_through_vectors_of_no_body_is_named(tmp_path):
+    """The inclined-axis gear's strut meets the hinge and the cylinder's lug only through
+    the auxiliary vectors of its plane: no pair can be found, and the body is named."""
+    text = (EXAMPLES / "landing_gear_inclined_axis.yaml").read_text(encoding="utf-8")
+    path = tmp_path / "gear.yaml"
+    path.write_text(text + LANDING_GEAR_BODIES.replace("[3, 4]", "[5, 8]")
+                    .replace("[2]", "[3]").replace("{2:", "{3:"), encoding="utf-8")
+    with pytest.raises(ModelError, match="body 1 is joined to the ground by no pair"):
+        spatial_structure(load_model(path))

@@ -257,6 +257,21 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
             pairs.append(SpatialPair(name, kind, (a, b), path[:, 0] if path.size else
                                      place.tail(1).p[:, first], axis))
     links = tuple(sorted(b for b in model.bodies if b != 0))
+    reached, grew = {0}, True
+    while grew:  # the links joined to the ground through the pairs found
+        grew = False
+        for pair in pairs:
+            if len(reached & set(pair.links)) == 1:
+                reached |= set(pair.links)
+                grew = True
+    loose = [b for b in links if b not in reached]
+    if loose:
+        raise ModelError([Problem(("bodies", b), f"body {b} is joined to the ground by no "
+                                  "pair found from the contours (they pass between its "
+                                  "vectors and the others' through vectors of no body)",
+                                  "list the vectors that meet it in the bodies they belong "
+                                  "to, so that a contour passes from one body to another "
+                                  "at each pair") for b in loose])
     rods = {b: frames[b][2] for b in links}
     return links, pairs, rods
 
