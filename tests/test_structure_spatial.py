@@ -155,3 +155,12 @@ def test_a_body_the_contours_reach_only_through_vectors_of_no_body_is_named(tmp_
                     .replace("[2]", "[3]").replace("{2:", "{3:"), encoding="utf-8")
     with pytest.raises(ModelError, match="body 1 is joined to the ground by no pair"):
         spatial_structure(load_model(path))
+
+
+def test_the_planar_analysis_refuses_a_spatial_model_with_the_fix():
+    from mechloop.errors import HintedError
+    from mechloop.structure import analyze
+
+    with pytest.raises(HintedError, match="does not apply to a model with spatial") as info:
+        analyze(load_model(EXAMPLES / "rssr_dynamics.yaml"))
+    assert "spatial_structure" in info.value.hint

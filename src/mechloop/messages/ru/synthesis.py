@@ -506,4 +506,9 @@ ENTRIES: list[Entry] = [
      r"passes from one body to another at each pair", "перечислите сходящиеся с ним "
      "векторы в звеньях, которым они принадлежат, чтобы контур переходил от звена к звену "
      "в каждой паре"),
+    (r"the planar structural analysis \(Chebyshev's count, Assur groups\) does not apply "
+     r"to a model with spatial contours", "плоский структурный анализ (формула Чебышева, "
+     "группы Ассура) не применим к модели с пространственными контурами"),
+    (r"use mechloop\.structure\.spatial\.spatial_structure\(model\)",
+     "используйте 'mechloop.structure.spatial.spatial_structure(model)'"),
 ]
