@@ -253,7 +253,8 @@ def test_the_planar_force_analysis_refuses_a_spatial_model_with_the_fix(tmp_path
     with pytest.raises(SolveError, match="not built for a model with spatial contours") as info:
         solve_dynamics(model_from_data(_dense_example(12)))
     assert "mechloop solve" in info.value.hint
-    result = CliRunner().invoke(app, ["plot", str(EXAMPLE), "reduced", "-o",
+    # (reduced, balancing and summary are drawn: tests/test_views_spatial_dynamics.py)
+    result = CliRunner().invoke(app, ["plot", str(EXAMPLE), "reactions", "-o",
                                       str(tmp_path / "j.png")])
     assert result.exit_code == 2 and "spatial contours" in result.output, result.output
 

@@ -589,12 +589,13 @@ def plot(
                       ] = False,
     lang: Annotated[str | None, typer.Option(help="language of the figure's texts and the "
                     "messages: en or ru (default: MECHLOOP_LANG, else en)")] = None,
-    elev: Annotated[float, typer.Option(help="plan, overlay, trajectories of a spatial "
-                    "model: the viewing elevation, deg")] = 20.0,
-    azim: Annotated[float, typer.Option(help="plan, overlay, trajectories of a spatial "
-                    "model: the viewing azimuth about the Y axis, deg")] = 30.0,
-    views: Annotated[str, typer.Option(help="plan, overlay, trajectories of a spatial "
-                     "model: all (the 3-D view and the projections XY, ZY, XZ) or 3d")
+    elev: Annotated[float, typer.Option(help="plan, overlay, trajectories, hodograph of "
+                    "a spatial model: the viewing elevation, deg")] = 20.0,
+    azim: Annotated[float, typer.Option(help="plan, overlay, trajectories, hodograph of "
+                    "a spatial model: the viewing azimuth about the Y axis, deg")] = 30.0,
+    views: Annotated[str, typer.Option(help="plan, overlay, trajectories, hodograph of "
+                     "a spatial model: all (the 3-D view and the projections XY, ZY, XZ) "
+                     "or 3d")
                      ] = "all",
     force: Force = False,
 ) -> None:
@@ -645,11 +646,21 @@ def plot(
                               lang), output)
         out.print(f"{wrote} {output}")
         return
-    results = _dynamics(m, model) if m.bodies else solve_model(m)
     dynamic_kinds = ("reduced", "balancing", "reactions", "hodograph", "summary", "motion")
     if kind in dynamic_kinds and not m.bodies:
         raise ViewError(f"'{kind}' needs a model with bodies",
                         "add bodies (see examples/crank_slider_dynamics.yaml)")
+    if kind in dynamic_kinds and is_spatial(m):  # issue 17: by virtual power
+        from mechloop.views.spatial_dynamics import plot_spatial_dynamics
+
+        figure = plot_spatial_dynamics(_spatial_dynamics(m, model), kind, against=against,
+                                       display=display, names=_split(names), joint=joint,
+                                       position=position, elev=elev, azim=azim,
+                                       views=views)
+        save_figure(translate(figure, lang), output)
+        out.print(f"{wrote} {output}")
+        return
+    results = _dynamics(m, model) if m.bodies and not is_spatial(m) else solve_model(m)
     listed = _split(names)
     if kind in ("plan", "overlay", "trajectories") and is_spatial(m):  # issue 17: in 3-D
         figure = _spatial_plot(results, kind, position or 0, _split(points), elev=elev,
@@ -857,6 +868,16 @@ def structure(
 
     lang = _text_lang(lang)
     m = load_model(model)
+    if any(c.spatial for c in m.contours):  # issue 17: Somov–Malyshev, not Assur groups
+        from mechloop.structure.spatial import spatial_structure
+        from mechloop.structure.spatial_text import spatial_structure_lines
+
+        try:
+            lines = spatial_structure_lines(spatial_structure(m), m, lang)
+        except ModelError as exc:
+            raise locate(exc, model) from None
+        out.print(escape("\n".join(lines)))
+        return
     try:
         mob, dec = analyze(m)
     except ModelError as exc:

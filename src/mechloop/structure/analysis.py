@@ -23,9 +23,17 @@ def analyze(model: Model, results: Results | None = None) -> tuple[Mobility, Dec
     counted as ``p4``, and replaced by its equivalent link with two revolute pairs for the
     decomposition (named in the decomposition's notes).
 
-    Raises :class:`~mechloop.errors.ModelError` when the model has no bodies or its pairs
-    cannot be told (see :func:`~mechloop.dynamics.mechanism.build_mechanism`).
+    A model with spatial contours has :func:`mechloop.structure.spatial.spatial_structure`
+    instead (HintedError here).  Raises :class:`~mechloop.errors.ModelError` when the model
+    has no bodies or its pairs cannot be told (see
+    :func:`~mechloop.dynamics.mechanism.build_mechanism`).
     """
+    if any(c.spatial for c in model.contours):  # issue 17: Somov–Malyshev instead
+        from mechloop.errors import HintedError
+
+        raise HintedError("the planar structural analysis (Chebyshev's count, Assur groups) "
+                          "does not apply to a model with spatial contours",
+                          "use mechloop.structure.spatial.spatial_structure(model)")
     meshes = gear_meshes(model)
     results = solve(model) if results is None else results
     mechanism = build_mechanism(model, Placement(results), determinate=False)

@@ -70,6 +70,7 @@ RUSSIAN_WORDS: dict[str, str] = {
     "loss coefficient": "коэффициент потерь",
     "efficiency": "КПД",
     "kinetic energy change": "изменение кинетической энергии",
+    "kinetic energy": "кинетическая энергия",
     "not given: the chain breaks": "не приводится: цепь разрывается",
     "constant load on the input": "постоянная нагрузка на входном звене",
     "δ wanted": "δ заданный",

@@ -44,8 +44,8 @@ def _reactions(dyn: Any):
     reactions = getattr(dyn, "reactions", None)
     if reactions is None:
         raise ViewError("this model has no joint reactions",
-                        "name its joints under joints: (type, bodies, at, axis) and "
-                        "solve it by mechloop.solve_spatial_dynamics")
+                        "name its kinematic pairs under joints: (type, bodies, at, axis; "
+                        "see examples/spatial/rssr_reactions.yaml)")
     return reactions
 
 

@@ -140,7 +140,9 @@ def structures(document: Document, results: Any) -> dict[str, dict[str, Any]]:
     from mechloop.web.language import problems_in
 
     try:
-        analyzed = analyze(document.model, results) if document.model.bodies else None
+        spatial = any(c.spatial for c in document.model.contours)
+        analyzed = analyze(document.model, results) if document.model.bodies and not \
+            spatial else None
         return {lang: structure_of(document, lang, analyzed=analyzed) for lang in ("en", "ru")}
     except MechloopError as exc:
         located = document.locate(exc) if isinstance(exc, ModelError) else exc
@@ -169,6 +171,12 @@ def structure_of(document: Document, lang: str = "en",
         description = describe_structure(model, lang)
         if not model.bodies:
             return {"mechanism": None, "description": description}
+        if any(c.spatial for c in model.contours):  # issue 17: Somov–Malyshev as text
+            from mechloop.structure.spatial import spatial_structure
+            from mechloop.structure.spatial_text import spatial_structure_lines
+
+            return {"mechanism": None, "description": "\n".join(
+                spatial_structure_lines(spatial_structure(model), model, lang))}
         mob, dec = analyze(model) if analyzed is None else analyzed
     except ModelError as exc:
         raise document.locate(exc) from None

@@ -496,4 +496,19 @@ ENTRIES: list[Entry] = [
      "в модели с пространственными контурами у силы вдоль вектора нет угла к нему"),
     (r"remove 'angle', or give 'direction: \[x, y, z\]'",
      "удалите 'angle' или задайте 'direction: [x, y, z]'"),
+    # the structure of a spatial model (structure/spatial.py)
+    (r"body (?P<b>\d+) is joined to the ground by no pair found from the contours \(they "
+     r"pass between its vectors and the others' through vectors of no body\)",
+     "звено {b} не соединено со стойкой ни одной парой, найденной по контурам (контуры "
+     "переходят от его векторов к векторам других звеньев через векторы, не входящие ни в "
+     "одно звено)"),
+    (r"list the vectors that meet it in the bodies they belong to, so that a contour "
+     r"passes from one body to another at each pair", "перечислите сходящиеся с ним "
+     "векторы в звеньях, которым они принадлежат, чтобы контур переходил от звена к звену "
+     "в каждой паре"),
+    (r"the planar structural analysis \(Chebyshev's count, Assur groups\) does not apply "
+     r"to a model with spatial contours", "плоский структурный анализ (формула Чебышева, "
+     "группы Ассура) не применим к модели с пространственными контурами"),
+    (r"use mechloop\.structure\.spatial\.spatial_structure\(model\)",
+     "используйте 'mechloop.structure.spatial.spatial_structure(model)'"),
 ]

@@ -319,13 +319,32 @@ ENTRIES: list[Entry] = [
     (r"use en or ru", "укажите en или ru"),
     # figures of the joint reactions of spatial models (views/spatial_reactions.py)
     (r"this model has no joint reactions", "у этой модели нет реакций в шарнирах"),
-    (r"name its joints under joints: \(type, bodies, at, axis\) and solve it by "
-     r"mechloop\.solve_spatial_dynamics", "задайте её кинематические пары в разделе "
-     "'joints:' ('type', 'bodies', 'at', 'axis') и решите её функцией "
-     "'mechloop.solve_spatial_dynamics'"),
+    (r"name its kinematic pairs under joints: \(type, bodies, at, axis; see "
+     r"(?P<path>\S+)\)", "задайте её кинематические пары в разделе 'joints:' ('type', "
+     "'bodies', 'at', 'axis'; см. {path})"),
     (r"unknown part (?P<v>'[^']*'|\S+) of a reaction", "неизвестная часть реакции {v}"),
     (r"use 'force' or 'moment'", "используйте 'force' (сила) или 'moment' (момент)"),
     (r"joint (?P<j>.+?) is spherical: its reaction has no moment",
      "шарнир {j} сферический: у его реакции нет момента"),
     (r"trace its force \(part='force'\)", "постройте годограф его силы ('part=force')"),
+    # plots of the dynamics of a spatial model (views/spatial_dynamics.py)
+    (r"cannot plot against (?P<v>'[^']*'|\S+) for this model",
+     "по оси абсцисс нельзя откладывать {v} для этой модели"),
+    (r"use one of: (?P<items>[\w, ]+)", "укажите одно из: {items}"),
+    (r"reduced characteristics need a one-input machine; this model has (?P<n>\S+) "
+     r"arguments", "приведённые характеристики строятся только для машины с одним "
+     "входом; аргументов у этой модели: {n}"),
+    (r"plot the balancing loads \(plot \.\.\. balancing\) instead",
+     "постройте вместо них уравновешивающие нагрузки ('plot ... balancing')"),
+    (r"the summary is not given: the chain breaks at positions (?P<where>.+)",
+     "сводные характеристики не приводятся: цепь разрывается в положениях {where}"),
+    (r"choose the arguments' range so that the chain closes at every position",
+     "выберите диапазон аргументов, при котором цепь замыкается во всех положениях"),
+    (r"'(?P<kind>\w+)' is not drawn for a model with spatial contours yet \(it needs the "
+     r"machine motion, which the spatial dynamics does not give\)",
+     "'{kind}' для модели с пространственными контурами пока не строится (нужно движение "
+     "машины, которого пространственная динамика не даёт)"),
+    (r"plot one of (?P<items>[\w, ]+), or write the dynamics table with mechloop solve",
+     "постройте одно из: {items} — или запишите таблицу динамики командой "
+     "'mechloop solve'"),
 ]
