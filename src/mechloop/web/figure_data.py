@@ -54,6 +54,8 @@ def figure_data(figure: Figure, *, count: int, over: str, lang: str = "en"
     names = getattr(figure, NAMES_ATTRIBUTE, set())
     groups: list[list[Axes]] = []
     for ax in figure.axes:
+        if ax.name == "3d":  # a 3-D view (a spatial hodograph's): its projections are panels
+            continue
         spec = ax.get_subplotspec()
         host = next((g for g in groups if spec is not None
                      and g[0].get_subplotspec() == spec), None)

@@ -48,8 +48,17 @@ def view_figure(model: Any, kind: str, *, names: list[str], joint: str | None,
         raise WebError(f"'{kind}' needs a model with bodies",
                        "add bodies (see examples/crank_slider_dynamics.yaml)")
     display = plot_display(resolve(model.display)) or DEFAULT_DISPLAY
-    results = solve_dynamics(model) if model.bodies else solve(model)
-    count = (results.kinematics if model.bodies else results).positions.size
+    spatial = any(c.spatial for c in model.contours)
+    if spatial and VIEW_KINDS[kind]:  # issue 17: the dynamics of a spatial model
+        figure, count = _spatial_view(model, kind, names, joint, position, display)
+        if kind in MARKED and mark:
+            for ax in figure.axes:
+                ax.axvline(min(max(int(position), 0), count - 1), color="#d62728",
+                           linewidth=1.0, linestyle=":", gid="position")
+        return figure, count
+    results = solve_dynamics(model) if model.bodies and not spatial else solve(model)
+    count = (results.kinematics if model.bodies and not spatial else results
+             ).positions.size
     position = min(max(int(position), 0), count - 1)
     if kind == "parameters":
         if not names:
@@ -90,6 +99,26 @@ def view_figure(model: Any, kind: str, *, names: list[str], joint: str | None,
         for ax in figure.axes:
             ax.axvline(position, color="#d62728", linewidth=1.0, linestyle=":",
                        gid="position")
+    return figure, count
+
+
+def _spatial_view(model: Any, kind: str, names: list[str], joint: str | None,
+                  position: int, display: Any) -> tuple[Any, int]:
+    """View ``kind`` of a model with spatial contours and bodies, as ``mechloop plot``
+    draws it (:func:`mechloop.views.spatial_dynamics.plot_spatial_dynamics`), and the
+    number of positions; a view it does not draw is a :class:`WebError`."""
+    from mechloop.spatial.dynamics import solve_spatial_dynamics
+    from mechloop.views.figure import ViewError
+    from mechloop.views.spatial_dynamics import plot_spatial_dynamics
+
+    dyn = solve_spatial_dynamics(model)
+    count = dyn.kinematics.positions.size
+    position = min(max(int(position), 0), count - 1)
+    try:
+        figure = plot_spatial_dynamics(dyn, kind, display=display, names=names,
+                                       joint=joint, position=position)
+    except ViewError as exc:
+        raise WebError(exc.message, exc.hint) from None
     return figure, count
 
 
