@@ -86,7 +86,13 @@ def plot_balancing(dyn: DynamicResults, *, against: str = "position",
 
 
 def _joints(dyn: DynamicResults, joints: Sequence[str] | str | None) -> list[str]:
-    known = list(dyn.forces.reactions)
+    return chosen_joints(list(dyn.forces.reactions), joints)
+
+
+def chosen_joints(known: list[str], joints: Sequence[str] | str | None) -> list[str]:
+    """``joints`` (a name, names, or None: every one of ``known``) checked against the
+    model's ``known`` joints; a :class:`~mechloop.views.figure.ViewError` names a joint
+    it does not have."""
     if joints is None:
         return known
     chosen = [joints] if isinstance(joints, str) else list(joints)

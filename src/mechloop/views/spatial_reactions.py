@@ -53,15 +53,9 @@ def reaction_joints(dyn: Any, joints: Sequence[str] | str | None = None) -> list
     """The names of ``joints`` (default: every joint) of the solved spatial dynamics
     ``dyn``; a :class:`~mechloop.views.figure.ViewError` for a model without
     reactions or a joint it does not have."""
-    known = list(_reactions(dyn).joints)
-    if joints is None:
-        return known
-    chosen = [joints] if isinstance(joints, str) else list(joints)
-    missing = [j for j in chosen if j not in known]
-    if missing:
-        raise ViewError(f"no joint {', '.join(map(repr, missing))} in this model",
-                        f"use one of {', '.join(known)}")
-    return chosen
+    from mechloop.views.dynamics import chosen_joints
+
+    return chosen_joints(list(_reactions(dyn).joints), joints)
 
 
 def has_moment(reaction: Any) -> bool:
