@@ -52,7 +52,7 @@ def _check(values: list[float]) -> None:
         assert _repr_digits(text.decode()) == _repr_digits(repr(float(value))), text
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(st.lists(FINITE, min_size=1, max_size=50))
 def test_any_double_is_written_as_orjson_writes_it(values):
     _check(values)

@@ -253,8 +253,9 @@ def test_the_planar_force_analysis_refuses_a_spatial_model_with_the_fix(tmp_path
     with pytest.raises(SolveError, match="not built for a model with spatial contours") as info:
         solve_dynamics(model_from_data(_dense_example(12)))
     assert "mechloop solve" in info.value.hint
-    # (reduced, balancing and summary are drawn: tests/test_views_spatial_dynamics.py)
-    result = CliRunner().invoke(app, ["plot", str(EXAMPLE), "reactions", "-o",
+    # (reduced, balancing, summary, reactions and hodographs are drawn:
+    # tests/test_views_spatial_dynamics.py)
+    result = CliRunner().invoke(app, ["plot", str(EXAMPLE), "motion", "-o",
                                       str(tmp_path / "j.png")])
     assert result.exit_code == 2 and "spatial contours" in result.output, result.output
 

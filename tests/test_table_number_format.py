@@ -97,7 +97,7 @@ def _shortest(text: str, value: float) -> None:
     assert digits(text) == digits(repr(value)), (text, repr(value))
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=40, deadline=None)
 @given(st.data(), st.sampled_from([1, 7, 1 << 12]), st.booleans())
 def test_csv_is_the_text_built_value_by_value(data, chunk, woven):
     frame = _frame(data)
@@ -119,7 +119,7 @@ def test_csv_is_the_text_built_value_by_value(data, chunk, woven):
                 _shortest(text, value)
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=40, deadline=None)
 @given(st.data(), st.sampled_from([1, 7, 1 << 12]), st.booleans())
 def test_json_is_the_text_built_value_by_value(data, chunk, woven):
     frame = _frame(data)
