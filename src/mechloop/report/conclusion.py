@@ -73,16 +73,7 @@ def dynamic_lines(dyn: DynamicResults, shown: Shown, w: dict[str, str]) -> list[
             value, "N"), position=position)))
     if dyn.reduced is not None:
         linear = dyn.kinematics.argument_kinds[dyn.mechanism.drives[0].argument] == "length"
-        names = ("m_red", "dm_red") if linear else ("J_red", "dJ_red")
-        units = ("kg", "kg/m") if linear else ("kg*m^2", "kg*m^2/rad")
-        inertia, slope = finite_span(dyn.reduced.inertia), finite_span(dyn.reduced.d_inertia)
-        if inertia is not None and slope is not None:
-            a, b = max(map(abs, inertia)), max(map(abs, slope))
-            out.append(Paragraph(w["reduced_range"].format(
-                name=names[0], low=shown.text(inertia[0], units[0], a),
-                high=shown.text(inertia[1], units[0], a), dname=names[1],
-                dlow=shown.text(slope[0], units[1], b),
-                dhigh=shown.text(slope[1], units[1], b))))
+        out += reduced_range(linear, dyn.reduced.inertia, dyn.reduced.d_inertia, shown, w)
     broken = cycle_breaks(dyn)
     if broken is not None:
         out.append(Paragraph(w["cycle_breaks"].format(where=broken.where(shown.lang)),
@@ -109,3 +100,20 @@ def conclusion_blocks(results: Results, dyn: DynamicResults | None, name: str,
     if dyn is not None:
         out += dynamic_lines(dyn, shown, w)
     return out
+
+
+def reduced_range(linear: bool, inertia: np.ndarray, slope: np.ndarray, shown: Shown,
+                  w: dict[str, str]) -> list[Paragraph]:
+    """The conclusion's sentence on the ranges of the reduced inertia (``m_red`` of a
+    length input, else ``J_red``) and its derivative over the positions (arrays ``(P,)``,
+    SI; NaN at broken positions); none when either has no finite value."""
+    names = ("m_red", "dm_red") if linear else ("J_red", "dJ_red")
+    units = ("kg", "kg/m") if linear else ("kg*m^2", "kg*m^2/rad")
+    inertia, slope = finite_span(inertia), finite_span(slope)
+    if inertia is None or slope is None:
+        return []
+    a, b = max(map(abs, inertia)), max(map(abs, slope))
+    return [Paragraph(w["reduced_range"].format(
+        name=names[0], low=shown.text(inertia[0], units[0], a),
+        high=shown.text(inertia[1], units[0], a), dname=names[1],
+        dlow=shown.text(slope[0], units[1], b), dhigh=shown.text(slope[1], units[1], b)))]

@@ -365,17 +365,9 @@ def conclusion3(dyn: SpatialDynamics | None, results, name: str, shown: Shown,
                 abs(found[1]), unit), position=found[0])))
     out += reaction_lines(dyn, shown, w)
     if dyn.reduced is not None:
-        linear = _linear(dyn)
-        names = ("m_red", "dm_red") if linear else ("J_red", "dJ_red")
-        units = ("kg", "kg/m") if linear else ("kg*m^2", "kg*m^2/rad")
-        inertia, slope = finite_span(dyn.reduced[0]), finite_span(dyn.reduced[1])
-        if inertia is not None and slope is not None:
-            a, b = max(map(abs, inertia)), max(map(abs, slope))
-            out.append(Paragraph(w["reduced_range"].format(
-                name=names[0], low=shown.text(inertia[0], units[0], a),
-                high=shown.text(inertia[1], units[0], a), dname=names[1],
-                dlow=shown.text(slope[0], units[1], b),
-                dhigh=shown.text(slope[1], units[1], b))))
+        from mechloop.report.conclusion import reduced_range
+
+        out += reduced_range(_linear(dyn), dyn.reduced[0], dyn.reduced[1], shown, w)
     energy = finite_span(dyn.kinetic_energy)
     if not dyn.static and energy is not None:
         scale = max(map(abs, energy))
