@@ -130,8 +130,15 @@ def _line_of(text: str, start: str) -> int:
 
 
 def _vector(driver, number: int) -> tuple[float, ...]:
-    line = driver.find_element(By.ID, f"vector-{number}")
-    return tuple(float(line.get_attribute(f"data-{k}")) for k in ("x1", "y1", "x2", "y2"))
+    """The drawn vector's tail and head, read in one script (the page may redraw the
+    diagram between two reads of an element: a drag's checks run one after another)."""
+    values = driver.execute_script(
+        "const line = document.getElementById(arguments[0]);"
+        "return line && ['x1', 'y1', 'x2', 'y2'].map((k) => line.dataset[k]);",
+        f"vector-{number}")
+    if values is None:
+        raise AssertionError(f"vector {number} is not drawn")
+    return tuple(float(v) for v in values)
 
 
 def _position(driver) -> int:
