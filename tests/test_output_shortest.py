@@ -11,8 +11,9 @@ import numpy as np
 import orjson
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from numba import njit
 
-from mechloop.output.shortest import shortest_texts, write_int
+from mechloop.output.shortest import _eight, shortest_texts, write_int
 
 #: Finite doubles from any bit pattern (NaN and infinities are not numbers' texts: the
 #: writers write them as fixed words, tested in test_table_number_format.py).
@@ -90,3 +91,49 @@ def test_integers_in_decimal(value):
     out = np.zeros(24, dtype=np.uint8)
     end = write_int(np.int64(value), out, 2)
     assert out[2:end].tobytes() == str(value).encode()
+
+
+def test_integers_at_every_digit_count():
+    """Every power of ten and its neighbours, and the int64 extremes."""
+    values = [0, 1, -1, 2**63 - 1, -(2**63), -(2**63) + 1]
+    values += [s * (10**k + d) for k in range(19) for d in (-1, 0, 1) for s in (1, -1)]
+    out = np.zeros(32, dtype=np.uint8)
+    for value in values:
+        end = write_int(np.int64(value), out, 3)
+        assert out[3:end].tobytes() == str(value).encode()
+
+
+def test_eight_digits_at_once_for_every_number_below_10_to_the_8():
+    """The lane arithmetic giving eight ASCII digits in one word, for all 10^8 inputs,
+    against digits taken one division at a time."""
+    assert _eight_digit_mismatches() == 0
+
+
+@njit(cache=False)
+def _eight_digit_mismatches() -> int:
+    bad = 0
+    for v in range(100_000_000):
+        word = _eight(np.uint64(v))
+        rest = v
+        for k in range(7, -1, -1):
+            digit = (word >> np.uint64(8 * k)) & np.uint64(0xFF)
+            if digit != np.uint64(48 + rest % 10):
+                bad += 1
+            rest //= 10
+    return bad
+
+
+def test_values_as_a_results_table_has_them():
+    """orjson's text for values with every count of significant digits (1 to 17) and
+    every place of the point that tables have: m / 10^k is the double nearest the decimal
+    m·10^-k (both exact), whose shortest digits are m's; m·10^k and 17-digit values too."""
+    rng = np.random.default_rng(1)
+    size = 400_000
+    digits = rng.integers(1, 18, size=size)
+    m = np.floor(rng.uniform(0, 1, size=size) * 10.0 ** digits) + 1
+    k = rng.integers(0, 23, size=size)
+    values = np.concatenate([m / 10.0 ** k, m * 10.0 ** rng.integers(0, 8, size=size),
+                             rng.uniform(-1, 1, size=size) * 10.0 ** rng.integers(-7, 9, size)])
+    values *= rng.choice([-1.0, 1.0], size=values.size)
+    got = b",".join(shortest_texts(values))
+    assert got == orjson.dumps(values, option=orjson.OPT_SERIALIZE_NUMPY)[1:-1]

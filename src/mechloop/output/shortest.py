@@ -4,7 +4,7 @@
 (the form the table writers have always used): the shortest decimal digits that read back
 to the same double, bit for bit, the one nearest the double among them (Ryu, Ulf Adams,
 "Ryū: fast float-to-string conversion", PLDI 2018, its ``d2d`` with the 128-bit products
-made of 64-bit halves), laid out as orjson lays them out:
+as native 128-bit integer products), laid out as orjson lays them out:
 
 - ``kk``, the place of the decimal point after the first digit (10^(kk-1) <= |x| < 10^kk):
   digits then zeros and ``.0`` for an integer of at most 16 figures (``100.0``,
@@ -53,21 +53,24 @@ def _tables() -> tuple[np.ndarray, np.ndarray]:
 
 _POW5_SPLIT, _POW5_INV_SPLIT = _tables()
 
-#: "00", "01", ..., "99": two digits at a time.
-_DIGITS = np.frombuffer("".join(f"{i:02d}" for i in range(100)).encode(), dtype=np.uint8)
-
 _U0, _U1, _U2, _U4 = np.uint64(0), np.uint64(1), np.uint64(2), np.uint64(4)
 _U5, _U10, _U100 = np.uint64(5), np.uint64(10), np.uint64(100)
-_U32, _U64 = np.uint64(32), np.uint64(64)
 _U1E4, _U1E8 = np.uint64(10**4), np.uint64(10**8)
 _POW10 = np.array([10**k for k in range(20)], dtype=np.uint64)
-_M32 = np.uint64(0xFFFFFFFF)
 _MANTISSA = np.uint64((1 << 52) - 1)
 _HIDDEN = np.uint64(1 << 52)
 _EXPONENT = np.uint64(0x7FF)
 _SIGN = np.uint64(1 << 63)
 _U52 = np.uint64(52)
 _ZEROS = np.uint64(int.from_bytes(b"00000000", "little"))
+_ZERO_TEXT = np.uint64(int.from_bytes(b"0.000000", "little"))  # "0.0" and slack
+_POINT_ZERO = np.uint64(int.from_bytes(b".0000000", "little"))  # ".0" and slack
+_ASCII_ZEROS = _ZEROS
+_U8, _U16, _U20, _U32 = np.uint64(8), np.uint64(16), np.uint64(20), np.uint64(32)
+_U103, _U10486 = np.uint64(103), np.uint64(10486)
+_U1E16 = np.uint64(10**16)
+_LANES32 = np.uint64(0x0000007F0000007F)
+_LANES16 = np.uint64(0x000F000F000F000F)
 _POINT_ZEROS = np.uint64(int.from_bytes(b"0.000000", "little"))
 
 
@@ -92,26 +95,39 @@ def _store8(typingctx, address, word):
     return types.none(types.intp, types.uint64), codegen
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _umul128(a: np.uint64, b: np.uint64) -> tuple[np.uint64, np.uint64]:
-    """The 128-bit product of two uint64: (low, high)."""
-    a_lo, a_hi = a & _M32, a >> _U32
-    b_lo, b_hi = b & _M32, b >> _U32
-    b00 = a_lo * b_lo
-    b01 = a_lo * b_hi
-    b10 = a_hi * b_lo
-    b11 = a_hi * b_hi
-    mid1 = b10 + (b00 >> _U32)
-    mid2 = b01 + (mid1 & _M32)
-    high = b11 + (mid1 >> _U32) + (mid2 >> _U32)
-    low = (mid2 << _U32) | (b00 & _M32)
-    return low, high
+@intrinsic
+def _mul_shift(typingctx, m, mul0, mul1, shift):
+    """Ryu's ``mulShift64``: ((m * mul0 >> 64) + m * mul1) >> shift, in 128-bit integer
+    arithmetic (two native 64x64->128 multiplications), as a uint64."""
+    def codegen(context, builder, signature, args):
+        wide = ir.IntType(128)
+        m_, a, b, s = (builder.zext(x, wide) for x in args)
+        low = builder.lshr(builder.mul(m_, a), ir.Constant(wide, 64))
+        return builder.trunc(builder.lshr(builder.add(low, builder.mul(m_, b)), s),
+                             ir.IntType(64))
+
+    return types.uint64(types.uint64, types.uint64, types.uint64, types.uint64), codegen
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _shiftright128(low: np.uint64, high: np.uint64, dist: np.uint64) -> np.uint64:
-    """(high:low) >> dist for 0 < dist < 64."""
-    return (high << (_U64 - dist)) | (low >> dist)
+@intrinsic
+def _store1(typingctx, address, byte):
+    """Store one byte (the low 8 bits of an integer) at a memory address."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(8).as_pointer())
+        builder.store(builder.trunc(args[1], ir.IntType(8)), pointer)
+        return context.get_dummy_value()
+
+    return types.none(types.intp, byte), codegen
+
+
+@intrinsic
+def _load1(typingctx, address):
+    """The byte at a memory address, as an int64."""
+    def codegen(context, builder, signature, args):
+        pointer = builder.inttoptr(args[0], ir.IntType(8).as_pointer())
+        return builder.zext(builder.load(pointer), ir.IntType(64))
+
+    return types.int64(types.intp), codegen
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
@@ -171,32 +187,11 @@ def _d2d(ieee_mantissa: np.uint64, ieee_exponent: int) -> tuple[np.uint64, int]:
         mul0 = _POW5_SPLIT[i, 0]
         mul1 = _POW5_SPLIT[i, 1]
 
-    # mulShiftAll64 (Ryu without 128-bit integers): vr, vp, vm from two products
-    m = m2 << _U1
-    lo, tmp = _umul128(m, mul0)
-    lo1, hi = _umul128(m, mul1)
-    mid = tmp + lo1
-    if mid < tmp:
-        hi += _U1
-    lo2 = lo + mul0
-    mid2 = mid + mul1 + (_U1 if lo2 < lo else _U0)
-    hi2 = hi + (_U1 if mid2 < mid else _U0)
-    shift = np.uint64(j - 64 - 1)
-    vp = _shiftright128(mid2, hi2, shift)
-    if mm_shift == 1:
-        lo3 = lo - mul0
-        mid3 = mid - mul1 - (_U1 if lo3 > lo else _U0)
-        hi3 = hi - (_U1 if mid3 > mid else _U0)
-        vm = _shiftright128(mid3, hi3, shift)
-    else:
-        lo3 = lo + lo
-        mid3 = mid + mid + (_U1 if lo3 < lo else _U0)
-        hi3 = hi + hi + (_U1 if mid3 < mid else _U0)
-        lo4 = lo3 - mul0
-        mid4 = mid3 - mul1 - (_U1 if lo4 > lo3 else _U0)
-        hi4 = hi3 - (_U1 if mid4 > mid3 else _U0)
-        vm = _shiftright128(mid4, hi4, np.uint64(j - 64))
-    vr = _shiftright128(mid, hi, shift)
+    # mulShiftAll64: vr, vp, vm of 4m, 4m + 2 and 4m - 1 - mm_shift
+    shift = np.uint64(j - 64)
+    vr = _mul_shift(mv, mul0, mul1, shift)
+    vp = _mul_shift(mv + _U2, mul0, mul1, shift)
+    vm = _mul_shift(mv - _U1 - np.uint64(mm_shift), mul0, mul1, shift)
 
     if e2 >= 0:
         if q <= 21 and not accept_bounds:
@@ -277,107 +272,99 @@ def _length(v: np.uint64) -> int:
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _put_digits(v: np.uint64, out: np.ndarray, end: int) -> None:
-    """The decimal digits of v written right to left ending before ``end``: eight at a
-    time from independent quotients (short chains of divisions), then two at a time."""
-    while v >= _U1E8:
-        q = v // _U1E8
-        r = v - _U1E8 * q
-        high = r // _U1E4
-        low = r - _U1E4 * high
-        d1 = high // _U100
-        d0 = high - _U100 * d1
-        d3 = low // _U100
-        d2 = low - _U100 * d3
-        end -= 8
-        out[end] = _DIGITS[2 * d1]
-        out[end + 1] = _DIGITS[2 * d1 + _U1]
-        out[end + 2] = _DIGITS[2 * d0]
-        out[end + 3] = _DIGITS[2 * d0 + _U1]
-        out[end + 4] = _DIGITS[2 * d3]
-        out[end + 5] = _DIGITS[2 * d3 + _U1]
-        out[end + 6] = _DIGITS[2 * d2]
-        out[end + 7] = _DIGITS[2 * d2 + _U1]
-        v = q
-    while v >= _U100:
-        q = v // _U100
-        r = v - _U100 * q
-        end -= 2
-        out[end] = _DIGITS[2 * r]
-        out[end + 1] = _DIGITS[2 * r + _U1]
-        v = q
-    if v >= _U10:
-        out[end - 2] = _DIGITS[2 * v]
-        out[end - 1] = _DIGITS[2 * v + _U1]
+def _eight(v: np.uint64) -> np.uint64:
+    """The eight decimal digits of v < 10^8 (leading zeros kept) as ASCII in a uint64,
+    the first digit in the lowest byte (little-endian memory order): quotients by 10^4,
+    100 and 10 taken in every lane at once (the divisions by 100 and 10 as multiplications
+    exact below 10^4 and 100)."""
+    high = v // _U1E4
+    merged = high | ((v - _U1E4 * high) << _U32)  # two 32-bit lanes: v / 10^4, v % 10^4
+    q = ((merged * _U10486) >> _U20) & _LANES32
+    merged = q | ((merged - _U100 * q) << _U16)  # four 16-bit lanes: two digits each
+    q = ((merged * _U103) >> _U10) & _LANES16
+    return (q | ((merged - _U10 * q) << _U8)) + _ASCII_ZEROS
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def _put_digits(v: np.uint64, address: int, length: int) -> None:
+    """The ``length`` decimal digits of v (``length`` = :func:`_length` of v) written at
+    ``address``, in whole 8-byte words (up to 8 bytes past the digits are overwritten)."""
+    if length <= 8:
+        _store8(address, _eight(v) >> np.uint64(8 * (8 - length)))
+    elif length <= 16:
+        high = v // _U1E8
+        _store8(address, _eight(high) >> np.uint64(8 * (16 - length)))
+        _store8(address + length - 8, _eight(v - _U1E8 * high))
     else:
-        out[end - 1] = np.uint8(48 + int(v))
+        top = v // _U1E16
+        rest = v - _U1E16 * top
+        high = rest // _U1E8
+        _store8(address, _eight(top) >> np.uint64(8 * (24 - length)))
+        _store8(address + length - 16, _eight(high))
+        _store8(address + length - 8, _eight(rest - _U1E8 * high))
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
 def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
     """Write the finite double with bit pattern ``bits`` into ``out`` (uint8) from ``at``
     as orjson writes it (see the module); the index after it.  ``out`` needs SLACK bytes
-    from ``at`` (the text takes at most 24; whole 8-byte words are copied)."""
+    from ``at`` (the text takes at most 24; whole 8-byte words are written)."""
+    base = out.ctypes.data + at  # (whole words written: past the text, within the slack)
     if bits & _SIGN:
-        out[at] = 45  # "-"
-        at += 1
+        _store1(base, 45)  # "-"
+        base += 1
     ieee_mantissa = bits & _MANTISSA
     ieee_exponent = int((bits >> _U52) & _EXPONENT)
     if ieee_exponent == 0 and ieee_mantissa == _U0:
-        out[at] = 48
-        out[at + 1] = 46
-        out[at + 2] = 48
-        return at + 3
+        _store8(base, _ZERO_TEXT)
+        return base + 3 - out.ctypes.data
     mantissa, exponent = _d2d(ieee_mantissa, ieee_exponent)
     length = _length(mantissa)
     kk = length + exponent  # 10^(kk-1) <= |x| < 10^kk
-    base = out.ctypes.data + at  # (whole words written: past the text, within the slack)
     if 0 <= exponent and kk <= 16:  # 1234e7 -> 12340000000.0
-        _put_digits(mantissa, out, at + length)
+        _put_digits(mantissa, base, length)
         _store8(base + length, _ZEROS)  # kk - length <= 15 zeros
         _store8(base + length + 8, _ZEROS)
-        out[at + kk] = 46
-        out[at + kk + 1] = 48
-        return at + kk + 2
+        _store8(base + kk, _POINT_ZERO)
+        return base + kk + 2 - out.ctypes.data
     if 0 < kk <= 16:  # 1234e-2 -> 12.34: the fraction moved right by one for the point
-        _put_digits(mantissa, out, at + length)
+        _put_digits(mantissa, base, length)
         low = _load8(base + kk)
         high = _load8(base + kk + 8)
         _store8(base + kk + 1, low)
         _store8(base + kk + 9, high)
-        out[at + kk] = 46
-        return at + length + 1
+        _store1(base + kk, 46)
+        return base + length + 1 - out.ctypes.data
     if -5 < kk <= 0:  # 1234e-6 -> 0.001234
         _store8(base, _POINT_ZEROS)
-        end = at + 2 - kk + length
-        _put_digits(mantissa, out, end)
-        return end
+        _put_digits(mantissa, base + 2 - kk, length)
+        return base + 2 - kk + length - out.ctypes.data
     if length == 1:  # 1e30
-        out[at] = np.uint8(48 + int(mantissa))
-        return _write_exponent(kk - 1, out, at + 1)
-    _put_digits(mantissa, out, at + length + 1)  # 1234e30 -> 1.234e33
-    out[at] = out[at + 1]
-    out[at + 1] = 46
-    return _write_exponent(kk - 1, out, at + length + 1)
+        _store1(base, 48 + int(mantissa))
+        return _write_exponent(kk - 1, base + 1) - out.ctypes.data
+    _put_digits(mantissa, base + 1, length)  # 1234e30 -> 1.234e33
+    _store1(base, _load1(base + 1))
+    _store1(base + 1, 46)
+    return _write_exponent(kk - 1, base + length + 1) - out.ctypes.data
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _write_exponent(e: int, out: np.ndarray, at: int) -> int:
-    """``e+x`` or ``e-x`` (no leading zeros) at ``at``; the index after it."""
-    out[at] = 101  # "e"
-    out[at + 1] = 45 if e < 0 else 43  # "-" or "+"
+def _write_exponent(e: int, address: int) -> int:
+    """``e+x`` or ``e-x`` (no leading zeros) at ``address``; the address after it."""
+    _store1(address, 101)  # "e"
+    _store1(address + 1, 45 if e < 0 else 43)  # "-" or "+"
     e = -e if e < 0 else e
     if e >= 100:
-        out[at + 2] = 48 + e // 100
-        out[at + 3] = 48 + (e // 10) % 10
-        out[at + 4] = 48 + e % 10
-        return at + 5
+        _store1(address + 2, 48 + e // 100)
+        _store1(address + 3, 48 + (e // 10) % 10)
+        _store1(address + 4, 48 + e % 10)
+        return address + 5
     if e >= 10:
-        out[at + 2] = 48 + e // 10
-        out[at + 3] = 48 + e % 10
-        return at + 4
-    out[at + 2] = 48 + e
-    return at + 3
+        _store1(address + 2, 48 + e // 10)
+        _store1(address + 3, 48 + e % 10)
+        return address + 4
+    _store1(address + 2, 48 + e)
+    return address + 3
 
 
 @njit(nogil=True, cache=True, error_model="numpy")
@@ -385,13 +372,13 @@ def write_int(value: np.int64, out: np.ndarray, at: int) -> int:
     """Write an int64 in decimal into ``out`` from ``at`` (20 bytes needed); the index
     after it."""
     if value < 0:
-        out[at] = 45
+        _store1(out.ctypes.data + at, 45)
         at += 1
         magnitude = np.uint64(-(value + 1)) + _U1  # also for -2^63
     else:
         magnitude = np.uint64(value)
     length = _length(magnitude)
-    _put_digits(magnitude, out, at + length)
+    _put_digits(magnitude, out.ctypes.data + at, length)
     return at + length
 
 
