@@ -24,16 +24,18 @@ from concurrent.futures import Future, ThreadPoolExecutor
 from typing import BinaryIO
 
 import numpy as np
-from llvmlite import ir
-from numba import njit, types
-from numba.extending import intrinsic
+from numba import njit
 
-from mechloop.output.shortest import SLACK, write_double, write_int
+from mechloop.output.memory import address_of, load8, load_int64, load_uint8, store8
+from mechloop.output.shortest import SLACK, write_double_at, write_int_at
 
 #: Values in one block of rows formatted by one thread at a time (about 1.3 MB of CSV
 #: text: large enough that a thread's hand-over costs nothing, small enough for the
 #: CPU's cache).
 BLOCK_VALUES = 1 << 16
+
+#: Rows read into a row-major tile at a time.
+TILE = 16
 
 #: Blocks per thread formatted ahead of the one being written.
 AHEAD = 2
@@ -51,62 +53,63 @@ _MANTISSA = np.uint64((1 << 52) - 1)
 _SIGN = np.uint64(1 << 63)
 
 
-@intrinsic
-def _load_int64(typingctx, address):
-    """The int64 at a memory address (any alignment)."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
-        return builder.load(pointer, align=1)
-
-    return types.int64(types.intp), codegen
-
-
-@intrinsic
-def _load_uint8(typingctx, address):
-    """The byte at a memory address."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(8).as_pointer())
-        return builder.load(pointer)
-
-    return types.uint8(types.intp), codegen
-
-
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _put(out: np.ndarray, at: int, text: np.ndarray, first: int, end: int) -> int:
-    for k in range(first, end):
-        out[at] = text[k]
-        at += 1
-    return at
+def _copy(source: int, size: int, target: int) -> int:
+    """Copy ``size`` bytes from address ``source`` to ``target`` in whole 8-byte words
+    (up to 7 bytes past either end are read or overwritten); the address after the copy."""
+    for k in range(0, size, 8):
+        store8(target + k, load8(source + k))
+    return target + size
 
 
 @njit(nogil=True, cache=True, error_model="numpy")
 def _format_rows(addresses: np.ndarray, strides: np.ndarray, kinds: np.ndarray,
                  start: int, stop: int, prefix: np.ndarray, prefix_at: np.ndarray,
                  suffix: np.ndarray, words: np.ndarray, word_at: np.ndarray,
-                 csv: bool, out: np.ndarray) -> int:
+                 out: np.ndarray) -> int:
     """Rows ``start:stop`` of the columns at ``addresses`` (byte ``strides``, ``kinds``)
     as lines into ``out``; the bytes written.  ``words[word_at[w]:word_at[w + 1]]`` are
-    the fixed texts: 0 NaN, 1 inf, 2 -inf, 3 true, 4 false."""
-    at = 0
-    for row in range(start, stop):
-        for c in range(kinds.size):
-            at = _put(out, at, prefix, prefix_at[c], prefix_at[c + 1])
-            address = addresses[c] + row * strides[c]
-            kind = kinds[c]
-            if kind == 0:
-                bits = np.uint64(_load_int64(address))
-                if (bits >> _U52) & _EXPONENT == _EXPONENT:  # NaN or an infinity
-                    w = 0 if bits & _MANTISSA else (2 if bits & _SIGN else 1)
-                    at = _put(out, at, words, word_at[w], word_at[w + 1])
-                else:
-                    at = write_double(bits, out, at)
-            elif kind == 1:
-                at = write_int(_load_int64(address), out, at)
+    the fixed texts: 0 NaN, 1 inf, 2 -inf, 3 true, 4 false.  ``prefix``, ``suffix`` and
+    ``words`` end in 8 spare bytes (copied in whole words).
+
+    TILE rows of every column are first read into a row-major tile: a column's values are
+    read in a run, not one from each column a row (columns of a 2-D block lie a multiple
+    of 4 KiB apart: one value from each would evict each other from the cache)."""
+    columns = kinds.size
+    tile = np.empty(TILE * columns, dtype=np.uint64)
+    base = address_of(out)
+    at = base
+    prefix_address = address_of(prefix)
+    word_address = address_of(words)
+    suffix_address = address_of(suffix)
+    for first in range(start, stop, TILE):
+        count = min(TILE, stop - first)
+        for c in range(columns):
+            address = addresses[c] + first * strides[c]
+            if kinds[c] == BOOL:
+                for r in range(count):
+                    tile[r * columns + c] = np.uint64(load_uint8(address + r * strides[c]))
             else:
-                w = 3 if _load_uint8(address) else 4
-                at = _put(out, at, words, word_at[w], word_at[w + 1])
-        at = _put(out, at, suffix, 0, suffix.size)
-    return at
+                for r in range(count):
+                    tile[r * columns + c] = np.uint64(load_int64(address + r * strides[c]))
+        for r in range(count):
+            for c in range(columns):
+                at = _copy(prefix_address + prefix_at[c], prefix_at[c + 1] - prefix_at[c], at)
+                bits = tile[r * columns + c]
+                kind = kinds[c]
+                if kind == FLOAT:
+                    if (bits >> _U52) & _EXPONENT == _EXPONENT:  # NaN or an infinity
+                        w = 0 if bits & _MANTISSA else (2 if bits & _SIGN else 1)
+                        at = _copy(word_address + word_at[w], word_at[w + 1] - word_at[w], at)
+                    else:
+                        at = write_double_at(bits, at)
+                elif kind == INT:
+                    at = write_int_at(np.int64(bits), at)
+                else:
+                    w = 3 if bits else 4
+                    at = _copy(word_address + word_at[w], word_at[w + 1] - word_at[w], at)
+            at = _copy(suffix_address, suffix.size - 8, at)
+    return at - base
 
 
 class Lines:
@@ -127,12 +130,12 @@ class Lines:
         self.addresses = np.array([a.ctypes.data for a in arrays], dtype=np.intp)
         self.strides = np.array([a.strides[0] for a in arrays], dtype=np.intp)
         lengths = [len(p) for p in prefixes]
-        self.prefix = np.frombuffer(b"".join(prefixes) or b" ", dtype=np.uint8)
+        self.prefix = np.frombuffer(b"".join(prefixes) + bytes(8), dtype=np.uint8)
         self.prefix_at = np.concatenate(([0], np.cumsum(lengths))).astype(np.int64)
-        self.suffix = np.frombuffer(suffix, dtype=np.uint8)
+        self.suffix = np.frombuffer(suffix + bytes(8), dtype=np.uint8)
         texts = [b"", b"inf", b"-inf", b"True", b"False"] if csv else \
             [b"null", b"null", b"null", b"true", b"false"]
-        self.words = np.frombuffer(b"".join(texts), dtype=np.uint8)
+        self.words = np.frombuffer(b"".join(texts) + bytes(8), dtype=np.uint8)
         self.word_at = np.concatenate(([0], np.cumsum([len(t) for t in texts]))
                                       ).astype(np.int64)
         self.csv = csv
@@ -148,7 +151,7 @@ class Lines:
             out = np.empty(need, dtype=np.uint8)
         size = _format_rows(self.addresses, self.strides, self.kinds, start, stop,
                             self.prefix, self.prefix_at, self.suffix, self.words,
-                            self.word_at, self.csv, out)
+                            self.word_at, out)
         return memoryview(out)[:size]
 
 

@@ -26,6 +26,8 @@ from llvmlite import ir
 from numba import njit, types
 from numba.extending import intrinsic
 
+from mechloop.output.memory import address_of, load8, load_uint8, store1, store8
+
 #: Bytes :func:`write_double` may touch from where it writes.
 SLACK = 40
 
@@ -75,27 +77,6 @@ _POINT_ZEROS = np.uint64(int.from_bytes(b"0.000000", "little"))
 
 
 @intrinsic
-def _load8(typingctx, address):
-    """The 8 bytes at a memory address (any alignment), as a uint64 (little-endian)."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
-        return builder.load(pointer, align=1)
-
-    return types.uint64(types.intp), codegen
-
-
-@intrinsic
-def _store8(typingctx, address, word):
-    """Store a uint64's 8 bytes at a memory address (any alignment)."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
-        builder.store(args[1], pointer, align=1)
-        return context.get_dummy_value()
-
-    return types.none(types.intp, types.uint64), codegen
-
-
-@intrinsic
 def _mul_shift(typingctx, m, mul0, mul1, shift):
     """Ryu's ``mulShift64``: ((m * mul0 >> 64) + m * mul1) >> shift, in 128-bit integer
     arithmetic (two native 64x64->128 multiplications), as a uint64."""
@@ -107,27 +88,6 @@ def _mul_shift(typingctx, m, mul0, mul1, shift):
                              ir.IntType(64))
 
     return types.uint64(types.uint64, types.uint64, types.uint64, types.uint64), codegen
-
-
-@intrinsic
-def _store1(typingctx, address, byte):
-    """Store one byte (the low 8 bits of an integer) at a memory address."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(8).as_pointer())
-        builder.store(builder.trunc(args[1], ir.IntType(8)), pointer)
-        return context.get_dummy_value()
-
-    return types.none(types.intp, byte), codegen
-
-
-@intrinsic
-def _load1(typingctx, address):
-    """The byte at a memory address, as an int64."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(8).as_pointer())
-        return builder.zext(builder.load(pointer), ir.IntType(64))
-
-    return types.int64(types.intp), codegen
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
@@ -290,96 +250,111 @@ def _put_digits(v: np.uint64, address: int, length: int) -> None:
     """The ``length`` decimal digits of v (``length`` = :func:`_length` of v) written at
     ``address``, in whole 8-byte words (up to 8 bytes past the digits are overwritten)."""
     if length <= 8:
-        _store8(address, _eight(v) >> np.uint64(8 * (8 - length)))
+        store8(address, _eight(v) >> np.uint64(8 * (8 - length)))
     elif length <= 16:
         high = v // _U1E8
-        _store8(address, _eight(high) >> np.uint64(8 * (16 - length)))
-        _store8(address + length - 8, _eight(v - _U1E8 * high))
+        store8(address, _eight(high) >> np.uint64(8 * (16 - length)))
+        store8(address + length - 8, _eight(v - _U1E8 * high))
     else:
         top = v // _U1E16
         rest = v - _U1E16 * top
         high = rest // _U1E8
-        _store8(address, _eight(top) >> np.uint64(8 * (24 - length)))
-        _store8(address + length - 16, _eight(high))
-        _store8(address + length - 8, _eight(rest - _U1E8 * high))
+        store8(address, _eight(top) >> np.uint64(8 * (24 - length)))
+        store8(address + length - 16, _eight(high))
+        store8(address + length - 8, _eight(rest - _U1E8 * high))
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
-    """Write the finite double with bit pattern ``bits`` into ``out`` (uint8) from ``at``
-    as orjson writes it (see the module); the index after it.  ``out`` needs SLACK bytes
-    from ``at`` (the text takes at most 24; whole 8-byte words are written)."""
-    base = out.ctypes.data + at  # (whole words written: past the text, within the slack)
+def write_double_at(bits: np.uint64, base: int) -> int:
+    """Write the finite double with bit pattern ``bits`` at memory address ``base`` as
+    orjson writes it (see the module); the address after it.  SLACK bytes from ``base``
+    must be writable (the text takes at most 24; whole 8-byte words are written)."""
     if bits & _SIGN:
-        _store1(base, 45)  # "-"
+        store1(base, 45)  # "-"
         base += 1
     ieee_mantissa = bits & _MANTISSA
     ieee_exponent = int((bits >> _U52) & _EXPONENT)
     if ieee_exponent == 0 and ieee_mantissa == _U0:
-        _store8(base, _ZERO_TEXT)
-        return base + 3 - out.ctypes.data
+        store8(base, _ZERO_TEXT)
+        return base + 3
     mantissa, exponent = _d2d(ieee_mantissa, ieee_exponent)
     length = _length(mantissa)
     kk = length + exponent  # 10^(kk-1) <= |x| < 10^kk
     if 0 <= exponent and kk <= 16:  # 1234e7 -> 12340000000.0
         _put_digits(mantissa, base, length)
-        _store8(base + length, _ZEROS)  # kk - length <= 15 zeros
-        _store8(base + length + 8, _ZEROS)
-        _store8(base + kk, _POINT_ZERO)
-        return base + kk + 2 - out.ctypes.data
+        store8(base + length, _ZEROS)  # kk - length <= 15 zeros
+        store8(base + length + 8, _ZEROS)
+        store8(base + kk, _POINT_ZERO)
+        return base + kk + 2
     if 0 < kk <= 16:  # 1234e-2 -> 12.34: the fraction moved right by one for the point
         _put_digits(mantissa, base, length)
-        low = _load8(base + kk)
-        high = _load8(base + kk + 8)
-        _store8(base + kk + 1, low)
-        _store8(base + kk + 9, high)
-        _store1(base + kk, 46)
-        return base + length + 1 - out.ctypes.data
+        low = load8(base + kk)
+        high = load8(base + kk + 8)
+        store8(base + kk + 1, low)
+        store8(base + kk + 9, high)
+        store1(base + kk, 46)
+        return base + length + 1
     if -5 < kk <= 0:  # 1234e-6 -> 0.001234
-        _store8(base, _POINT_ZEROS)
+        store8(base, _POINT_ZEROS)
         _put_digits(mantissa, base + 2 - kk, length)
-        return base + 2 - kk + length - out.ctypes.data
+        return base + 2 - kk + length
     if length == 1:  # 1e30
-        _store1(base, 48 + int(mantissa))
-        return _write_exponent(kk - 1, base + 1) - out.ctypes.data
+        store1(base, 48 + int(mantissa))
+        return _write_exponent(kk - 1, base + 1)
     _put_digits(mantissa, base + 1, length)  # 1234e30 -> 1.234e33
-    _store1(base, _load1(base + 1))
-    _store1(base + 1, 46)
-    return _write_exponent(kk - 1, base + length + 1) - out.ctypes.data
+    store1(base, load_uint8(base + 1))
+    store1(base + 1, 46)
+    return _write_exponent(kk - 1, base + length + 1)
+
+
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
+    """:func:`write_double_at` into ``out`` (uint8) from index ``at`` (SLACK bytes from
+    it); the index after the text."""
+    base = address_of(out)
+    return write_double_at(bits, base + at) - base
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
 def _write_exponent(e: int, address: int) -> int:
     """``e+x`` or ``e-x`` (no leading zeros) at ``address``; the address after it."""
-    _store1(address, 101)  # "e"
-    _store1(address + 1, 45 if e < 0 else 43)  # "-" or "+"
+    store1(address, 101)  # "e"
+    store1(address + 1, 45 if e < 0 else 43)  # "-" or "+"
     e = -e if e < 0 else e
     if e >= 100:
-        _store1(address + 2, 48 + e // 100)
-        _store1(address + 3, 48 + (e // 10) % 10)
-        _store1(address + 4, 48 + e % 10)
+        store1(address + 2, 48 + e // 100)
+        store1(address + 3, 48 + (e // 10) % 10)
+        store1(address + 4, 48 + e % 10)
         return address + 5
     if e >= 10:
-        _store1(address + 2, 48 + e // 10)
-        _store1(address + 3, 48 + e % 10)
+        store1(address + 2, 48 + e // 10)
+        store1(address + 3, 48 + e % 10)
         return address + 4
-    _store1(address + 2, 48 + e)
+    store1(address + 2, 48 + e)
     return address + 3
 
 
-@njit(nogil=True, cache=True, error_model="numpy")
-def write_int(value: np.int64, out: np.ndarray, at: int) -> int:
-    """Write an int64 in decimal into ``out`` from ``at`` (20 bytes needed); the index
-    after it."""
+@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+def write_int_at(value: np.int64, address: int) -> int:
+    """Write an int64 in decimal at memory address ``address`` (24 writable bytes); the
+    address after it."""
     if value < 0:
-        _store1(out.ctypes.data + at, 45)
-        at += 1
+        store1(address, 45)
+        address += 1
         magnitude = np.uint64(-(value + 1)) + _U1  # also for -2^63
     else:
         magnitude = np.uint64(value)
     length = _length(magnitude)
-    _put_digits(magnitude, out.ctypes.data + at, length)
-    return at + length
+    _put_digits(magnitude, address, length)
+    return address + length
+
+
+@njit(nogil=True, cache=True, error_model="numpy")
+def write_int(value: np.int64, out: np.ndarray, at: int) -> int:
+    """Write an int64 in decimal into ``out`` from ``at`` (24 bytes needed); the index
+    after it."""
+    base = address_of(out)
+    return write_int_at(value, base + at) - base
 
 
 @njit(nogil=True, cache=True, error_model="numpy")
