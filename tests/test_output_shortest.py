@@ -13,6 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from numba import njit
 
+from mechloop.output import schubfach
 from mechloop.output.shortest import _eight, shortest_texts, write_int
 
 #: Finite doubles from any bit pattern (NaN and infinities are not numbers' texts: the
@@ -105,21 +106,18 @@ def test_integers_at_every_digit_count():
 
 def test_eight_digits_at_once_for_every_number_below_10_to_the_8():
     """The lane arithmetic giving eight ASCII digits in one word, for all 10^8 inputs,
-    against digits taken one division at a time."""
-    assert _eight_digit_mismatches() == 0
+    against the two four-digit texts Python writes for v // 10^4 and v % 10^4."""
+    four = np.array([int.from_bytes(f"{i:04d}".encode(), "little") for i in range(10**4)],
+                    dtype=np.uint64)
+    assert _eight_digit_mismatches(four) == 0
 
 
 @njit(cache=False)
-def _eight_digit_mismatches() -> int:
+def _eight_digit_mismatches(four: np.ndarray) -> int:
     bad = 0
     for v in range(100_000_000):
-        word = _eight(np.uint64(v))
-        rest = v
-        for k in range(7, -1, -1):
-            digit = (word >> np.uint64(8 * k)) & np.uint64(0xFF)
-            if digit != np.uint64(48 + rest % 10):
-                bad += 1
-            rest //= 10
+        expected = four[v // 10_000] | (four[v % 10_000] << np.uint64(32))
+        bad += _eight(np.uint64(v)) != expected
     return bad
 
 
@@ -137,3 +135,31 @@ def test_values_as_a_results_table_has_them():
     values *= rng.choice([-1.0, 1.0], size=values.size)
     got = b",".join(shortest_texts(values))
     assert got == orjson.dumps(values, option=orjson.OPT_SERIALIZE_NUMPY)[1:-1]
+
+
+def test_the_scaling_formulas_are_exact_over_every_exponent():
+    """Schubfach's floor(log10 2^q), floor(log10(3/4 2^q)) and floor(log2 10^e) by integer
+    multiplications equal the exact values for every binary exponent of a double, and the
+    126-bit powers of ten g(k) lie in [2^125, 2^126) just above 10^-k 2^(125 - F)."""
+    def floor_log10(numerator: int, denominator: int) -> int:
+        k = len(str(numerator // denominator)) - 1 if numerator >= denominator else -1
+        while 10 ** max(k, 0) * denominator > numerator * 10 ** max(-k, 0):
+            k -= 1
+        while 10 ** max(k + 1, 0) * denominator <= numerator * 10 ** max(-k - 1, 0):
+            k += 1
+        return k
+
+    for q in range(schubfach.Q_MIN, 972):
+        two = (1 << q, 1) if q >= 0 else (1, 1 << -q)
+        assert (q * 661971961083) >> 41 == floor_log10(*two)
+        three_quarters = (3 << q, 4) if q >= 0 else (3, 4 << -q)
+        assert (q * 661971961083 - 274743187321) >> 41 == floor_log10(*three_quarters)
+    for k in range(schubfach.K_MIN, schubfach.K_MAX + 1):
+        assert (-k * 913124641741) >> 38 == schubfach.flog2pow10(-k)
+        g = (int(schubfach._G[k - schubfach.K_MIN, 0]) << 63) + int(
+            schubfach._G[k - schubfach.K_MIN, 1])
+        assert 2**125 <= g < 2**126
+        shift = 125 - schubfach.flog2pow10(-k)
+        numerator = (10**-k if k <= 0 else 1) << max(shift, 0)
+        exact = (numerator, (1 if k <= 0 else 10**k) << max(-shift, 0))
+        assert (g - 1) * exact[1] <= exact[0] < g * exact[1]

@@ -2,9 +2,8 @@
 
 :func:`write_double` writes a finite double into a byte buffer exactly as orjson writes it
 (the form the table writers have always used): the shortest decimal digits that read back
-to the same double, bit for bit, the one nearest the double among them (Ryu, Ulf Adams,
-"Ryū: fast float-to-string conversion", PLDI 2018, its ``d2d`` with the 128-bit products
-as native 128-bit integer products), laid out as orjson lays them out:
+to the same double, bit for bit, the one nearest the double among them (found by
+:func:`mechloop.output.schubfach.shortest_decimal`), laid out as orjson lays them out:
 
 - ``kk``, the place of the decimal point after the first digit (10^(kk-1) <= |x| < 10^kk):
   digits then zeros and ``.0`` for an integer of at most 16 figures (``100.0``,
@@ -13,54 +12,26 @@ as native 128-bit integer products), laid out as orjson lays them out:
   sign always written and no leading zeros (``1e-7``, ``1.5e+300``, ``5e-324``);
 - ``0.0`` and ``-0.0`` for the zeros, a ``-`` before a negative number.
 
-The tables of powers of five (Ryu's ``DOUBLE_POW5_SPLIT`` and ``DOUBLE_POW5_INV_SPLIT``,
-125-bit approximations stored as two 64-bit halves) are computed exactly at import with
-Python's integers.  :func:`write_int` writes an int64 in decimal.  Everything is compiled
-with ``nogil``: threads format disjoint rows at once (:mod:`mechloop.output.lines`).
+The digits are written eight at a time from one word (:func:`_eight`).  :func:`write_int`
+writes an int64 in decimal.  Everything is compiled with ``nogil``: threads format
+disjoint rows at once (:mod:`mechloop.output.lines`).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from llvmlite import ir
-from numba import njit, types
-from numba.extending import intrinsic
+from numba import njit
 
 from mechloop.output.memory import address_of, load8, load_uint8, store1, store8
+from mechloop.output.schubfach import shortest_decimal
 
 #: Bytes :func:`write_double` may touch from where it writes.
 SLACK = 40
 
-_POW5_INV_BITCOUNT = 125
-_POW5_BITCOUNT = 125
-_MASK64 = (1 << 64) - 1
-
-
-def _tables() -> tuple[np.ndarray, np.ndarray]:
-    """Ryu's 125-bit powers of five: 5^i (i < 326, top bits) and 2^k / 5^i + 1 (i < 342),
-    each as (low 64 bits, high 64 bits)."""
-    split = np.zeros((326, 2), dtype=np.uint64)
-    for i in range(326):
-        power = 5**i
-        shift = power.bit_length() - _POW5_BITCOUNT
-        value = power >> shift if shift >= 0 else power << -shift
-        split[i] = value & _MASK64, value >> 64
-    inverse = np.zeros((342, 2), dtype=np.uint64)
-    for i in range(342):
-        power = 5**i
-        value = (1 << (power.bit_length() - 1 + _POW5_INV_BITCOUNT)) // power + 1
-        inverse[i] = value & _MASK64, value >> 64
-    return split, inverse
-
-
-_POW5_SPLIT, _POW5_INV_SPLIT = _tables()
-
-_U0, _U1, _U2, _U4 = np.uint64(0), np.uint64(1), np.uint64(2), np.uint64(4)
-_U5, _U10, _U100 = np.uint64(5), np.uint64(10), np.uint64(100)
+_U0, _U1, _U10, _U100 = np.uint64(0), np.uint64(1), np.uint64(10), np.uint64(100)
 _U1E4, _U1E8 = np.uint64(10**4), np.uint64(10**8)
 _POW10 = np.array([10**k for k in range(20)], dtype=np.uint64)
 _MANTISSA = np.uint64((1 << 52) - 1)
-_HIDDEN = np.uint64(1 << 52)
 _EXPONENT = np.uint64(0x7FF)
 _SIGN = np.uint64(1 << 63)
 _U52 = np.uint64(52)
@@ -74,152 +45,6 @@ _U1E16 = np.uint64(10**16)
 _LANES32 = np.uint64(0x0000007F0000007F)
 _LANES16 = np.uint64(0x000F000F000F000F)
 _POINT_ZEROS = np.uint64(int.from_bytes(b"0.000000", "little"))
-
-
-@intrinsic
-def _mul_shift(typingctx, m, mul0, mul1, shift):
-    """Ryu's ``mulShift64``: ((m * mul0 >> 64) + m * mul1) >> shift, in 128-bit integer
-    arithmetic (two native 64x64->128 multiplications), as a uint64."""
-    def codegen(context, builder, signature, args):
-        wide = ir.IntType(128)
-        m_, a, b, s = (builder.zext(x, wide) for x in args)
-        low = builder.lshr(builder.mul(m_, a), ir.Constant(wide, 64))
-        return builder.trunc(builder.lshr(builder.add(low, builder.mul(m_, b)), s),
-                             ir.IntType(64))
-
-    return types.uint64(types.uint64, types.uint64, types.uint64, types.uint64), codegen
-
-
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _pow5_factor(value: np.uint64) -> int:
-    count = 0
-    while True:
-        q = value // _U5
-        if value - _U5 * q != _U0:
-            return count
-        value = q
-        count += 1
-
-
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _pow5bits(e: int) -> int:
-    return ((e * 1217359) >> 19) + 1
-
-
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
-def _d2d(ieee_mantissa: np.uint64, ieee_exponent: int) -> tuple[np.uint64, int]:
-    """Ryu's ``d2d``: the shortest decimal (digits, exponent of ten) of a finite,
-    nonzero double given by its mantissa bits and biased exponent."""
-    if ieee_exponent == 0:
-        e2 = 1 - 1023 - 52 - 2
-        m2 = ieee_mantissa
-    else:
-        e2 = ieee_exponent - 1023 - 52 - 2
-        m2 = _HIDDEN | ieee_mantissa
-    even = (m2 & _U1) == _U0
-    accept_bounds = even
-    mv = _U4 * m2
-    mm_shift = 1 if (ieee_mantissa != _U0 or ieee_exponent <= 1) else 0
-
-    vm_trailing = False
-    vr_trailing = False
-    if e2 >= 0:
-        q = ((e2 * 78913) >> 18) - (1 if e2 > 3 else 0)
-        e10 = q
-        k = _POW5_INV_BITCOUNT + _pow5bits(q) - 1
-        i = -e2 + q + k
-        mul0 = _POW5_INV_SPLIT[q, 0]
-        mul1 = _POW5_INV_SPLIT[q, 1]
-        j = i
-        if q <= 21:
-            mv_mod5 = mv - _U5 * (mv // _U5)
-            if mv_mod5 == _U0:
-                vr_trailing = _pow5_factor(mv) >= q
-            elif accept_bounds:
-                vm_trailing = _pow5_factor(mv - _U1 - np.uint64(mm_shift)) >= q
-        # (not accept_bounds and q <= 21 and mv % 5 != 0: vp -= ..., below)
-    else:
-        q = ((-e2 * 732923) >> 20) - (1 if -e2 > 1 else 0)
-        e10 = q + e2
-        i = -e2 - q
-        k = _pow5bits(i) - _POW5_BITCOUNT
-        j = q - k
-        mul0 = _POW5_SPLIT[i, 0]
-        mul1 = _POW5_SPLIT[i, 1]
-
-    # mulShiftAll64: vr, vp, vm of 4m, 4m + 2 and 4m - 1 - mm_shift
-    shift = np.uint64(j - 64)
-    vr = _mul_shift(mv, mul0, mul1, shift)
-    vp = _mul_shift(mv + _U2, mul0, mul1, shift)
-    vm = _mul_shift(mv - _U1 - np.uint64(mm_shift), mul0, mul1, shift)
-
-    if e2 >= 0:
-        if q <= 21 and not accept_bounds:
-            if mv - _U5 * (mv // _U5) != _U0 and _pow5_factor(mv + _U2) >= q:
-                vp -= _U1
-    else:
-        if q <= 1:
-            vr_trailing = True
-            if accept_bounds:
-                vm_trailing = mm_shift == 1
-            else:
-                vp -= _U1
-        elif q < 63:
-            vr_trailing = (mv & ((_U1 << np.uint64(q)) - _U1)) == _U0
-
-    removed = 0
-    last = 0
-    if vm_trailing or vr_trailing:  # the general case (rare)
-        while True:
-            vp_div = vp // _U10
-            vm_div = vm // _U10
-            if vp_div <= vm_div:
-                break
-            vm_mod = vm - _U10 * vm_div
-            vr_div = vr // _U10
-            vr_mod = vr - _U10 * vr_div
-            vm_trailing = vm_trailing and vm_mod == _U0
-            vr_trailing = vr_trailing and last == 0
-            last = int(vr_mod)
-            vr, vp, vm = vr_div, vp_div, vm_div
-            removed += 1
-        if vm_trailing:
-            while True:
-                vm_div = vm // _U10
-                vm_mod = vm - _U10 * vm_div
-                if vm_mod != _U0:
-                    break
-                vp_div = vp // _U10
-                vr_div = vr // _U10
-                vr_mod = vr - _U10 * vr_div
-                vr_trailing = vr_trailing and last == 0
-                last = int(vr_mod)
-                vr, vp, vm = vr_div, vp_div, vm_div
-                removed += 1
-        if vr_trailing and last == 5 and (vr & _U1) == _U0:
-            last = 4  # round to even when the exact number is ...50..0
-        up = (vr == vm and (not accept_bounds or not vm_trailing)) or last >= 5
-        output = vr + (_U1 if up else _U0)
-    else:  # the common case
-        round_up = False
-        vp_div = vp // _U100
-        vm_div = vm // _U100
-        if vp_div > vm_div:  # two digits at a time
-            vr_div = vr // _U100
-            round_up = vr - _U100 * vr_div >= np.uint64(50)
-            vr, vp, vm = vr_div, vp_div, vm_div
-            removed += 2
-        while True:
-            vp_div = vp // _U10
-            vm_div = vm // _U10
-            if vp_div <= vm_div:
-                break
-            vr_div = vr // _U10
-            round_up = vr - _U10 * vr_div >= _U5
-            vr, vp, vm = vr_div, vp_div, vm_div
-            removed += 1
-        output = vr + (_U1 if (vr == vm or round_up) else _U0)
-    return output, e10 + removed
 
 
 @njit(nogil=True, cache=True, error_model="numpy", inline="always")
@@ -277,7 +102,7 @@ def write_double_at(bits: np.uint64, base: int) -> int:
     if ieee_exponent == 0 and ieee_mantissa == _U0:
         store8(base, _ZERO_TEXT)
         return base + 3
-    mantissa, exponent = _d2d(ieee_mantissa, ieee_exponent)
+    mantissa, exponent = shortest_decimal(ieee_mantissa, ieee_exponent)
     length = _length(mantissa)
     kk = length + exponent  # 10^(kk-1) <= |x| < 10^kk
     if 0 <= exponent and kk <= 16:  # 1234e7 -> 12340000000.0
