@@ -1,8 +1,8 @@
 """The documentation's links hold: every relative link and image of README.md and the pages
 of docs/ points to a file that exists, every ``#anchor`` to a heading of the page it names
 (GitHub's anchors), every page starts with what it covers and a link back to the README,
-and the README's table of contents lists every page.  No network: links to other sites are
-not followed."""
+the README's table of contents lists every page, and the examples' table lists every
+bundled example.  No network: links to other sites are not followed."""
 
 from __future__ import annotations
 
@@ -85,3 +85,16 @@ def test_every_page_says_what_it_covers_and_links_back(page):
 def test_the_readme_lists_every_page():
     listed = {t for t in PARSED["README.md"][0] if t.startswith("docs/") and t.endswith(".md")}
     assert listed == {p for p in PAGES if p != "README.md"}
+
+
+def test_the_examples_table_lists_every_example():
+    """docs/examples.md has a row for every file of examples/ (a folder's row covers its
+    files), and every row names a file or folder that exists."""
+    text = page_text("docs/examples.md")
+    listed = set(re.findall(r"^\| `(examples/[^`]+)` \|", text, flags=re.M))
+    files = {p.relative_to(ROOT).as_posix() for p in (ROOT / "examples").rglob("*")
+             if p.is_file() and "__pycache__" not in p.parts}
+    folders = {row for row in listed if row.endswith("/")}
+    assert not {f for f in files if f not in listed
+                and not any(f.startswith(d) for d in folders)}, "add a row to docs/examples.md"
+    assert all((ROOT / row).exists() for row in listed)
