@@ -14,7 +14,7 @@ timing; Cabrera et al. 2002), Case4 (six points on an arc, prescribed timing).  
 published errors are "recomputed" (the design vectors of the source through its
 objective), next to the best error the source records for its own algorithm (HCDJ).
 
-    python benchmarks/bench_synthesis_problems.py                 # the README's table
+    python benchmarks/bench_synthesis_problems.py                 # the table of docs/synthesis.md
     python benchmarks/bench_synthesis_problems.py --seeds 2 --compare --budget-scale 0.3
 
 ``--compare`` adds the method comparison (DE, CMA-ES, multistart, each with and without

@@ -292,7 +292,7 @@ def test_classical_start_script_scores_freudensteins_design_independently():
     t = np.arange(31) / 30
     error = np.degrees(psi - psi[0]) - 60.0 * np.log10(1 + 9 * t)
     assert out["q_classical"] == pytest.approx(np.abs(error).max(), abs=1e-9)
-    assert out["q_classical"] == pytest.approx(0.7540, abs=1e-4)  # as the README says
+    assert out["q_classical"] == pytest.approx(0.7540, abs=1e-4)  # as docs/synthesis.md says
     assert out["q_with"] <= out["q_classical"] + 1e-12  # the start is kept
     assert out["values"]["r1"] == pytest.approx(float(fg.a))
     assert abs(error[[0, -1]]).max() > 0 and np.abs(error).max() < 1.0  # degrees

@@ -193,7 +193,7 @@ def test_examples_command_prints_numbers_and_both_titles(monkeypatch):
 
 
 def test_readme_table_names_every_course_model_with_its_title():
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    readme = (ROOT / "docs" / "examples.md").read_text(encoding="utf-8")
     section = readme.split("\n## Course project\n")[1].split("\n## ")[0]
     rows = re.findall(r"^\| (\d+) \| (.+?) \| `([^`]+)` \| .+ \|$", section, flags=re.M)
     course = examples(course_only=True)

@@ -3,7 +3,7 @@
 
 Every gas force is the indicator diagram its header states, recomputed here from the
 model's own piston positions: the compressors' (5, 16, 18) are mechloop's indicator loads
-(README "Engine and compressor indicator diagrams"), the engines' (12, 13) tables, inputs
+(docs/dynamics.md, "Engine and compressor indicator diagrams"), the engines' (12, 13) tables, inputs
 of the models.  The diagrams below are written out independently of mechloop (polytropes
 between the piston's dead centres), so a table edited by hand, an indicator load given
 other numbers or a piston that no longer moves as the diagram assumed fails

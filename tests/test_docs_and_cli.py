@@ -1,4 +1,5 @@
-"""The README's Python block, the example scripts, the JSON Schema and the CLI outputs."""
+"""The Python blocks of the README and docs/, the example scripts, the JSON Schema and the CLI
+outputs."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
+from helpers.docs import PAGES, page_text
 from typer.testing import CliRunner
 
 import mechloop
@@ -23,13 +25,14 @@ EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
 
 
 def test_readme_python_block_runs(tmp_path, monkeypatch):
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
-    assert blocks, "README shows the Python API"
+    blocks = [(page, block) for page in PAGES
+              for block in re.findall(r"```python\n(.*?)```", page_text(page), flags=re.S)]
+    assert {"README.md", "docs/python-api.md"} <= {page for page, _ in blocks}, \
+        "the README and docs/python-api.md show the Python API"
     monkeypatch.chdir(ROOT)
-    for block in blocks:
+    for page, block in blocks:
         code = block.replace('"my_model.yaml"', repr(str(tmp_path / "my_model.yaml")))
-        exec(compile(code, "README.md", "exec"), {})
+        exec(compile(code, page, "exec"), {})
     saved = mechloop.load_model(tmp_path / "my_model.yaml")
     assert saved.positions == 72
 
@@ -43,7 +46,7 @@ def test_readme_starts_with_the_two_commands():
     assert commands[1].strip() in ci
 
 
-#: what a script prints that the README quotes (its section "Starting from a classical
+#: what a script prints that docs/synthesis.md quotes (its section "Starting from a classical
 #: solution"): seeded DE runs with a generation limit, the same on every machine
 PRINTS = {"classical_start.py": ["its structural error (the model's Q): 0.7540 deg",
                                  "seed 1, 60 generations): Q = 0.5980 deg",

@@ -41,7 +41,7 @@ def test_the_starter_brings_the_engine_to_its_steady_state(run):
     kinds = [e.kind for e in sim.events]
     assert kinds == ["start", "motor off", "steady"]
     assert sim.steady_time == sim.end.t
-    # the figures README.md "Engine and compressor indicator diagrams" quotes
+    # the figures docs/dynamics.md "Engine and compressor indicator diagrams" quotes
     assert round(sim.steady_time, 2) == 7.77
     assert round(sim.cycle_speed[-1] / RPM) == 1498
     # the starter (12 N*m x 12 at rest, nothing beyond 250 rpm of the crank) gets the

@@ -11,7 +11,7 @@ warmed-up fork server, with a wall-clock limit per command and a memory cap
 
 CI runs a fixed, derandomized budget (profile ``fuzz-ci``); ``MECHLOOP_FUZZ=long`` selects
 the profile ``fuzz-long`` (random, many examples, shrinking on) for a longer local run —
-see the README section "Fuzzing".
+see docs/testing.md, section "Fuzzing".
 """
 
 from __future__ import annotations
@@ -219,7 +219,7 @@ def test_raw_text_and_bytes(files):
 
 
 def test_the_standalone_fuzzer_prints_its_summary(capsys):
-    """``tests/fuzz/run_fuzz.py`` (the README's longer run) counts every command."""
+    """``tests/fuzz/run_fuzz.py`` (the longer run of docs/testing.md) counts every command."""
     from fuzz import run_fuzz
 
     code = run_fuzz.main(["-n", "2", "--sources", "raw", "--seed", "1"])

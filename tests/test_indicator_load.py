@@ -164,7 +164,7 @@ def test_problems_are_located():
 
 
 def test_the_indicator_examples_figures():
-    # the figures README.md "Engine and compressor indicator diagrams" quotes
+    # the figures docs/dynamics.md "Engine and compressor indicator diagrams" quotes
     from mechloop.dynamics.indicator import model_indicators
 
     (engine,) = model_indicators(mechloop.load_model(EXAMPLES / "engine_indicator.yaml"))

@@ -187,10 +187,11 @@ def test_a_csv_table_is_read_once_also_when_the_file_has_problems(tmp_path, monk
 
 
 def test_readme_states_the_loading_limits():
-    """The README's Limits paragraph says what the code enforces."""
+    """The Limits paragraph of the model file's page (docs/models.md) says what the code
+    enforces."""
     from mechloop.model import limits, numbers, signals
 
-    text = " ".join((Path(__file__).resolve().parents[1] / "README.md")
+    text = " ".join((Path(__file__).resolve().parents[1] / "docs" / "models.md")
                     .read_text(encoding="utf-8").split())
     for phrase in (f"at most {limits.MAX_DOCUMENT_BYTES // 2**20} MiB",
                    f"at most {signals.MAX_CSV_BYTES // 2**20} MiB",

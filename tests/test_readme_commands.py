@@ -1,6 +1,6 @@
-"""Every command the README shows runs: each `mechloop ...` line of its ```bash blocks and each
-inline `mechloop ...` (or `plot M ...` of the views table) with its arguments, in a scratch
-folder holding a copy of the examples, exits 0.
+"""Every command the README and the pages of docs/ show runs: each `mechloop ...` line of their
+```bash blocks and each inline `mechloop ...` (or `plot M ...` of the views table) with its
+arguments, in a scratch folder holding a copy of the examples, exits 0.
 
 Placeholders: `M` and `MODEL` stand for a model with bodies (the README says so); the
 machine-motion view needs a `machine:` section. The synthesis commands run with
@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from helpers.docs import all_text
 from typer.main import get_command
 from typer.testing import CliRunner
 
@@ -25,7 +26,7 @@ import mechloop
 from mechloop.cli import app
 
 ROOT = Path(__file__).resolve().parents[1]
-README = (ROOT / "README.md").read_text(encoding="utf-8")
+README = all_text()  # README.md and every page of docs/
 PLACEHOLDER = {"M": "examples/crank_slider_dynamics.yaml",
                "MODEL": "examples/crank_slider_dynamics.yaml"}
 MACHINE = "examples/single_cylinder_engine.yaml"  # `plot M motion` needs a machine: section

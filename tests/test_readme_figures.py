@@ -1,4 +1,4 @@
-"""Every number in README.md and in the examples' headers is accounted for.
+"""Every number in README.md, the pages of docs/ and the examples' headers is accounted for.
 
 The text (outside code blocks; inline code only where a figure entry covers it) is split
 into paragraphs, and every number in it must be one of:
@@ -28,6 +28,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from helpers.docs import PAGES, all_text, page_text
 
 import mechloop
 
@@ -43,22 +44,22 @@ TIMEY = re.compile(r"\s?(s\b|ms\b|%|GB\b|designs/s)")
 
 # ------------------------------------------------------------------------------ the text
 def _paragraphs_of_readme() -> list[tuple[str, str, str]]:
-    """(document, section, paragraph) of the README outside fenced code blocks; a table row
-    is a paragraph of its own."""
+    """(document, section, paragraph) of the README and of each page of docs/ outside fenced
+    code blocks; a table row is a paragraph of its own."""
     out: list[tuple[str, str, str]] = []
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    for block in re.findall(r"```bash\n(.*?)```", readme, flags=re.S):
-        out += [("README.md", readme, line.split(" #", 1)[1].strip())
-                for line in block.splitlines() if " #" in line]
-    text = re.sub(r"```.*?```", "\n\n", (ROOT / "README.md").read_text(encoding="utf-8"),
-                  flags=re.S)
-    for section in re.split(r"\n(?=#{1,4} )", text):
-        for block in re.split(r"\n\s*\n", section):
-            rows = block.splitlines()
-            if rows and all(r.startswith("|") for r in rows):
-                out += [("README.md", section, r) for r in rows]
-            elif block.strip():
-                out.append(("README.md", section, " ".join(r.strip() for r in rows)))
+    for page in PAGES:
+        readme = page_text(page)
+        for block in re.findall(r"```bash\n(.*?)```", readme, flags=re.S):
+            out += [(page, readme, line.split(" #", 1)[1].strip())
+                    for line in block.splitlines() if " #" in line]
+        text = re.sub(r"```.*?```", "\n\n", readme, flags=re.S)
+        for section in re.split(r"\n(?=#{1,4} )", text):
+            for block in re.split(r"\n\s*\n", section):
+                rows = block.splitlines()
+                if rows and all(r.startswith("|") for r in rows):
+                    out += [(page, section, r) for r in rows]
+                elif block.strip():
+                    out.append((page, section, " ".join(r.strip() for r in rows)))
     return out
 
 
@@ -89,10 +90,11 @@ PARAGRAPHS = _paragraphs_of_readme() + _paragraphs_of_headers()
 
 
 def _pool() -> set[float]:
-    """Numbers of the examples' data (outside comments) and of the README's code blocks."""
+    """Numbers of the examples' data (outside comments) and of the documentation's code
+    blocks."""
     texts = [line.split("#")[0] for p in EXAMPLE_FILES
              for line in p.read_text(encoding="utf-8").splitlines()]
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    readme = all_text()
     texts += [line.split("#")[0] for block in re.findall(r"```(?:yaml|python|bash)\n(.*?)```",
                                                          readme, flags=re.S)
               for line in block.splitlines()]
@@ -243,7 +245,9 @@ COMPUTED: dict[str, Callable[[], float]] = {
 
 # ------------------------------------------------------------------------ the figures
 # (document, pattern with the figure in group "fig", how): how is ("test", "file::name"),
-# ("computed", key of COMPUTED) or ("bench", "benchmarks/x.py", machine-dependent?)
+# ("computed", key of COMPUTED) or ("bench", "benchmarks/x.py", machine-dependent?).
+# The document is an example's file name, a page ("docs/synthesis.md") or R: the
+# documentation, README.md or any page of docs/ (the README's reference moved there).
 R = "README.md"
 SCRIPTS = "tests/test_docs_and_cli.py::test_example_scripts_run"
 SLIDER = "tests/test_classical_start.py::test_slider_crank_example_has_its_stroke_and_time_ratio"
@@ -591,8 +595,13 @@ def _in_code(paragraph: str, start: int) -> bool:
     return paragraph[:start].count("`") % 2 == 1
 
 
+def _applies(entry: tuple, document: str) -> bool:
+    """An entry of FIGURES or INPUTS holds in ``document`` (R: in every page)."""
+    return entry[0] is None or entry[0] == document or (entry[0] == R and document in PAGES)
+
+
 def _entries(document: str, table: list) -> list:
-    return [e for e in table if e[0] is None or e[0] == document]
+    return [e for e in table if _applies(e, document)]
 
 
 def _spans(document: str, paragraph: str) -> tuple[list, list]:
@@ -626,7 +635,7 @@ def test_no_entry_is_stale():
     for table in (FIGURES, INPUTS):
         for entry in table:
             assert any(re.search(entry[1], p) for d, _, p in PARAGRAPHS
-                       if entry[0] is None or entry[0] == d), f"matches nothing: {entry[:2]}"
+                       if _applies(entry, d)), f"matches nothing: {entry[:2]}"
 
 
 def _found_figures() -> list[tuple[str, str, str, tuple]]:

@@ -319,7 +319,7 @@ def test_cli_writes_the_time_series_and_the_figure(tmp_path: Path):
 
 
 def test_compressor_start_up_figures():
-    # the figures README.md "Motion in time" quotes for examples/compressor_startup.yaml
+    # the figures docs/motion.md "Motion in time" quotes for examples/compressor_startup.yaml
     model = mechloop.load_model(EXAMPLES / "compressor_startup.yaml")
     sim = simulate(model)
     assert sim.end.kind == "steady"

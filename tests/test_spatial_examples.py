@@ -35,7 +35,7 @@ def _solve(data: dict, **kwargs):
 
 
 def _direction(a_deg: float, b_deg: float) -> np.ndarray:
-    """The unit vector of elevation ``a`` and rotation ``b`` about Y (the README's
+    """The unit vector of elevation ``a`` and rotation ``b`` about Y (docs/spatial.md's
     ``(cos α cos β, sin α, cos α sin β)``)."""
     a, b = math.radians(a_deg), math.radians(b_deg)
     return np.array([math.cos(a) * math.cos(b), math.sin(a), math.cos(a) * math.sin(b)])

@@ -52,7 +52,7 @@ def _as_spatial(data: dict, extra: dict[int, int]) -> dict:
 
 
 #: A planar model written as spatial gives the planar results to this (relative to each
-#: column's largest value; the README quotes it).
+#: column's largest value; docs/spatial.md quotes it).
 PLANAR_RTOL = 1e-12
 
 

@@ -2,8 +2,8 @@
 ``chromium-driver``, installed by the README's test command; never skipped): load a
 model, type a new length and see the diagram and the plotted value become the numbers the
 API gives, type a YAML error and see it at its line, move the slider, play the cycle, see
-a chain break, switch to Russian, download the report.  The screenshots of the README's
-"Web application" section are made here (``docs/screenshots/``)."""
+a chain break, switch to Russian, download the report.  The screenshots of docs/web.md
+(and of the README's tour) are made here (``docs/screenshots/``)."""
 
 from __future__ import annotations
 
