@@ -174,3 +174,17 @@ def test_a_model_without_bodies_whose_contours_do_not_define_links_is_refused():
     assert f"swashplate.yaml:{line}, vectors[2].r: the model has no bodies, and vector 2 " \
         "changes length" in run.output
     assert "fix: add bodies: naming the vectors of each link" in run.output
+
+
+def test_the_web_structure_panel_of_spatial_models_with_and_without_bodies():
+    """The web page's structure: the printed Somov–Malyshev text for a spatial model
+    (``spatial`` true, so the page does not say "no bodies"), without bodies from the
+    vectors when they define the links, else the contours' description alone."""
+    from mechloop.web.exports import structure
+
+    for name, spatial in (("rssr_reactions", True), ("rssr", True), ("swashplate", False)):
+        path = EXAMPLES / f"{name}.yaml"
+        shown = structure(path.read_text(encoding="utf-8"), path, path.parent, "ru")
+        assert shown["mechanism"] is None and shown.get("spatial", False) is spatial
+        assert ("формула Сомова–Малышева" in shown["description"]) is spatial
+        assert "контур 1" in shown["description"]
