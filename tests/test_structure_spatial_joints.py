@@ -188,3 +188,39 @@ def test_the_web_structure_panel_of_spatial_models_with_and_without_bodies():
         assert shown["mechanism"] is None and shown.get("spatial", False) is spatial
         assert ("формула Сомова–Малышева" in shown["description"]) is spatial
         assert "контур 1" in shown["description"]
+
+
+LANDING_GEAR_JOINTS = """
+bodies:
+  1: {name: strut, vectors: [3, 4]}
+  2: {name: barrel, vectors: [2], ends: {2: tail}}
+  3: {name: piston rod, vectors: [2], ends: {2: head}}
+joints:
+  H: {type: revolute, bodies: [0, 1], at: {tail: 3}, axis: [-0.3420201433256687, 0,
+      0.9396926207859084]}
+  G: {type: spherical, bodies: [0, 2], at: {tail: 2}}
+  C: {type: cylindrical, bodies: [2, 3], axis: 2}
+  P: {type: spherical, bodies: [3, 1], at: {head: 2}}
+"""
+
+
+def test_landing_gear_from_its_joints_cylinder_between_balls(tmp_path):
+    """The skewed-axis landing gear with its joints: the strut's hinge H (revolute about
+    the normal (−sin 20°, 0, cos 20°) of its swing plane), the barrel's ball G on the
+    airframe, the barrel and the rod in a cylindrical pair C along the cylinder (class
+    IV), the rod's ball P on the strut: W = 6·3 − 5·1 − 4·1 − 3·2 = 3, of which the
+    barrel's and the rod's spins about the cylinder's line (their balls and the sleeve's
+    axis on one line) are idle: 1 working = the cylinder's drive, as the pairs the
+    contours and bodies give (tests/test_structure_spatial.py)."""
+    text = (EXAMPLES / "landing_gear_skewed_axis.yaml").read_text(encoding="utf-8")
+    path = tmp_path / "gear.yaml"
+    path.write_text(text + LANDING_GEAR_JOINTS, encoding="utf-8")
+    s = spatial_structure(load_model(path))
+    assert [(p.name, p.kind, p.klass) for p in s.pairs] == [
+        ("H", "R", 5), ("G", "S", 3), ("C", "C", 4), ("P", "S", 3)]
+    assert (s.p[5], s.p[4], s.p[3]) == (1, 1, 2)
+    assert s.W == 6 * 3 - 5 - 4 - 3 * 2 == 3
+    assert s.idle == (2, 3) and s.W - len(s.idle) == s.inputs == 1 and s.q == 0
+    inferred = load_model(path).model_copy(update={"joints": None})
+    same = spatial_structure(inferred)
+    assert (same.W, same.idle, same.q) == (s.W, s.idle, s.q)
