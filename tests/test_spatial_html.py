@@ -101,7 +101,7 @@ def test_the_page_is_self_contained(tmp_path):
     assert "<script src" not in text and "<link" not in text and "@import" not in text
     addresses = re.findall(r"https?://[^\s\"'`)]+", text)
     assert set(addresses) == {SVG_NS}  # no script, style, font or image fetched
-    assert text.count("<script>") == 3  # the strings, the viewer, the start
+    assert text.count("<script>") == 4  # the strings, the numbers, the viewer, the start
     assert "class View3d" in text and "view3dReset" in text  # the viewer and its words
     data = page_data(tmp_path / "view.html")
     assert data["frames"] == list(range(24))  # position 24 closes the turn: left out

@@ -99,7 +99,7 @@ def test_cli_structure_of_spatial_models(tmp_path):
     assert run.exit_code == 0, run.output
     assert "idle (passive) degrees of freedom: 1" in run.output
     assert "position plans" not in run.output
-    run = CliRunner().invoke(app, ["structure", str(EXAMPLES / "rssr.yaml")])
+    run = CliRunner().invoke(app, ["structure", str(EXAMPLES / "swashplate.yaml")])
     assert run.exit_code == 2 and "the model has no bodies" in run.output
     assert "position plans" not in run.output
 

@@ -10,6 +10,7 @@ moves to the API's coordinates.  The README's screenshot of the 3-D view is made
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -204,3 +205,52 @@ def test_the_page_draws_a_spatial_model_in_3d_and_the_slider_moves_it(
     browser.find_element(By.ID, "lang-en").click()
     browser.find_element(By.ID, "overlay").click()
     browser.find_element(By.CSS_SELECTOR, "#traces button[data-key='head:1']").click()
+
+
+#: Every text the 3-D page shows: what is on the screen, the buttons' titles (the tips)
+#: and the words drawn in the view (axis letters, the break's mark).
+PAGE_TEXT = """
+const shown = [document.body.innerText];
+for (const e of document.querySelectorAll('[title]')) shown.push(e.title);
+for (const e of document.querySelectorAll('svg text')) shown.push(e.textContent);
+return shown.join('\\n');"""
+
+
+def test_the_page_of_animate_lang_ru_is_russian_and_the_english_page_english(
+        browser, view_file, tmp_path):  # noqa: F811
+    """``mechloop animate MODEL -o x.html --lang ru``: at a position where the chain breaks
+    (its reason said too) the Russian page shows no English word but the user's names and
+    symbols, and its break reason is the Russian of the solver's; the English page of the
+    same model holds no Cyrillic letter."""
+    from helpers.latin import latin_words
+    from typer.testing import CliRunner
+
+    from mechloop.cli import app
+    from mechloop.report.words import reason
+
+    path, results = view_file
+    model = path.parent / "rssr_short.yaml"
+    broken = int(np.flatnonzero(results.broken)[0])
+    names = [v.name or "" for v in results.model.vectors.values()] + [results.model.name]
+    texts = {}
+    for lang in ("ru", "en"):
+        page = tmp_path / f"view_{lang}.html"
+        run = CliRunner().invoke(app, ["animate", str(model), "-o", str(page), "--lang",
+                                       lang])
+        assert run.exit_code == 0, run.output
+        browser.get(page.as_uri())
+        _wait(browser, lambda d: d.execute_script("return window.mechloopPlayer"),
+              "no 3-D view")
+        browser.execute_script("mechloopPlayer.show(arguments[0])", broken)
+        texts[lang] = browser.execute_script(PAGE_TEXT)
+        note = browser.find_element(By.ID, "break-note").text
+        assert note.startswith("разрыв цепи в положении" if lang == "ru"
+                               else "chain break at position")
+        assert reason(results.breaks[0].reason, lang) in note
+        browser.save_screenshot(str(tmp_path / f"view_{lang}.png"))
+    assert "Пуск" in texts["ru"] and "траектории" in texts["ru"]
+    assert latin_words(texts["ru"], names) == []
+    assert re.search(r"\d\.\d", texts["ru"]) is None  # the decimal comma: t = 0,625 с
+    assert re.search(r"t = \d+,\d+ с", texts["ru"])
+    assert re.findall("[А-Яа-яЁё]+", texts["en"]) == []
+    assert "Play" in texts["en"] and "trajectories" in texts["en"]

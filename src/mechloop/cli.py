@@ -740,6 +740,8 @@ def animate(
                                         "the Y axis, deg")] = 30.0,
     views: Annotated[str, typer.Option(help="a spatial model: all (the 3-D view and the "
                                        "projections XY, ZY, XZ) or 3d")] = "all",
+    lang: Annotated[str | None, typer.Option(help="a spatial model's .html page: its "
+                    "language, en or ru (default: MECHLOOP_LANG, else en)")] = None,
     force: Force = False,
 ) -> None:
     """Animate a cycle ("cinema"): one frame per position.
@@ -756,6 +758,7 @@ def animate(
     from mechloop.views.animation import ANIMATION_SUFFIXES
     from mechloop.views.animation import animate as make_animation
 
+    lang = _text_lang(lang)
     _outputs(model, force, (output, ANIMATION_SUFFIXES))
     m = load_model(model)
     results = _dynamics(m, model) if m.bodies else solve_model(m)
@@ -771,7 +774,7 @@ def animate(
             from mechloop.views.spatial_animation import animate_spatial
 
             animate_spatial(results, output, fps=fps, progress=advance, elev=elev,
-                            azim=azim, views=views)
+                            azim=azim, views=views, lang=lang)
         else:
             make_animation(results, output, fps=fps, progress=advance)
     out.print(f"wrote {output} ({frames[0]} frames)")

@@ -205,6 +205,8 @@ def _check_power(sa: Array, columns: list[Column], col_scale: Array, size: float
     ``sa``: the scaled system (its unknowns' powers are ``col_scale`` times theirs with
     the twists ``(v_O, ω·size)``), compared to its columns' and the twists' sizes."""
     worst: dict[tuple, int] = {}
+    if not good.any():  # every position broken: no motion to check against
+        return
     width = np.linalg.norm(sa[good], axis=1).max(axis=0, initial=0.0)  # (K,)
     for k, (place, frames) in analogs.items():
         t = _twist(place, frames, rows, ref_points)[good]
@@ -264,6 +266,50 @@ def _singular_values(a: Array) -> Array:
                           or [np.zeros((0, min(a.shape[1:])))])
 
 
+def _unknowns(joints: list[Joint3], drives: list[Drive3], place: Placement3,
+              frames: dict[int, Frame], ref_points: dict[int, PointOn]):
+    """The bodies' rows, their reference points ``(3, P)``, the unknowns and their wrenches
+    on the bodies ``(P, 6B, K)``."""
+    rows = {b: i for i, b in enumerate(sorted(frames))}
+    refs = {b: place.point(ref_points[b]).p for b in rows}
+    columns = [c for j in joints for c in _joint_columns(j, place)]
+    columns += [_drive_column(d, place) for d in drives]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        a = _matrix(columns, rows, refs)
+    return rows, refs, columns, a
+
+
+def _checked(a: Array, rhs: Array, good: NDArray[np.bool_], columns: list[Column],
+             place: Placement3, analogs: dict, rows: dict[int, int],
+             ref_points: dict[int, PointOn]) -> tuple[Array, Array, Array, float]:
+    """The scaled system (:func:`_scaled`, the mechanism's size ``L`` from the vectors'
+    lengths at the ``good`` positions), after the check that every joint and drive fits the
+    motion (:func:`_check_power`: a :class:`~mechloop.errors.ModelError` naming them)."""
+    kin = place.results
+    lengths = [np.abs(kin.value(f"r{v}"))[good] for v in kin.model.vectors]
+    size = max((float(x.max()) for x in lengths if x.size), default=1.0) or 1.0
+    sa, sb, col_scale = _scaled(np.where(good[:, None, None], a, 0.0),
+                                np.where(good[:, None], rhs, 0.0), columns, size)
+    problems: list[Problem] = []
+    _check_power(sa, columns, col_scale, size, analogs, rows, ref_points, good, problems)
+    if problems:
+        raise ModelError(problems)
+    return sa, sb, col_scale, size
+
+
+def check_joints_fit(joints: list[Joint3], drives: list[Drive3], place: Placement3,
+                     frames: dict[int, Frame], analogs: dict,
+                     ref_points: dict[int, PointOn]) -> None:
+    """Raise :class:`~mechloop.errors.ModelError` when a joint (or drive) does not fit the
+    motion: its reaction would do work on a motion of some argument (see the module) —
+    the check :func:`solve_reactions` makes first, without the loads (the structure of a
+    spatial model, :mod:`mechloop.structure.spatial_joints`)."""
+    _, _, columns, a = _unknowns(joints, drives, place, frames, ref_points)
+    good = ~place.results.broken & np.isfinite(a).all(axis=(1, 2))
+    rows = {b: i for i, b in enumerate(sorted(frames))}
+    _checked(a, np.zeros(a.shape[:2]), good, columns, place, analogs, rows, ref_points)
+
+
 def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement3,
                     frames: dict[int, Frame], terms, forces: list[Force3],
                     moments: list[Moment3], analogs: dict, ref_points: dict[int, PointOn],
@@ -275,22 +321,12 @@ def solve_reactions(joints: list[Joint3], drives: list[Drive3], place: Placement
     statically indeterminate system and idle motions driven by the loads."""
     kin = place.results
     n = kin.broken.size
-    rows = {b: i for i, b in enumerate(sorted(frames))}
-    refs = {b: place.point(ref_points[b]).p for b in rows}
-    columns = [c for j in joints for c in _joint_columns(j, place)]
-    columns += [_drive_column(d, place) for d in drives]
+    rows, refs, columns, a = _unknowns(joints, drives, place, frames, ref_points)
     with np.errstate(invalid="ignore", divide="ignore"):
-        a = _matrix(columns, rows, refs)
         rhs = newton_euler_rhs(terms, forces, moments, place, rows, refs, static=static)
     good = ~kin.broken & np.isfinite(a).all(axis=(1, 2)) & np.isfinite(rhs).all(axis=1)
-    lengths = [np.abs(kin.value(f"r{v}"))[good] for v in kin.model.vectors]
-    size = max((float(x.max()) for x in lengths if x.size), default=1.0) or 1.0
-    sa, sb, col_scale = _scaled(np.where(good[:, None, None], a, 0.0),
-                                np.where(good[:, None], rhs, 0.0), columns, size)
-    problems: list[Problem] = []
-    _check_power(sa, columns, col_scale, size, analogs, rows, ref_points, good, problems)
-    if problems:
-        raise ModelError(problems)
+    sa, sb, col_scale, size = _checked(a, rhs, good, columns, place, analogs, rows,
+                                       ref_points)
     by_name = {j.name: j for j in joints}
     k_count, r_count = len(columns), sa.shape[1]
     s = _singular_values(sa[good])

@@ -56,13 +56,16 @@ CLASSES = {"R": 5, "P": 5, "C": 4, "U": 4, "S": 3}
 class SpatialPair:
     """A kinematic pair: ``kind`` (R, P, C, U, S), its ``links`` ``(A, B)`` (0: ground),
     where it is (``point``, m, at the first position that closes) and, for R and C, its
-    ``axis`` (unit vector, model axes)."""
+    ``axis`` (unit vector, model axes); ``points`` and ``axes`` ``(3, P')`` are the same
+    over every position that closes (None: only the one known)."""
 
     name: str
     kind: str
     links: tuple[int, int]
     point: Array
     axis: Array | None
+    points: Array | None = None
+    axes: Array | None = None
 
     @property
     def klass(self) -> int:
@@ -87,6 +90,12 @@ class SpatialStructure:
     family: str | None
     W_family: int | None
     q: int
+    #: where the pairs come from: ``"contours"`` (found from the contours and bodies),
+    #: ``"joints"`` (the model's joints:) or ``"vectors"`` (no bodies: links from the
+    #: vectors, :mod:`.spatial_vectors`)
+    source: str = "contours"
+    #: with ``source == "vectors"``: each moving link's vectors
+    vector_links: dict[int, tuple[int, ...]] | None = None
 
     @property
     def n(self) -> int:
@@ -144,10 +153,10 @@ def _rank(m: Array) -> tuple[int, Array]:
     return int(np.sum(sv > RANK_RTOL * sv[0])), u
 
 
-def _relative(frames, a: int, b: int, ok) -> tuple[str, Array | None]:
+def _relative(frames, a: int, b: int, ok) -> tuple[str, Array | None, Array | None]:
     """``"R"`` with its axis (model axes, at the position of the largest relative
-    rotation), ``"U"``, ``"S"`` or ``"0"`` (no relative rotation) for the rotation of
-    link ``b`` relative to link ``a``.
+    rotation) and the axis over the positions ``ok`` ``(3, P')``, ``"U"``, ``"S"`` or
+    ``"0"`` (no relative rotation) for the rotation of link ``b`` relative to link ``a``.
 
     Full frames: the rank of ``ω_b − ω_a`` in ``a``'s frame.  A rod (its spin unknown):
     revolute when some direction ``k`` fixed in the other link is coplanar with the rod's
@@ -156,7 +165,7 @@ def _relative(frames, a: int, b: int, ok) -> tuple[str, Array | None]:
     axes_a, wa, rod_a = frames[a]
     axes_b, wb, rod_b = frames[b]
     if rod_a and rod_b:
-        return "S", None
+        return "S", None, None
     if rod_a:  # the rod second
         a, b = b, a
         axes_a, wa, axes_b, wb = axes_b, wb, axes_a, wa
@@ -166,21 +175,21 @@ def _relative(frames, a: int, b: int, ok) -> tuple[str, Array | None]:
     if not (rod_a or rod_b):
         rank, u = _rank(local)
         if rank == 0:
-            return "0", None
+            return "0", None, None
         if rank > 1:
-            return ("U" if rank == 2 else "S"), None
+            return ("U" if rank == 2 else "S"), None, None
         axis = np.einsum("iap,a->ip", frame, u[:, 0])
         k = int(np.argmax(np.linalg.norm(rel, axis=0)))
-        return "R", axis[:, k]
+        return "R", axis[:, k], axis
     line = np.einsum("iap,ip->ap", frame, axes_b[:, 0, ok])
     normals = np.cross(local, line, axis=0)
     rank, u = _rank(normals)
     if rank == 0:  # no swing: spin only, about the rod's own line
-        return "R", axes_b[:, 0, ok][:, 0]
+        return "R", axes_b[:, 0, ok][:, 0], axes_b[:, 0, ok]
     if rank == 3:
-        return "S", None
+        return "S", None, None
     axis = np.einsum("iap,a->ip", frame, u[:, -1])
-    return "R", axis[:, 0]
+    return "R", axis[:, 0], axis
 
 
 def _kind(relative: str, sliding: bool) -> str:
@@ -246,16 +255,18 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
         raise ModelError(problems)
     pairs = []
     for (a, b), points in sorted(found.items()):
-        relative, direction = _relative(frames, a, b, ok)
+        relative, direction, track = _relative(frames, a, b, ok)
         for k, (path, sliding) in enumerate(points):
             kind = _kind(relative, sliding)
-            axis = direction if kind in ("R", "C") else None
+            axis, axes = (direction, track) if kind in ("R", "C") else (None, None)
             if sliding and frames[a][2] and frames[b][2]:  # two rods on one line: a
                 # cylinder and its rod — they slide and turn about it (C)
-                kind, axis = "C", unit_direction(results, sliding_along[(a, b)]).p[:, ok][:, 0]
+                axes = unit_direction(results, sliding_along[(a, b)]).p[:, ok]
+                kind, axis = "C", axes[:, 0]
             name = f"{kind}{a}_{b}" + ("" if k == 0 else chr(ord("a") + k))
             pairs.append(SpatialPair(name, kind, (a, b), path[:, 0] if path.size else
-                                     place.tail(1).p[:, first], axis))
+                                     place.tail(1).p[:, first], axis,
+                                     path if path.size else None, axes))
     links = tuple(sorted(b for b in model.bodies if b != 0))
     reached, grew = {0}, True
     while grew:  # the links joined to the ground through the pairs found
@@ -276,21 +287,39 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
     return links, pairs, rods
 
 
+def _tracks(pairs: list[SpatialPair]) -> tuple[Array, Array]:
+    """Every pair's point and axis over the positions ``(K, 3, P')``: their tracks when
+    all pairs have them over the same positions, else the one position known."""
+    counts = {None if p.points is None or p.axes is None else p.points.shape[1]
+              for p in pairs}
+    if len(counts) == 1 and None not in counts:
+        return (np.stack([p.points for p in pairs]),  # type: ignore[misc]
+                np.stack([p.axes for p in pairs]))  # type: ignore[misc]
+    return (np.stack([p.point for p in pairs])[:, :, None],
+            np.stack([p.axis for p in pairs])[:, :, None])
+
+
 def _family(pairs: list[SpatialPair]) -> str | None:
     """``"spherical"`` when every pair is revolute and all axes meet at one point,
-    ``"planar"`` when they are all parallel, else None."""
+    ``"planar"`` when they are all parallel, else None — at every position the pairs are
+    known at (:attr:`SpatialPair.points`, :attr:`~SpatialPair.axes`), not at one."""
     if not pairs or any(p.kind != "R" or p.axis is None for p in pairs):
         return None
-    axes = np.array([p.axis for p in pairs])
-    points = np.array([p.point for p in pairs])
+    points, axes = _tracks(pairs)  # (K, 3, P)
+    axes = axes / np.linalg.norm(axes, axis=1, keepdims=True)
     size = max(float(np.max(np.abs(points))), 1e-12)
-    if np.all(np.linalg.norm(np.cross(axes, axes[0]), axis=1) <= AXES_RTOL):
+    if np.all(np.linalg.norm(np.cross(axes, axes[:1], axis=1), axis=1) <= AXES_RTOL):
         return "planar"
-    # the point nearest to every axis (least squares) and its distances to them
-    proj = np.eye(3)[None] - axes[:, :, None] * axes[:, None, :]
-    centre = np.linalg.lstsq(proj.reshape(-1, 3), np.einsum("kij,kj->ki", proj,
-                             points).reshape(-1), rcond=None)[0]
-    gaps = np.einsum("kij,kj->ki", proj, points - centre)
+    # at each position the point nearest to every axis (least squares: Σ P_k c = Σ P_k x_k
+    # with P_k = I − a_k a_kᵀ, regular when two axes are not parallel) and its distances
+    proj = np.eye(3)[None, :, :, None] - axes[:, :, None] * axes[:, None, :]  # (K,3,3,P)
+    lhs = np.moveaxis(proj.sum(axis=0), -1, 0)  # (P, 3, 3)
+    rhs = np.einsum("kijp,kjp->pi", proj, points)
+    sv = np.linalg.svd(lhs, compute_uv=False)
+    if np.any(sv[:, -1] <= AXES_RTOL * sv[:, 0]):  # all axes parallel there only
+        return None
+    centre = np.linalg.solve(lhs, rhs[:, :, None])[:, :, 0].T  # (3, P)
+    gaps = np.einsum("kijp,kjp->kip", proj, points - centre[None])
     return "spherical" if np.max(np.linalg.norm(gaps, axis=1)) <= AXES_RTOL * size else None
 
 
@@ -303,12 +332,28 @@ def _inputs(model: Model) -> int:
 
 
 def spatial_structure(model: Model, results=None) -> SpatialStructure:
-    """The structure of ``model`` (with spatial contours and bodies), from its kinematics
-    ``results`` (solved when None)."""
+    """The structure of ``model`` (with spatial contours), from its kinematics ``results``
+    (solved when None): the pairs of its ``joints:`` when it names them
+    (:mod:`.spatial_joints`: each checked against the motion), else the pairs found from
+    the contours and bodies, or without bodies from the links its vectors make
+    (:mod:`.spatial_vectors`)."""
+    from dataclasses import replace
+
     if results is None:
         from mechloop.solve.kinematics import solve
 
         results = solve(model)
+    if model.joints is not None and model.bodies:
+        from mechloop.structure.spatial_joints import declared_pairs
+
+        links, pairs, rods = declared_pairs(model, results)
+        return replace(count(links, pairs, rods, _inputs(model)), source="joints")
+    if not model.bodies:
+        from mechloop.structure.spatial_vectors import vector_pairs
+
+        links, pairs, rods, members = vector_pairs(model, results)
+        return replace(count(links, pairs, rods, _inputs(model)), source="vectors",
+                       vector_links=members)
     links, pairs, rods = spatial_pairs(model, results)
     return count(links, pairs, rods, _inputs(model))
 

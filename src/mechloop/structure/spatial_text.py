@@ -19,6 +19,13 @@ KINDS = {
 WORDS = {
     "en": {
         "links": "moving links n = {n}: {list}; the ground 0",
+        "from_joints": "the pairs are the model's joints (joints:), each checked against "
+                       "the motion of its links",
+        "from_vectors": "the model has no bodies: its links are taken from its vectors ("
+                        "{list}), the vectors of constant r, α and β are the ground; two "
+                        "links of one vector each meet in a spherical pair (name bodies: "
+                        "and joints: for other pairs)",
+        "link": "link {n}: vector(s) {list}",
         "pair": "  {name}: {kind} pair (class {k}) of links {a} and {b} at ({x}; {y}; {z}) "
                 "{unit}{axis}",
         "axis": ", axis ({x}; {y}; {z})",
@@ -44,6 +51,13 @@ WORDS = {
     },
     "ru": {
         "links": "подвижные звенья n = {n}: {list}; стойка 0",
+        "from_joints": "пары взяты из модели (joints:), каждая проверена по движению своих "
+                       "звеньев",
+        "from_vectors": "в модели нет звеньев (bodies:): звенья взяты из её векторов ("
+                        "{list}), векторы с постоянными r, α и β — стойка; два звена из "
+                        "одного вектора каждое соединены сферической парой (задайте bodies: "
+                        "и joints:, чтобы указать другие пары)",
+        "link": "звено {n}: векторы {list}",
         "pair": "  {name}: {kind} пара (класс {k}) звеньев {a} и {b} в точке ({x}; {y}; "
                 "{z}) {unit}{axis}",
         "axis": ", ось ({x}; {y}; {z})",
@@ -69,6 +83,10 @@ WORDS = {
 }
 
 
+#: A pair's coordinate smaller than this share of the largest is printed as 0.
+ZERO_RTOL = 1e-12
+
+
 def _number(value: float, lang: str) -> str:
     text = f"{value:.6g}"
     text = "0" if text in ("-0", "0") else text
@@ -85,9 +103,18 @@ def spatial_structure_lines(s: SpatialStructure, model: Model, lang: str = "en"
     w, kinds = WORDS[lang], KINDS[lang]
     unit = model.units.length
     lines = [w["links"].format(n=s.n, list=", ".join(map(str, s.links)))]
+    if s.source == "joints":
+        lines.append(w["from_joints"])
+    elif s.source == "vectors" and s.vector_links is not None:
+        lines.append(w["from_vectors"].format(list="; ".join(
+            w["link"].format(n=n, list=", ".join(map(str, vs)))
+            for n, vs in s.vector_links.items())))
+    # a coordinate below this is a solver's rounding of 0 (a point at the origin)
+    tiny = ZERO_RTOL * max((float(abs(c)) for p in s.pairs for c in p.point), default=0.0)
     for pair in s.pairs:
         factor = unit_factor(unit, "length")
-        x, y, z = (_number(float(c) / factor, lang) for c in pair.point)
+        x, y, z = (_number(float(c) / factor if abs(c) > tiny else 0.0, lang)
+                   for c in pair.point)
         axis = "" if pair.axis is None else w["axis"].format(
             **dict(zip("xyz", (_number(round(float(c), 9), lang) for c in pair.axis),
                        strict=True)))

@@ -61,7 +61,7 @@ def animate_spatial(results: Results, path: str | os.PathLike[str], *,
                     progress: Progress | None = None, views: str = "all",
                     elev: float = ELEV, azim: float = AZIM, dpi: int = 80,
                     width: float | None = None, numbers: bool = True, grid: bool = True,
-                    length_unit: str | None = None) -> Path:
+                    length_unit: str | None = None, lang: str | None = None) -> Path:
     """Save the 3-D plan of a spatial model at every position as an animation; returns
     the path.
 
@@ -72,7 +72,8 @@ def animate_spatial(results: Results, path: str | os.PathLike[str], *,
     ``fps``, ``progress`` as in :func:`mechloop.views.animation.animate`; ``views``,
     ``elev``, ``azim``, ``numbers``, ``grid`` and ``length_unit`` as in
     :func:`~mechloop.views.spatial_plan.plot_spatial_plan`; ``dpi`` and ``width``
-    (inches) set the frame size.
+    (inches) set the frame size; ``lang`` (``en`` or ``ru``, default ``MECHLOOP_LANG``):
+    the language of the ``.html`` page (the frames of pixels have no words).
     """
     target = Path(path)
     suffix = target.suffix.lower()
@@ -83,7 +84,8 @@ def animate_spatial(results: Results, path: str | os.PathLike[str], *,
         from mechloop.views.spatial_html import write_spatial_html
 
         return write_spatial_html(results, target, fps=fps, positions=positions, elev=elev,
-                                  azim=azim, length_unit=length_unit, progress=progress)
+                                  azim=azim, length_unit=length_unit, lang=lang,
+                                  progress=progress)
     scene = spatial_scene(results, length_unit=length_unit)
     chosen = (list(range(scene.count)) if positions is None
               else [check_position(scene, p) for p in positions])

@@ -2,13 +2,14 @@
 ``mechloop animate SPATIAL_MODEL -o cycle.html``.
 
 The page holds the viewer of the web application (``web/static/view3d.js``, with the
-strings of ``web/static/i18n.js``) and the solved positions as JSON, every script and style
-inlined: it works offline, from a file, without the server.  The view turns with the mouse
-(or a finger), zooms with the wheel, goes back to the viewing angles it was written with
-(``elev``, ``azim``: those of :mod:`mechloop.views.spatial_plan`, so the first view is the
-static figure's 3-D view in an orthographic projection) and shows the three projections; a
-position slider, play/pause (the model time, as the other animations) and frame steps; the
-chain breaks are said where they occur.
+strings of ``web/static/i18n.js`` and the numbers of ``numbers.js``) and the solved
+positions as JSON, every script and style inlined: it works offline, from a file, without
+the server.  The view turns with the mouse (or a finger), zooms with the wheel, goes back
+to the viewing angles it was written with (``elev``, ``azim``: those of
+:mod:`mechloop.views.spatial_plan`, so the first view is the static figure's 3-D view in an
+orthographic projection) and shows the three projections; a position slider, play/pause
+(the model time, as the other animations) and frame steps; the chain breaks are said where
+they occur.
 
 :func:`view_data` is the JSON both the file and the web page (``mechloop serve``) give the
 viewer: every vector's tail and head ``{x, y, z}`` over the positions in display length
@@ -31,6 +32,7 @@ from numpy.typing import NDArray
 
 from mechloop.messages import message_language
 from mechloop.output.atomic import atomic_write_text
+from mechloop.report.words import reason
 from mechloop.solve.results import Results
 from mechloop.views.animation import Progress, frame_interval
 from mechloop.views.figure import ViewError
@@ -79,7 +81,8 @@ def view_data(scene: SpatialScene, *, elev: float = ELEV, azim: float = AZIM,
     """What the 3-D viewer draws: ``unit``, ``elev``, ``azim`` (deg), ``vectors`` (each
     ``number``, ``color``, ``name``, ``tail`` and ``head`` ``{x, y, z}`` lists over the
     positions, ``None`` where the chain breaks), ``ground`` ``{x, y, z}`` (the fixed
-    points), ``broken`` and ``breaks`` (contour, module, reason, positions), ``time`` (s,
+    points), ``broken`` and ``breaks`` (contour, module, reason and its Russian
+    ``reason_ru``, positions), ``time`` (s,
     or ``None``).  ``decimals``: coordinates rounded so (every digit when ``None``)."""
     check_view("3d", elev, azim)
     results = scene.results
@@ -90,6 +93,7 @@ def view_data(scene: SpatialScene, *, elev: float = ELEV, azim: float = AZIM,
                         "tail": _end(scene.tails[n], decimals),
                         "head": _end(scene.heads[n], decimals)})
     breaks = [{"contour": b.contour, "module": b.module, "reason": b.reason,
+               "reason_ru": reason(b.reason, "ru"),  # the page's words in Russian
                "positions": [int(p) for p in b.positions]} for b in results.breaks]
     time = None if results.time is None else _column(np.asarray(results.time, float), None)
     return {"unit": scene.unit, "elev": float(elev), "azim": float(azim),
@@ -154,6 +158,7 @@ def page(data: dict[str, Any], *, title: str, lang: str = "en") -> str:
 </div>
 <p id="break-note" class="break" hidden></p>
 <script>{_script(_static("i18n.js"))}</script>
+<script>{_script(_static("numbers.js"))}</script>
 <script>{_script(_static("view3d.js"))}</script>
 <script>
 "use strict";

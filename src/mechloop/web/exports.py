@@ -159,7 +159,9 @@ def structure_of(document: Document, lang: str = "en",
     the ``groups`` (label, kind, class, links, pair letters, external and internal pairs,
     assembly variant, contour), the ``notes``, and the contour-by-contour ``description``
     of the vector model (:func:`mechloop.model.formula.describe_structure`).  A model
-    without bodies has only the description (``mechanism`` None).  The texts (explanation,
+    without bodies has only the description (``mechanism`` None); a model with spatial
+    contours the printed Somov–Malyshev structure as its description (``spatial`` true),
+    without bodies too when its vectors define its links.  The texts (explanation,
     notes, class, description) are in ``lang`` ('en' or 'ru').  ``analyzed``: the
     model's :func:`~mechloop.structure.analysis.analyze` when already made."""
     from mechloop.model.formula import describe_structure
@@ -169,14 +171,19 @@ def structure_of(document: Document, lang: str = "en",
     model = document.model
     try:
         description = describe_structure(model, lang)
-        if not model.bodies:
-            return {"mechanism": None, "description": description}
         if any(c.spatial for c in model.contours):  # issue 17: Somov–Malyshev as text
             from mechloop.structure.spatial import spatial_structure
             from mechloop.structure.spatial_text import spatial_structure_lines
 
-            return {"mechanism": None, "description": "\n".join(
-                spatial_structure_lines(spatial_structure(model), model, lang))}
+            try:  # without bodies: the links from the vectors, when they define them
+                lines = spatial_structure_lines(spatial_structure(model), model, lang)
+            except ModelError:
+                if model.bodies:
+                    raise
+                return {"mechanism": None, "description": description}
+            return {"mechanism": None, "spatial": True, "description": "\n".join(lines)}
+        if not model.bodies:
+            return {"mechanism": None, "description": description}
         mob, dec = analyze(model) if analyzed is None else analyzed
     except ModelError as exc:
         raise document.locate(exc) from None

@@ -511,4 +511,26 @@ ENTRIES: list[Entry] = [
      "группы Ассура) не применим к модели с пространственными контурами"),
     (r"use mechloop\.structure\.spatial\.spatial_structure\(model\)",
      "используйте 'mechloop.structure.spatial.spatial_structure(model)'"),
+    # the structure of a spatial model without bodies (structure/spatial_vectors.py)
+    (r"the model has no bodies, and vector (?P<v>\d+) changes length: the contours alone "
+     r"do not tell which links hold its ends \(a slider on its guide, a piston in its "
+     r"cylinder\)", "в модели нет звеньев ('bodies:'), а вектор {v} меняет длину: по одним "
+     "контурам нельзя сказать, какие звенья несут его концы (ползун на направляющей, "
+     "поршень в цилиндре)"),
+    (r"the model has no bodies, and vector (?P<v>\d+), linked to vector (?P<w>\d+), turns "
+     r"relative to it: the two are no rigid link, so the contours alone do not give the "
+     r"structure", "в модели нет звеньев ('bodies:'), а вектор {v}, связанный с вектором "
+     "{w}, поворачивается относительно него: они не образуют одного жёсткого звена, и по "
+     "одним контурам строение не определено"),
+    (r"the model has no bodies, and the link of vectors (?P<vs>[\d, ]+) is joined to the "
+     r"ground by no pair the contours give", "в модели нет звеньев ('bodies:'), а звено из "
+     "векторов {vs} не соединено со стойкой ни одной парой, которую дают контуры"),
+    (r"the model has no bodies, and three or more links taken from its vectors meet at one "
+     r"point of a contour: which pairs they form is ambiguous", "в модели нет звеньев "
+     "('bodies:'), а три звена или больше, взятые из её векторов, сходятся в одной точке "
+     "контура: какие пары они образуют, неоднозначно"),
+    (r"add bodies: naming the vectors of each link \(with ends: \{K: head\} for the link "
+     r"that holds the head of a vector K of varying length\), and joints: for its pairs",
+     lambda m: "задайте 'bodies:' с векторами каждого звена ('ends: {K: head}' для звена, "
+     "несущего конец вектора K переменной длины) и 'joints:' для его пар"),
 ]

@@ -793,7 +793,7 @@ function renderStructure() {
   }
   const m = answer.mechanism;
   if (!m) {
-    line(t("noBodies"));
+    if (!answer.spatial) line(t("noBodies"));  // a spatial model's text says its links
   } else {
     line(`${t("formula")}: ${m.formula}`).id = "structure-formula";
     line(`${t("mechanismClass")}: ${m.class || t("noClass")}`);

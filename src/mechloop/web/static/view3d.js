@@ -439,12 +439,17 @@
       slider.value = k;
       view.show(k, $("overlay").checked, traces());
       let label = t("position", { k, n });
-      if (data.time) label += ", " + t("time", { t: Number(data.time[k].toPrecision(4)) });
+      if (data.time) {  // the decimal comma in Russian (numbers.js, inlined by the file)
+        const time = Number(data.time[k].toPrecision(4));
+        label += ", " + t("time", { t: window.mechloopLocalText
+          ? window.mechloopLocalText(String(time)) : time });
+      }
       $("position-label").textContent = label;
       const note = $("break-note");
       if (data.broken[k]) {
         const reasons = data.breaks.filter((b) => b.positions.includes(k))
-          .map((b) => t("breakReason", b));
+          .map((b) => t("breakReason", Object.assign({}, b,
+            LANG === "ru" && b.reason_ru ? { reason: b.reason_ru } : {})));
         note.textContent = [t("broken", { k }), ...reasons].join("; ");
         note.hidden = false;
       } else {
