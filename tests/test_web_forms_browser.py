@@ -58,6 +58,14 @@ def _field(driver, keys: str):
                                f"#forms input[data-keys='{keys}']:not(.form-position)")
 
 
+def _value(driver, keys: str) -> str | None:
+    """A form field's value read in one script (the forms are redrawn when a solve
+    arrives: an element found first and read after may be gone)."""
+    return driver.execute_script(
+        "const e = document.querySelector(arguments[0]); return e ? e.value : null;",
+        f"#forms input[data-keys='{keys}']:not(.form-position)")
+
+
 def _type(driver, keys: str, value: str) -> None:
     box = _field(driver, keys)
     box.click()
@@ -84,7 +92,7 @@ def test_a_length_in_the_form_moves_the_diagram_and_the_plot(browser, server):  
     browser.find_element(By.ID, "slider").send_keys(Keys.HOME, *[Keys.ARROW_RIGHT] * 9)
     marker = float(browser.find_element(By.ID, "plot-marker").get_attribute("data-value"))
     _tab(browser, "vectors")
-    assert _field(browser, '["vectors",2,"r"]').get_property("value") == "0.2"
+    assert _value(browser, '["vectors",2,"r"]') == "0.2"
     solved = _solved(browser)
     _type(browser, '["vectors",2,"r"]', "0.26")
     edited = _changed(browser, SLIDER)
@@ -115,8 +123,8 @@ def test_a_length_in_the_form_moves_the_diagram_and_the_plot(browser, server):  
                            "e.value = e.value.replace('name: crank', 'name: handle');"
                            "e.dispatchEvent(new Event('input'));")
     _tab(browser, "vectors")
-    _wait(browser, lambda d: _field(d, '["vectors",1,"name"]').get_property("value")
-          == "handle", "the form did not follow the YAML")
+    _wait(browser, lambda d: _value(d, '["vectors",1,"name"]') == "handle",
+          "the form did not follow the YAML")
     _settled(browser)
     browser.save_screenshot(str(SHOTS / "web-forms-vectors.png"))
 
