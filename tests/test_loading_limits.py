@@ -138,10 +138,10 @@ def test_many_bad_table_entries_give_a_bounded_report(tmp_path):
 
     junk = "[" + ", ".join(["[1, 2]"] * 5000) + "]"
     path.write_text(CRANK.replace("{0: 0, 72: 360}", junk))
-    start = time.perf_counter()
+    start = time.process_time()  # the work done, whatever the machine's load
     with pytest.raises(ModelError) as info:
         load_model(path)
-    assert time.perf_counter() - start < 5.0
+    assert time.process_time() - start < 5.0
     problems = info.value.problems
     assert len(problems) == 51 and "more problems not listed" in problems[-1].message
 
