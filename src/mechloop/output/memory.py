@@ -69,7 +69,7 @@ def load_uint8(typingctx, address):
     return types.uint8(types.intp), codegen
 
 
-@njit(nogil=True, cache=True, inline="always")
+@njit(nogil=True, cache=True)
 def address_of(array) -> int:
     """The address of an array's first element as an intp (numba types ``ctypes.data`` as
     uintp: mixed with signed offsets it would turn into a float)."""

@@ -108,25 +108,26 @@ def shortest_decimal(ieee_mantissa: np.uint64, ieee_exponent: int) -> tuple[np.u
     vbl = _round_to_odd(g1, g0, cbl << h)
     vbr = _round_to_odd(g1, g0, cbr << h)
     s = vb >> _U2
-    if s >= _U10:  # one digit fewer: s rounded down or up to a multiple of 10
-        sp10 = _U10 * (s // _U10)
-        tp10 = sp10 + _U10
-        upin = vbl + odd <= sp10 << _U2
-        wpin = (tp10 << _U2) + odd <= vbr
-        if upin != wpin:
-            return _trimmed(sp10 if upin else tp10, k)
     t = s + _U1
     uin = vbl + odd <= s << _U2
     win = (t << _U2) + odd <= vbr
-    if uin != win:
-        return _trimmed(s if uin else t, k)
-    twice = (s + t) << _U1  # both inside: the nearer, ties to even
-    if vb < twice or (vb == twice and (s & _U1) == _U0):
-        return _trimmed(s, k)
-    return _trimmed(t, k)
+    sp10 = _U10 * (s // _U10)
+    tp10 = sp10 + _U10
+    upin = vbl + odd <= sp10 << _U2
+    wpin = (tp10 << _U2) + odd <= vbr
+    twice = (s + t) << _U1
+    if s >= _U10 and upin != wpin:  # one digit fewer: s rounded down or up to a multiple of 10
+        f = sp10 if upin else tp10
+    elif uin != win:
+        f = s if uin else t
+    elif vb < twice or (vb == twice and (s & _U1) == _U0):  # both inside: the nearer,
+        f = s                                                # ties to even
+    else:
+        f = t
+    return _trimmed(f, k)
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+@njit(nogil=True, cache=True, error_model="numpy")
 def _trimmed(f: np.uint64, e: int) -> tuple[np.uint64, int]:
     """f·10^e with f's trailing zeros moved into the exponent."""
     while True:

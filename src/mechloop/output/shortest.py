@@ -70,7 +70,7 @@ def _eight(v: np.uint64) -> np.uint64:
     return (q | ((merged - _U10 * q) << _U8)) + _ASCII_ZEROS
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+@njit(nogil=True, cache=True, error_model="numpy")
 def _put_digits(v: np.uint64, address: int, length: int) -> None:
     """The ``length`` decimal digits of v (``length`` = :func:`_length` of v) written at
     ``address``, in whole 8-byte words (up to 8 bytes past the digits are overwritten)."""
@@ -89,7 +89,7 @@ def _put_digits(v: np.uint64, address: int, length: int) -> None:
         store8(address + length - 8, _eight(rest - _U1E8 * high))
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+@njit(nogil=True, cache=True, error_model="numpy")
 def write_double_at(bits: np.uint64, base: int) -> int:
     """Write the finite double with bit pattern ``bits`` at memory address ``base`` as
     orjson writes it (see the module); the address after it.  SLACK bytes from ``base``
@@ -132,7 +132,7 @@ def write_double_at(bits: np.uint64, base: int) -> int:
     return _write_exponent(kk - 1, base + length + 1)
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+@njit(nogil=True, cache=True, error_model="numpy")
 def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
     """:func:`write_double_at` into ``out`` (uint8) from index ``at`` (SLACK bytes from
     it); the index after the text."""
@@ -140,7 +140,7 @@ def write_double(bits: np.uint64, out: np.ndarray, at: int) -> int:
     return write_double_at(bits, base + at) - base
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+@njit(nogil=True, cache=True, error_model="numpy")
 def _write_exponent(e: int, address: int) -> int:
     """``e+x`` or ``e-x`` (no leading zeros) at ``address``; the address after it."""
     store1(address, 101)  # "e"
@@ -159,7 +159,7 @@ def _write_exponent(e: int, address: int) -> int:
     return address + 3
 
 
-@njit(nogil=True, cache=True, error_model="numpy", inline="always")
+@njit(nogil=True, cache=True, error_model="numpy")
 def write_int_at(value: np.int64, address: int) -> int:
     """Write an int64 in decimal at memory address ``address`` (24 writable bytes); the
     address after it."""
