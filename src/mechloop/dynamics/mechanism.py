@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from mechloop.dynamics.holds import shared_junctions, vector_holds
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import HeadPoint, Joint, TailPoint, VectorPoint
@@ -148,18 +149,7 @@ def build_mechanism(model: Model, placement: Placement, *, determinate: bool = T
         return f"r{v}" in constant
 
     # ends held through a body's own vectors
-    holds: dict[tuple[int, str], set[int]] = defaultdict(set)
-    for number, body in model.bodies.items():
-        for v in body.vectors:
-            if fixed_length(v):
-                holds[(v, "tail")].add(number)
-                holds[(v, "head")].add(number)
-            else:
-                holds[(v, body.ends.get(v, "tail"))].add(number)
-    for v in model.vectors:
-        if v not in member and fixed_length(v) and f"a{v}" in constant:
-            holds[(v, "tail")].add(0)
-            holds[(v, "head")].add(0)
+    holds = vector_holds(model, constant)
     scale = _size(model, placement)
     frames = _frames(model, placement, holds, scale, problems)
 
@@ -434,27 +424,13 @@ def _given_pairs(model: Model, problems: list[Problem]) -> list[Pair]:
 def _inferred_pairs(model, placement, holds, member, scale, problems) -> list[Pair]:
     found: dict[tuple[int, int], list[tuple[PointOn, Motion]]] = defaultdict(list)
     pairs: list[Pair] = []
-    for ci, contour in enumerate(model.contours):
-        vectors = contour.vectors
-        for i, v in enumerate(vectors):
-            before = vectors[i - 1]
-            owners = holds.get((before, "head"), set()) | holds.get((v, "tail"), set())
-            if len(owners) < 2:
-                continue
-            if len(owners) > 2:
-                problems.append(Problem(
-                    ("contours", ci, "vectors", i),
-                    f"bodies {', '.join(map(str, sorted(owners)))} all hold the point where "
-                    f"vector {before} ends and vector {v} starts: which pairs they form is "
-                    "ambiguous", "name the kinematic pairs in joints:"))
-                continue
-            key = tuple(sorted(owners))
-            point = TailPoint(tail=v)
-            motion = placement.tail(v)
-            if any(np.nanmax(np.abs(motion.z - m.z), initial=0.0) <= SAME_POINT_RTOL * scale
-                   for _, m in found[key]):
-                continue
-            found[key].append((point, motion))
+    for v, key in shared_junctions(model, holds, problems):
+        point = TailPoint(tail=v)
+        motion = placement.tail(v)
+        if any(np.nanmax(np.abs(motion.z - m.z), initial=0.0) <= SAME_POINT_RTOL * scale
+               for _, m in found[key]):
+            continue
+        found[key].append((point, motion))
     for (b1, b2), points in found.items():
         if len(points) > 1:
             problems.append(Problem(
