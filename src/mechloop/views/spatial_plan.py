@@ -40,8 +40,7 @@ from matplotlib.path import Path
 from mpl_toolkits.mplot3d import Axes3D, proj3d
 from numpy.typing import NDArray
 
-from mechloop.model.dynamic import HeadPoint, TailPoint
-from mechloop.model.units import UnitProblem, to_si, unit_factor
+from mechloop.model.units import UnitProblem, unit_factor
 from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.russian import keep_names, model_names
@@ -95,7 +94,9 @@ class SpatialScene:
 def spatial_scene(results: Results, *, length_unit: str | None = None) -> SpatialScene:
     """Place every vector of the solved spatial model ``results`` in 3-D, in
     ``length_unit`` (default: the model's).  Raises :class:`ViewError` for results that
-    are not spatial, an unknown unit, or contour starts that refer to each other."""
+    are not spatial or an unknown unit, :class:`~mechloop.errors.ModelError` for contour
+    starts that cannot be placed (that refer to each other in a cycle, or to a vector of
+    the contour itself or to none)."""
     if not callable(getattr(results, "components", None)):
         raise ViewError("a 3-D plan needs the results of a model with spatial contours",
                         "solve a model with 'spatial: true' contours by mechloop.solve, or "
@@ -112,50 +113,15 @@ def spatial_scene(results: Results, *, length_unit: str | None = None) -> Spatia
 
 
 def _place(results: Any) -> tuple[dict[int, Array], dict[int, Array]]:
-    """Tails and heads (m, ``(3, P)``) of every vector, each contour from its start."""
-    model = results.model
-    count = results.broken.size
-    vectors = {n: np.stack([np.broadcast_to(np.asarray(c[0], float), (count,))
-                            for c in results.components(n)]) for n in model.vectors}
-    contour_of = {abs(v): i for i, c in enumerate(model.contours) for v in c.vectors}
-    tails: dict[int, Array] = {}
-    heads: dict[int, Array] = {}
-
-    def place(index: int, visiting: tuple[int, ...]) -> None:
-        contour = model.contours[index]
-        if abs(contour.vectors[0]) in tails:
-            return
-        if index in visiting:
-            raise ViewError("the starts of contours refer to each other in a cycle",
-                            "start one of them at the origin or at fixed coordinates [x, y]")
-        start = contour.start
-        if isinstance(start, TailPoint | HeadPoint):
-            number = start.tail if isinstance(start, TailPoint) else start.head
-            if contour_of.get(number, index) == index:
-                raise ViewError(f"contour {index + 1} starts at vector {number}, which is "
-                                "in no other contour", "start a contour at a point of "
-                                "another contour, or at the origin")
-            place(contour_of[number], (*visiting, index))
-            point = (tails if isinstance(start, TailPoint) else heads)[number]
-        elif isinstance(start, tuple | list):
-            unit = model.units.length
-            xy = [to_si(c, "length", unit) for c in start]
-            point = np.array([xy[0], xy[1], 0.0])[:, None] + np.zeros((3, count))
-        else:
-            point = np.zeros((3, count))
-        for entry in contour.vectors:
-            n = abs(entry)
-            if entry < 0 and contour.spatial:  # subtracted: it ends at the point reached
-                heads[n], tails[n] = point, point - vectors[n]
-                point = tails[n]
-            else:
-                tails[n], heads[n] = point, point + vectors[n]
-                point = heads[n]
+    """Tails and heads (m, ``(3, P)``) of every vector, each contour from its start (the
+    walk of :class:`~mechloop.spatial.points.Placement3`, which raises a located
+    :class:`~mechloop.errors.ModelError` for a start that cannot be placed)."""
+    from mechloop.spatial.points import Placement3
 
     with np.errstate(invalid="ignore"):
-        for index in range(len(model.contours)):
-            place(index, ())
-    return tails, heads
+        place = Placement3(results)
+        numbers = results.model.vectors
+        return ({n: place.tail(n).p for n in numbers}, {n: place.head(n).p for n in numbers})
 
 
 def _ground(results: Results, tails: dict[int, Array], heads: dict[int, Array]) -> Array:
