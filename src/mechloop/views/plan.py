@@ -50,6 +50,7 @@ from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.labels import arrange_labels, settle
 from mechloop.views.russian import keep_names, model_names
+from mechloop.views.scene import VectorScene
 
 Complex = NDArray[np.complex128]
 Limits = tuple[float, float, float, float]
@@ -70,7 +71,7 @@ _POINT_ADAPTER: TypeAdapter[Any] = TypeAdapter(PointOn)
 
 
 @dataclass(frozen=True)
-class PlanScene:
+class PlanScene(VectorScene):
     """Everything a plan draws, in display units (``unit``), over positions ``0..N``.
 
     ``tails`` and ``heads``: complex ``x + iy`` of every vector's ends, shape ``(P,)``;
@@ -85,19 +86,6 @@ class PlanScene:
     tails: dict[int, Complex]
     heads: dict[int, Complex]
     ground: Complex
-
-    @property
-    def count(self) -> int:
-        """Number of positions ``P = N + 1``."""
-        return int(self.results.broken.size)
-
-    def vectors(self) -> list[int]:
-        return sorted(self.tails)
-
-    def color(self, number: int) -> tuple[float, float, float, float]:
-        """The colour of vector ``number`` (the same in every view)."""
-        index = self.vectors().index(number)
-        return matplotlib.colormaps["tab10"](index % 10)
 
     def to_display(self, z: Complex) -> Complex:
         """SI points (m) → display units."""

@@ -44,6 +44,7 @@ from mechloop.model.units import UnitProblem, unit_factor
 from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.russian import keep_names, model_names
+from mechloop.views.scene import VectorScene
 
 Array = NDArray[np.float64]
 
@@ -66,7 +67,7 @@ SAME_POINT_RTOL = 1e-9
 
 
 @dataclass(frozen=True)
-class SpatialScene:
+class SpatialScene(VectorScene):
     """Every vector's ends of a spatial model in display units (``unit``), over the
     positions ``0..N``: ``tails`` and ``heads`` ``{n: (3, P)}``, ``ground`` ``(G, 3)``
     (the fixed points), ``scale`` display units per metre."""
@@ -77,18 +78,6 @@ class SpatialScene:
     tails: dict[int, Array]
     heads: dict[int, Array]
     ground: Array
-
-    @property
-    def count(self) -> int:
-        """Number of positions ``P = N + 1``."""
-        return int(self.results.broken.size)
-
-    def vectors(self) -> list[int]:
-        return sorted(self.tails)
-
-    def color(self, number: int) -> tuple[float, float, float, float]:
-        """The colour of vector ``number`` (the same in every view)."""
-        return matplotlib.colormaps["tab10"](self.vectors().index(number) % 10)
 
 
 def spatial_scene(results: Results, *, length_unit: str | None = None) -> SpatialScene:
