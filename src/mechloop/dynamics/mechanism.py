@@ -28,6 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from mechloop.dynamics.holds import shared_junctions, vector_holds
+from mechloop.dynamics.mass_items import center_vector, mass_items
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import HeadPoint, Joint, TailPoint, VectorPoint
@@ -542,25 +543,14 @@ def _masses(model: Model, results, problems, designs: int = 1) -> list[Mass]:
     for number, body in model.bodies.items():
         if number == 0:
             continue
-        path = ("bodies", number)
-        items = [(path, body.mass, body.inertia, body.center)]
-        items += [((*path, "parts", i), p.mass, p.inertia, p.center)
-                  for i, p in enumerate(body.parts)]
-        for where, mass, inertia, center in items:
+        for item in mass_items(number, body):
+            where, mass, inertia, center = item
             m = _si(mass, "mass", units.mass, (*where, "mass"), problems)
             if m < 0:
                 problems.append(Problem((*where, "mass"), "a mass cannot be negative",
                                         "give a mass ≥ 0"))
-            if center is None:
-                if m > 0 or inertia != 0:
-                    problems.append(Problem(where, f"body {number} has a mass but no centre "
-                                            "of mass", "add center: {vector: K, share: 0.5}"))
-                continue
-            v = _point_vector(center)
-            if v not in body.vectors:
-                problems.append(Problem((*where, "center"), f"the centre of mass is on vector "
-                                        f"{v}, which is not in body {number}",
-                                        f"place it on one of {body.vectors}"))
+            v = center_vector(number, body, item, m, problems)
+            if v is None:
                 continue
             sliding = f"r{v}" not in results.constant
             held = body.ends.get(v, "tail")
@@ -602,11 +592,3 @@ def _masses(model: Model, results, problems, designs: int = 1) -> list[Mass]:
                                         "be negative", "give a value ≥ 0"))
             out.append(Mass(number, m, j, center))
     return out
-
-
-def _point_vector(point: PointOn) -> int:
-    if isinstance(point, TailPoint):
-        return point.tail
-    if isinstance(point, HeadPoint):
-        return point.head
-    return point.vector

@@ -40,7 +40,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from mechloop.errors import Problem
-from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint
+from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint, point_vector
 from mechloop.model.schema import ArgumentRole, Model
 from mechloop.spatial.points import Placement3
 
@@ -105,15 +105,6 @@ class Drive3:
             return zero, head, zero + np.cross(e1, e2)[:, None]
         beta = res.value(f"b{self.vector}")
         return zero, head, np.stack([-np.sin(beta), 0.0 * beta, np.cos(beta)])
-
-
-def point_vector(point: PointOn) -> int:
-    """The vector a point is given on."""
-    if isinstance(point, TailPoint):
-        return point.tail
-    if isinstance(point, HeadPoint):
-        return point.head
-    return point.vector
 
 
 def _unit_axis(values, path: tuple, problems: list[Problem]) -> Array | None:
