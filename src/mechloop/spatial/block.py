@@ -44,28 +44,20 @@ Array = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
-class Plan:
-    """The block's terms (one per vector) as integer arrays: ``row[t]`` the first
-    equation of the term's contour, ``dim[t]`` its number of equations (3 spatial, 2
-    planar), ``sign[t]`` ±1 (a subtracted vector); per letter ``k`` of r, α, β:
-    ``unknown[k, t]`` the unknown it is linked to (−1: known), ``scale[k, t]`` and
-    ``col[k, t]`` the known stack's columns of the link's scale and of the value (known)
-    or offset (linked).  ``angle[i]`` marks the angle unknowns."""
+class Plan(Terms):
+    """The block's terms (:class:`~mechloop.modules.coupled.Terms`: per term its first
+    equation, its number of equations — 3 spatial, 2 planar —, its sign and where its r,
+    α, β come from), the names of its unknowns and ``angle[i]``, which marks the angle
+    unknowns."""
 
     unknowns: tuple[str, ...]
-    row: NDArray[np.int64]
-    dim: NDArray[np.int64]
-    sign: NDArray[np.float64]
-    unknown: NDArray[np.int64]
-    scale: NDArray[np.int64]
-    col: NDArray[np.int64]
     angle: NDArray[np.bool_]
 
     @property
     def terms(self) -> Terms:
         """The terms as the compiled solver of :mod:`mechloop.modules.coupled` reads
-        them."""
-        return Terms(self.row, self.dim, self.sign, self.unknown, self.scale, self.col)
+        them: the plan itself."""
+        return self
 
 
 def solve_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
