@@ -30,6 +30,7 @@ from mechloop.model.dynamic import (
 )
 from mechloop.model.indicator import IndicatorValue
 from mechloop.model.units import UnitProblem, to_si
+from mechloop.spatial.directions import unit_of
 from mechloop.spatial.points import unit_direction
 
 Array = NDArray[np.float64]
@@ -62,13 +63,10 @@ class _State:
 
 
 def _unit(values, path: tuple, problems: list[Problem]) -> Array | None:
-    d = np.array([float(x) for x in values])
-    size = float(np.linalg.norm(d))
-    if not size > 0:
-        problems.append(Problem(path, "a direction needs a non-zero component",
-                                "give [x, y, z] with at least one component not 0"))
-        return None
-    return (d / size)[:, None]
+    """A given direction as a unit column ``(3, 1)`` (:func:`~mechloop.spatial.directions.
+    unit_of`)."""
+    d = unit_of(values, path, problems)
+    return None if d is None else d[:, None]
 
 
 def _magnitude(model, value, kind, unit, time, n, results, path, problems):
