@@ -46,6 +46,7 @@ from mechloop.spatial.bodies import (
     frame_vector,
     inertia_tensor,
     rod_symmetric,
+    vectors_defined,
 )
 from mechloop.spatial.joints import COMPONENTS, body_reference, build_drives3, build_joints3
 from mechloop.spatial.loads import Force3, Moment3, build_loads
@@ -171,12 +172,7 @@ def build_mechanism3(model: Model, results, problems: list[Problem]) -> Mechanis
     for number, body in model.bodies.items():
         if number == 0:
             continue
-        path = ("bodies", number)
-        missing = [v for v in body.vectors if v not in model.vectors]
-        if missing:
-            problems.append(Problem((*path, "vectors"), f"body {number} lists vector "
-                                    f"{missing[0]}, which is not defined",
-                                    f"use vectors of {sorted(model.vectors)}"))
+        if not vectors_defined(model, number, body, problems):
             continue
         second = frame_vector(results, number, body.vectors, problems)
         bodies[number] = (body.vectors, second)

@@ -106,17 +106,13 @@ class SpatialStructure:
 def _frames(model: Model, results, problems: list[Problem]):
     """Each link's axes ``(3, 3, P)``, angular velocity ``(3, P)`` and whether it is a
     rod; the ground's are the model axes and zero."""
-    from mechloop.spatial.bodies import body_frame, frame_vector
+    from mechloop.spatial.bodies import body_frame, frame_vector, vectors_defined
 
     count = results.positions.size
     frames = {0: (np.repeat(np.eye(3)[:, :, None], count, axis=2), np.zeros((3, count)),
                   False)}
     for number, body in model.bodies.items():
-        missing = [v for v in body.vectors if v not in model.vectors]
-        if missing:
-            problems.append(Problem(("bodies", number, "vectors"), f"body {number} lists "
-                                    f"vector {missing[0]}, which is not defined",
-                                    f"use vectors of {sorted(model.vectors)}"))
+        if not vectors_defined(model, number, body, problems):
             continue
         second = frame_vector(results, number, body.vectors, problems)
         frame = body_frame(results, body.vectors, second=second)
