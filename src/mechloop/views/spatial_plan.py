@@ -44,7 +44,7 @@ from mechloop.model.units import UnitProblem, unit_factor
 from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.russian import keep_names, model_names
-from mechloop.views.scene import VectorScene
+from mechloop.views.scene import VectorScene, check_position, check_positions
 
 Array = NDArray[np.float64]
 
@@ -173,17 +173,6 @@ def _all_points(scene: SpatialScene, positions: Sequence[int] | None = None) -> 
     pick = slice(None) if positions is None else list(positions)
     return [*(p[:, pick] for p in (*scene.tails.values(), *scene.heads.values())),
             scene.ground.T]
-
-
-def check_position(scene: SpatialScene, position: int) -> int:
-    """``position`` as an int in ``0..N``, or a :class:`ViewError`."""
-    if isinstance(position, bool) or not isinstance(position, int | np.integer):
-        raise ViewError(f"position {position!r} is not a position number",
-                        f"use an integer 0..{scene.count - 1}")
-    if not 0 <= int(position) < scene.count:
-        raise ViewError(f"position {position} is outside the model's positions",
-                        f"use 0..{scene.count - 1}")
-    return int(position)
 
 
 def check_view(views: str, elev: float, azim: float) -> None:
@@ -464,10 +453,7 @@ def plot_spatial_overlay(results: Results, positions: Iterable[int] | None = Non
     each other as faded lines, coloured by vector; broken positions are left out and
     named in the title."""
     scene = spatial_scene(results, length_unit=length_unit)
-    chosen = (list(range(scene.count)) if positions is None
-              else [check_position(scene, p) for p in positions])
-    if not chosen:
-        raise ViewError("no positions chosen", "give at least one position, or None for all")
+    chosen = check_positions(scene, positions)
     st = stage(scene, _box(scene, None, chosen), views=views, elev=elev, azim=azim,
                grid=grid, legend=_legend_handles(scene)[:len(scene.vectors())])
     keep_names(st.figure, model_names(scene.results.model))
