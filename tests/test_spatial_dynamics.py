@@ -209,6 +209,8 @@ def test_a_static_model_has_no_inertia_terms():
      "first vector"),
     (lambda d: d["bodies"][2].update(vectors=[2, 3]), ("bodies", 2, "vectors"),
      "turn relative to each other"),
+    (lambda d: d["bodies"][2].update(vectors=[2, 99]), ("bodies", 2, "vectors"),
+     "lists vector 99, which is not defined"),
     (lambda d: d["bodies"][2].update(center={"vector": 2, "share": 0.5, "across": 3}),
      ("bodies", 2, "center", "across"), "no side"),
     (lambda d: d["forces"][0].update(direction=[0, 0, 0]), ("forces", 0, "direction"),

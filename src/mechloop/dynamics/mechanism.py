@@ -27,6 +27,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from mechloop.dynamics.holds import shared_junctions, vector_holds
+from mechloop.dynamics.mass_items import center_vector, mass_items
 from mechloop.dynamics.points import Motion, Placement
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import HeadPoint, Joint, TailPoint, VectorPoint
@@ -148,18 +150,7 @@ def build_mechanism(model: Model, placement: Placement, *, determinate: bool = T
         return f"r{v}" in constant
 
     # ends held through a body's own vectors
-    holds: dict[tuple[int, str], set[int]] = defaultdict(set)
-    for number, body in model.bodies.items():
-        for v in body.vectors:
-            if fixed_length(v):
-                holds[(v, "tail")].add(number)
-                holds[(v, "head")].add(number)
-            else:
-                holds[(v, body.ends.get(v, "tail"))].add(number)
-    for v in model.vectors:
-        if v not in member and fixed_length(v) and f"a{v}" in constant:
-            holds[(v, "tail")].add(0)
-            holds[(v, "head")].add(0)
+    holds = vector_holds(model, constant)
     scale = _size(model, placement)
     frames = _frames(model, placement, holds, scale, problems)
 
@@ -434,27 +425,13 @@ def _given_pairs(model: Model, problems: list[Problem]) -> list[Pair]:
 def _inferred_pairs(model, placement, holds, member, scale, problems) -> list[Pair]:
     found: dict[tuple[int, int], list[tuple[PointOn, Motion]]] = defaultdict(list)
     pairs: list[Pair] = []
-    for ci, contour in enumerate(model.contours):
-        vectors = contour.vectors
-        for i, v in enumerate(vectors):
-            before = vectors[i - 1]
-            owners = holds.get((before, "head"), set()) | holds.get((v, "tail"), set())
-            if len(owners) < 2:
-                continue
-            if len(owners) > 2:
-                problems.append(Problem(
-                    ("contours", ci, "vectors", i),
-                    f"bodies {', '.join(map(str, sorted(owners)))} all hold the point where "
-                    f"vector {before} ends and vector {v} starts: which pairs they form is "
-                    "ambiguous", "name the kinematic pairs in joints:"))
-                continue
-            key = tuple(sorted(owners))
-            point = TailPoint(tail=v)
-            motion = placement.tail(v)
-            if any(np.nanmax(np.abs(motion.z - m.z), initial=0.0) <= SAME_POINT_RTOL * scale
-                   for _, m in found[key]):
-                continue
-            found[key].append((point, motion))
+    for v, key in shared_junctions(model, holds, problems):
+        point = TailPoint(tail=v)
+        motion = placement.tail(v)
+        if any(np.nanmax(np.abs(motion.z - m.z), initial=0.0) <= SAME_POINT_RTOL * scale
+               for _, m in found[key]):
+            continue
+        found[key].append((point, motion))
     for (b1, b2), points in found.items():
         if len(points) > 1:
             problems.append(Problem(
@@ -566,25 +543,14 @@ def _masses(model: Model, results, problems, designs: int = 1) -> list[Mass]:
     for number, body in model.bodies.items():
         if number == 0:
             continue
-        path = ("bodies", number)
-        items = [(path, body.mass, body.inertia, body.center)]
-        items += [((*path, "parts", i), p.mass, p.inertia, p.center)
-                  for i, p in enumerate(body.parts)]
-        for where, mass, inertia, center in items:
+        for item in mass_items(number, body):
+            where, mass, inertia, center = item
             m = _si(mass, "mass", units.mass, (*where, "mass"), problems)
             if m < 0:
                 problems.append(Problem((*where, "mass"), "a mass cannot be negative",
                                         "give a mass ≥ 0"))
-            if center is None:
-                if m > 0 or inertia != 0:
-                    problems.append(Problem(where, f"body {number} has a mass but no centre "
-                                            "of mass", "add center: {vector: K, share: 0.5}"))
-                continue
-            v = _point_vector(center)
-            if v not in body.vectors:
-                problems.append(Problem((*where, "center"), f"the centre of mass is on vector "
-                                        f"{v}, which is not in body {number}",
-                                        f"place it on one of {body.vectors}"))
+            v = center_vector(number, body, item, m, problems)
+            if v is None:
                 continue
             sliding = f"r{v}" not in results.constant
             held = body.ends.get(v, "tail")
@@ -626,11 +592,3 @@ def _masses(model: Model, results, problems, designs: int = 1) -> list[Mass]:
                                         "be negative", "give a value ≥ 0"))
             out.append(Mass(number, m, j, center))
     return out
-
-
-def _point_vector(point: PointOn) -> int:
-    if isinstance(point, TailPoint):
-        return point.tail
-    if isinstance(point, HeadPoint):
-        return point.head
-    return point.vector

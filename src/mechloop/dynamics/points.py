@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.errors import ModelError, Problem
+from mechloop.dynamics.placing import ContourPlacement
 from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint
 from mechloop.model.units import to_si
 from mechloop.solve.results import Results
@@ -39,6 +39,9 @@ class Motion:
 
     def __add__(self, other: Motion) -> Motion:
         return Motion(self.z + other.z, self.v + other.v, self.a + other.a)
+
+    def __sub__(self, other: Motion) -> Motion:
+        return Motion(self.z - other.z, self.v - other.v, self.a - other.a)
 
 
 @np.errstate(invalid="ignore", over="ignore")  # inf·0 at broken rows: NaN, marked broken
@@ -67,8 +70,9 @@ def offset_motion(results: Results, number: int, share: float, along: float,
                   (ddw + 2j * da * dw + 1j * dda * w - da * da * w) * e)
 
 
-class Placement:
-    """Where every vector of a solved model lies: tails and heads over positions.
+class Placement(ContourPlacement[Motion]):
+    """Where every vector of a solved model lies: tails and heads over positions (the
+    walk of :class:`~mechloop.dynamics.placing.ContourPlacement`).
 
     ``starts`` (optional) maps a contour's index to where it starts at every position,
     complex ``(P,)`` (m): the fixed start of each design when the positions are the
@@ -83,62 +87,15 @@ class Placement:
                               "spatial contours are not built yet (its points are in 3-D)",
                               "plot its parameters against the position (plot ... "
                               "parameters -n b3) or write the table with mechloop solve")
-        self.results = results
-        self._starts = dict(starts or {})
-        self._vectors = {n: vector_motion(results, n) for n in results.model.vectors}
-        self._tails: dict[int, Motion] = {}
-        self._contour_of = {v: i for i, c in enumerate(results.model.contours)
-                            for v in c.vectors}
-        for index in range(len(results.model.contours)):
-            self._place(index, ())
+        super().__init__(results, {n: vector_motion(results, n) for n in results.model.vectors},
+                         starts)
 
-    def _place(self, index: int, visiting: tuple[int, ...]) -> None:
-        contour = self.results.model.contours[index]
-        if contour.vectors[0] in self._tails:
-            return
-        if index in visiting:
-            raise ModelError([Problem(("contours", index, "start"),
-                                      "the starts of contours refer to each other in a cycle",
-                                      "start one of them at the origin or at fixed "
-                                      "coordinates [x, y]")])
-        start = self._start(index, contour.start, (*visiting, index))
-        tail = start
-        for number in contour.vectors:
-            self._tails[number] = tail
-            tail = tail + self._vectors[number]
+    def _at_rest(self, position: Complex | None) -> Motion:
+        zero = np.zeros(self.results.broken.size, dtype=complex)
+        return Motion(zero if position is None else position, zero, zero)
 
-    def _start(self, index: int, start, visiting: tuple[int, ...]) -> Motion:
-        n = self.results.broken.size
-        zero = np.zeros(n, dtype=complex)
-        if index in self._starts:
-            return Motion(self._starts[index], zero, zero)
-        if isinstance(start, str):
-            return Motion(zero, zero, zero)
-        if isinstance(start, tuple | list):
-            units = self.results.model.units.length
-            x, y = (to_si(c, "length", units) for c in start)
-            return Motion(np.full(n, complex(x, y)), zero, zero)
-        number = start.tail if isinstance(start, TailPoint) else start.head
-        if number not in self._contour_of:
-            raise ModelError([Problem(("contours", index, "start"),
-                                      f"vector {number} does not exist",
-                                      f"use one of {sorted(self._contour_of)}")])
-        other = self._contour_of[number]
-        if other == index:
-            raise ModelError([Problem(("contours", index, "start"),
-                                      f"vector {number} is in this contour",
-                                      "start a contour at a point of another contour")])
-        self._place(other, visiting)
-        return self.tail(number) if isinstance(start, TailPoint) else self.head(number)
-
-    def vector(self, number: int) -> Motion:
-        return self._vectors[number]
-
-    def tail(self, number: int) -> Motion:
-        return self._tails[number]
-
-    def head(self, number: int) -> Motion:
-        return self._tails[number] + self._vectors[number]
+    def _fixed(self, x: float, y: float) -> Complex:
+        return np.full(self.results.broken.size, complex(x, y))
 
     def point(self, where: TailPoint | HeadPoint | VectorPoint) -> Motion:
         """A point given as in a model file (model units converted to SI)."""

@@ -71,6 +71,15 @@ PointOn = Annotated[
     ),
 ]
 
+
+def point_vector(point: TailPoint | HeadPoint | VectorPoint) -> int:
+    """The number of the vector a point is given on (its tail, its head, or along it)."""
+    if isinstance(point, TailPoint):
+        return point.tail
+    if isinstance(point, HeadPoint):
+        return point.head
+    return point.vector
+
 #: A moment of inertia, or ``rod``: a slender rod about its middle, ``m·l²/12`` with ``l``
 #: the length of the vector that carries the centre (KDAM's m→Js button).
 Inertia = Scalar | Literal["rod"]

@@ -16,9 +16,9 @@ from dataclasses import dataclass, field
 from graphlib import CycleError, TopologicalSorter
 
 from mechloop.errors import Problem
+from mechloop.model.block_guess import read_guess
 from mechloop.model.roles import is_function
 from mechloop.model.schema import ArgumentRole, LinkRole, Model
-from mechloop.model.units import UnitProblem, to_si
 
 MODULE_SOLUTIONS = {"Pl1": 1, "Pl2": 1, "Pl3": 2, "Pl4": 2}
 
@@ -417,26 +417,16 @@ def find_blocks(model: Model, infos: list[ContourInfo], problems: list[Problem]
             unknowns.extend(mine)
         guess: dict[str, float] = {}
         for n in group:
-            contour = model.contours[n - 1]
-            for name, value in (contour.guess or {}).items():
-                path = ("contours", n - 1, "guess", name)
-                if not coupled:
-                    problems.append(Problem(path, f"contour {n} is solved in closed form "
-                                            f"(module {first.module}); a guess applies "
-                                            "only to a coupled block",
-                                            "remove 'guess' and choose the assembly with "
-                                            "'variant'"))
-                elif name not in unknowns:
-                    problems.append(Problem(path, f"{name} is not an unknown of the "
-                                            f"coupled block of contours "
-                                            f"{', '.join(map(str, group))}",
-                                            f"guess some of {', '.join(unknowns)}"))
-                else:
-                    kind = "length" if name[0] == "r" else "angle"
-                    try:
-                        guess[name] = to_si(value, kind, getattr(model.units, kind))
-                    except UnitProblem as exc:
-                        problems.append(Problem(path, exc.message, exc.hint))
+            if coupled:
+                read_guess(model, n, group, unknowns, guess, problems)
+                continue
+            for name in model.contours[n - 1].guess or {}:
+                problems.append(Problem(("contours", n - 1, "guess", name),
+                                        f"contour {n} is solved in closed form "
+                                        f"(module {first.module}); a guess applies "
+                                        "only to a coupled block",
+                                        "remove 'guess' and choose the assembly with "
+                                        "'variant'"))
         variant = next((by_number[n].variant for n in group
                         if by_number[n].variant != 1), 1)
         blocks.append(BlockInfo(number=i + 1, contours=tuple(group),

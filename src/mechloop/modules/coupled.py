@@ -36,9 +36,12 @@ solution: the velocity times the input's step), with twice ``|δ|`` as the step.
 break, later positions restart from the last good solution.
 
 The continuation is sequential along positions and runs compiled (numba): a block is
-described by integer and float arrays (where each vector's ``r`` and ``α`` come from — a
-known column, or an unknown with a scale column and an offset column), and one kernel
-call solves every design × position of a block with no Python loop.
+described by integer and float arrays (:class:`Terms`: where each vector's ``r`` and ``α``
+come from — a known column, or an unknown with a scale column and an offset column), and
+one kernel call solves every design × position of a block with no Python loop.  The same
+kernel solves the coupled blocks of models with spatial contours
+(:mod:`mechloop.spatial.block`), whose terms add three equations ``±r (cos α cos β,
+sin α, cos α sin β)`` per spatial contour.
 
 **Rates** are exact from the block Jacobian: the same linear systems as DESIGN §3 with the
 ``2k × 2k`` Jacobian (:func:`block_rates`).
@@ -49,6 +52,7 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 from numba import njit
@@ -101,37 +105,88 @@ class Plan:
     a_col: NDArray[np.int64]
     angle: NDArray[np.bool_]
 
+    @functools.cached_property
+    def terms(self) -> Terms:
+        """The terms as the compiled solver reads them (:class:`Terms`): every term
+        planar (2 equations from ``2·eq``, sign +1, no β)."""
+        count = self.eq.shape[0]
+        return Terms(row=2 * self.eq.astype(np.int64), dim=np.full(count, 2, dtype=np.int64),
+                     sign=np.ones(count),
+                     unknown=np.stack([self.r_unknown, self.a_unknown,
+                                       np.full(count, -1)]).astype(np.int64),
+                     scale=np.stack([self.r_scale, self.a_scale,
+                                     self.r_scale]).astype(np.int64),
+                     col=np.stack([self.r_col, self.a_col, self.r_col]).astype(np.int64))
+
+
+@dataclass(frozen=True)
+class Terms:
+    """A block's terms (one per vector) as the compiled solver reads them, for planar
+    and spatial contours alike: ``row[t]`` the first equation of the term's contour,
+    ``dim[t]`` its number of equations (2 planar, 3 spatial), ``sign[t]`` ±1 (−1: a
+    subtracted vector); per letter ``k`` (0 r, 1 α, 2 β): ``unknown[k, t]`` the unknown
+    it is linked to (−1: known), ``scale[k, t]`` and ``col[k, t]`` the known stack's
+    columns of the link's scale and of the value (known) or offset (linked).  Integer
+    arrays ``(T,)`` and ``(3, T)``; ``sign`` float ``(T,)``."""
+
+    row: NDArray[np.int64]
+    dim: NDArray[np.int64]
+    sign: NDArray[np.float64]
+    unknown: NDArray[np.int64]
+    scale: NDArray[np.int64]
+    col: NDArray[np.int64]
+
 
 @njit(cache=True, nogil=True)
-def _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J):  # pragma: no cover
-    """Closure residual ``F`` and Jacobian ``J`` of the block at ``u``."""
+def _value(K, r, c, u, unknown, scale, col, k, t):  # pragma: no cover - compiled
+    """Letter ``k`` (0 r, 1 α, 2 β) of term ``t`` at row ``r``, column ``c``: the known
+    column, or ``scale·u + offset`` for a parameter linked to an unknown."""
+    if unknown[k, t] >= 0:
+        return K[scale[k, t], r, c] * u[unknown[k, t]] + K[col[k, t], r, c]
+    return K[col[k, t], r, c]
+
+
+@njit(cache=True, nogil=True)
+def _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J):  # pragma: no cover
+    """Closure residual ``F`` and Jacobian ``J`` of the block at ``u`` (see
+    :meth:`Plan.terms`): a term of ``dim`` 2 adds ``±r (cos α, sin α)`` to its contour's
+    two equations from ``row``, one of ``dim`` 3 (a spatial contour's) adds ``±r (cos α
+    cos β, sin α, cos α sin β)`` to its three."""
     m = u.shape[0]
     for i in range(m):
         F[i] = 0.0
         for j in range(m):
             J[i, j] = 0.0
-    for t in range(eq.shape[0]):
-        if ru[t] >= 0:
-            r = K[rs[t], row, col] * u[ru[t]] + K[rc[t], row, col]
-        else:
-            r = K[rc[t], row, col]
-        if au[t] >= 0:
-            a = K[as_[t], row, col] * u[au[t]] + K[ac[t], row, col]
-        else:
-            a = K[ac[t], row, col]
-        c = math.cos(a)
-        s = math.sin(a)
-        e = 2 * eq[t]
-        F[e] += r * c
-        F[e + 1] += r * s
-        if ru[t] >= 0:
-            k = K[rs[t], row, col]
-            J[e, ru[t]] += k * c
-            J[e + 1, ru[t]] += k * s
-        if au[t] >= 0:
-            k = K[as_[t], row, col]
-            J[e, au[t]] -= k * r * s
-            J[e + 1, au[t]] += k * r * c
+    for t in range(row.shape[0]):
+        length = sign[t] * _value(K, r, c, u, unknown, scale, col, 0, t)
+        a = _value(K, r, c, u, unknown, scale, col, 1, t)
+        ca, sa = math.cos(a), math.sin(a)
+        e = row[t]
+        if dim[t] == 2:  # written out: the planar solver's hot path
+            F[e] += length * ca
+            F[e + 1] += length * sa
+            if unknown[0, t] >= 0:
+                k = sign[t] * K[scale[0, t], r, c]
+                J[e, unknown[0, t]] += k * ca
+                J[e + 1, unknown[0, t]] += k * sa
+            if unknown[1, t] >= 0:
+                k = K[scale[1, t], r, c] * length
+                J[e, unknown[1, t]] += k * -sa
+                J[e + 1, unknown[1, t]] += k * ca
+            continue
+        b = _value(K, r, c, u, unknown, scale, col, 2, t)
+        cb, sb = math.cos(b), math.sin(b)
+        d = (ca * cb, sa, ca * sb)
+        da = (-sa * cb, ca, -sa * sb)
+        db = (-ca * sb, 0.0, ca * cb)
+        for q in range(3):
+            F[e + q] += length * d[q]
+            if unknown[0, t] >= 0:
+                J[e + q, unknown[0, t]] += sign[t] * K[scale[0, t], r, c] * d[q]
+            if unknown[1, t] >= 0:
+                J[e + q, unknown[1, t]] += K[scale[1, t], r, c] * length * da[q]
+            if unknown[2, t] >= 0:
+                J[e + q, unknown[2, t]] += K[scale[2, t], r, c] * length * db[q]
 
 
 @njit(cache=True, nogil=True)
@@ -174,14 +229,15 @@ def _step(J, F, dx):  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size,
+def _newton(K, row, col, u, eq0, dim, sgn, unk, scl, src, angle, size,
             F, J, dx):  # pragma: no cover - compiled
-    """Newton's method from ``u`` (updated in place).  Returns ``(converged, det,
-    ratio)`` at the solution."""
+    """Newton's method from ``u`` (updated in place) on the block whose terms are
+    ``eq0 .. src`` (the fields of :class:`Terms`).  Returns ``(converged, det, ratio)``
+    at the solution."""
     m = u.shape[0]
     polished = False
     for _ in range(MAX_ITERATIONS):
-        _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J)
+        _evaluate(K, row, col, u, eq0, dim, sgn, unk, scl, src, F, J)
         if polished:
             res = 0.0
             for i in range(m):
@@ -205,17 +261,17 @@ def _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size,
 
 
 @njit(cache=True, nogil=True)
-def _size(K, row, col, ru, rc):  # pragma: no cover - compiled
+def _size(K, row, col, unk, src):  # pragma: no cover - compiled
     """The block's length scale: the sum of its known lengths (1 if none)."""
     total = 0.0
-    for t in range(ru.shape[0]):
-        if ru[t] < 0:
-            total += abs(K[rc[t], row, col])
+    for t in range(unk.shape[1]):
+        if unk[0, t] < 0:
+            total += abs(K[src[0, t], row, col])
     return total if total > 0 and math.isfinite(total) else 1.0
 
 
 @njit(cache=True, nogil=True)
-def _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size, starts, want,
+def _assemble(K, row, col, u, eq0, dim, sgn, unk, scl, src, angle, size, starts, want,
               guessed, guess, singular_sin, F, J, dx):  # pragma: no cover - compiled
     """An assembly at one position from the fixed starts: the converged regular solution
     nearest to the guess (if any unknown is guessed), else the first with the wanted
@@ -237,7 +293,7 @@ def _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size, starts, 
                 trial[i] = -math.pi + 2.0 * math.pi * starts[s, i]
             else:
                 trial[i] = 2.0 * size * starts[s, i]
-        ok, det, ratio = _newton(K, row, col, trial, eq, ru, rs, rc, au, as_, ac, angle,
+        ok, det, ratio = _newton(K, row, col, trial, eq0, dim, sgn, unk, scl, src, angle,
                                  size, F, J, dx)
         if not ok:
             continue
@@ -268,11 +324,12 @@ def _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle, size, starts, 
 
 
 @njit(cache=True, nogil=True)
-def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_start,
+def _continue(K, eq0, dim, sgn, unk, scl, src, angle, first, n_regular, extra_start,
               starts, want, guessed, guess, singular_sin,
               last, prev, run, sign, found, U, status, det_out,
               from_start, start_u, start_sign, track):  # pragma: no cover
-    """Every row (design) along the columns (positions) ``first..n_regular−1`` by
+    """Every row (design) of the block whose terms are ``eq0 .. src`` (the fields of
+    :class:`Terms`) along the columns (positions) ``first..n_regular−1`` by
     continuation, then the extra columns each from its nearest regular column
     ``extra_start`` — or, with ``from_start``, each from its own start ``start_u[row, j]``
     on the branch of determinant sign ``start_sign[row, j]`` (a NaN start: not solved).
@@ -301,9 +358,9 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
     tangent = np.empty(m)
     for row in range(n_rows):
         for col in range(first, n_regular):
-            size = _size(K, row, col, ru, rc)
+            size = _size(K, row, col, unk, src)
             if not found[row]:
-                code, det = _assemble(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
+                code, det = _assemble(K, row, col, u, eq0, dim, sgn, unk, scl, src, angle,
                                       size, starts, want, guessed, guess, singular_sin,
                                       F, J, dx)
                 status[row, col] = code
@@ -323,13 +380,13 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     u[i] = last[row, i]
             predicted = False
             if run[row] < 2:  # no line through two good columns: the tangent predictor
-                _evaluate(K, row, col, u, eq, ru, rs, rc, au, as_, ac, F, J)
+                _evaluate(K, row, col, u, eq0, dim, sgn, unk, scl, src, F, J)
                 d0, _ = _step(J, F, dx)
                 predicted = d0 != 0.0 and math.isfinite(d0)
                 for i in range(m):
                     tangent[i] = dx[i]
                     predicted = predicted and math.isfinite(dx[i])
-            ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
+            ok, det, ratio = _newton(K, row, col, u, eq0, dim, sgn, unk, scl, src, angle,
                                      size, F, J, dx)
             code = OK
             flip = False
@@ -385,8 +442,8 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                     usable = usable and math.isfinite(u[i])
                 if not usable:
                     continue
-                size = _size(K, row, col, ru, rc)
-                ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac,
+                size = _size(K, row, col, unk, src)
+                ok, det, ratio = _newton(K, row, col, u, eq0, dim, sgn, unk, scl, src,
                                          angle, size, F, J, dx)
                 if ok:
                     _settle(status, det_out, U, u, row, col, det, ratio, singular_sin,
@@ -409,8 +466,8 @@ def _continue(K, eq, ru, rs, rc, au, as_, ac, angle, first, n_regular, extra_sta
                 continue
             for i in range(m):
                 u[i] = U[row, near, i]
-            size = _size(K, row, col, ru, rc)
-            ok, det, ratio = _newton(K, row, col, u, eq, ru, rs, rc, au, as_, ac, angle,
+            size = _size(K, row, col, unk, src)
+            ok, det, ratio = _newton(K, row, col, u, eq0, dim, sgn, unk, scl, src, angle,
                                      size, F, J, dx)
             if ok:
                 _settle(status, det_out, U, u, row, col, det, ratio, singular_sin,
@@ -511,7 +568,18 @@ class Carry:
     det_end: Array
 
 
-def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
+class TermPlan(Protocol):
+    """What :func:`continue_block` reads of a block's plan: a planar :class:`Plan` or a
+    :class:`mechloop.spatial.block.Plan`."""
+
+    unknowns: tuple[str, ...]
+    angle: NDArray[np.bool_]
+
+    @property
+    def terms(self) -> Terms: ...
+
+
+def continue_block(plan: TermPlan, known: Array, *, want: int, guess: dict[int, float],
                    singular_sin: float, carry: Carry | None = None,
                    n_regular: int | None = None,
                    extra_start: NDArray[np.int64] | None = None,
@@ -568,8 +636,9 @@ def continue_block(plan: Plan, known: Array, *, want: int, guess: dict[int, floa
     values = np.zeros(m)
     for i, v in guess.items():
         guessed[i], values[i] = True, v
-    _continue(np.ascontiguousarray(known), plan.eq, plan.r_unknown, plan.r_scale,
-              plan.r_col, plan.a_unknown, plan.a_scale, plan.a_col, plan.angle, first,
+    terms = plan.terms
+    _continue(np.ascontiguousarray(known), terms.row, terms.dim, terms.sign, terms.unknown,
+              terms.scale, terms.col, plan.angle, first,
               n_regular, extra, start_points(m), int(want), guessed, values,
               float(singular_sin), carry.last, carry.prev, carry.run, carry.sign,
               carry.found, U, status, det, extra_from is not None, start_u, start_sign,

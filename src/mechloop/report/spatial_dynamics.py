@@ -34,12 +34,6 @@ Array = NDArray[np.float64]
 MAX_CENTRES = 6
 
 
-def _linear(dyn: SpatialDynamics) -> bool:
-    """Whether the (first) argument is a length (the reduced mass, a balancing force)."""
-    k = next(iter(dyn.balancing))
-    return dyn.kinematics.argument_kinds[k] == "length"
-
-
 def body_table3(dyn: SpatialDynamics, model: Model, shown: Shown, w: dict[str, str]
                 ) -> Table:
     """Each lumped mass: body, name, m, the tensor's axial moments and its products of
@@ -141,33 +135,19 @@ def masses_section3(dyn: SpatialDynamics, model: Model, shown: Shown, w: dict[st
 
 
 def _position(dyn: SpatialDynamics):
-    from mechloop.views.curves import Series
+    from mechloop.views.spatial_dynamics import x_series
 
-    return Series("position", dyn.kinematics.positions.astype(float), None)
+    return x_series(dyn, "position")
 
 
 def plot_reduced3(dyn: SpatialDynamics, display: Display):
     """``J_red`` and ``dJ_red`` (top) and ``M_red`` (bottom) over the positions;
-    ``m_red``, ``dm_red``, ``F_red`` for a length argument."""
-    from mechloop.views.curves import Series, draw_curves
-    from mechloop.views.figure import new_figure
-    from mechloop.views.russian import keep_names, model_names
+    ``m_red``, ``dm_red``, ``F_red`` for a length argument: the figure of
+    :func:`mechloop.views.spatial_dynamics.plot_reduced3`."""
+    from mechloop.views import spatial_dynamics
 
     assert dyn.reduced is not None
-    inertia, slope, load = dyn.reduced
-    if _linear(dyn):
-        curves = [Series("m_red", inertia, "mass"), Series("dm_red", slope, "mass/length"),
-                  Series("F_red", load, "force")]
-    else:
-        curves = [Series("J_red", inertia, "inertia"),
-                  Series("dJ_red", slope, "inertia/angle"), Series("M_red", load, "moment")]
-    figure = keep_names(new_figure(8.0, 7.0), model_names(dyn.kinematics.model))
-    top, bottom = figure.subplots(2, 1, sharex=True)
-    draw_curves(top, _position(dyn), curves[:2], display, xlabel=False)
-    top.set_title("reduced inertia and its derivative")
-    draw_curves(bottom, _position(dyn), curves[2:], display)
-    bottom.set_title("reduced load")
-    return figure
+    return spatial_dynamics.plot_reduced3(dyn, display=display)
 
 
 def plot_balancing3(dyn: SpatialDynamics, display: Display):
@@ -354,6 +334,8 @@ def conclusion3(dyn: SpatialDynamics | None, results, name: str, shown: Shown,
     """The conclusion: the output parameter and the breaks (as the planar report), then
     the peak balancing loads, the peak reaction force and moment (with joints), the
     reduced inertia and the kinetic energy."""
+    from mechloop.views.spatial_dynamics import length_argument
+
     out = kinematic_lines(results, name, shown, w)
     if dyn is None:
         return out
@@ -367,7 +349,7 @@ def conclusion3(dyn: SpatialDynamics | None, results, name: str, shown: Shown,
     if dyn.reduced is not None:
         from mechloop.report.conclusion import reduced_range
 
-        out += reduced_range(_linear(dyn), dyn.reduced[0], dyn.reduced[1], shown, w)
+        out += reduced_range(length_argument(dyn), dyn.reduced[0], dyn.reduced[1], shown, w)
     energy = finite_span(dyn.kinetic_energy)
     if not dyn.static and energy is not None:
         scale = max(map(abs, energy))

@@ -47,7 +47,11 @@ unknowns and follows a branch over the positions (a fixed variant, or continuity
 (the model side: :mod:`mechloop.model.spatial`, :mod:`mechloop.model.plane`).  Not yet
 here: coupled spatial blocks, many designs at once, views.  Dynamics: :mod:`.bodies`,
 :mod:`.loads`, :mod:`.dynamics` (virtual power), :mod:`.joints` and :mod:`.reactions`
-(the joints' reactions by the Newton–Euler equations, :mod:`.determinacy`).
+(the joints' reactions by the Newton–Euler equations, :mod:`.determinacy`);
+:mod:`.directions` reads a given direction or axis.  What the planar and the spatial
+mechanism share lives in :mod:`mechloop.dynamics` (:mod:`~mechloop.dynamics.placing`,
+:mod:`~mechloop.dynamics.holds`, :mod:`~mechloop.dynamics.mass_items`), and a coupled
+block is solved by the planar kernel (:mod:`mechloop.modules.coupled`).
 
 Shared helpers: :mod:`.roots` (``a cos θ + b sin θ = c``, quadratics), :mod:`.quartic`
 (real roots of a trigonometric polynomial of any degree by batched companion

@@ -6,11 +6,12 @@ raw closure equations solved together — 3 per spatial contour,
 ``Σ ±r_i (cos α_i cos β_i, sin α_i, cos α_i sin β_i) = 0``, and 2 per planar contour in
 its plane's axes, ``Σ r_i (cos α_i, sin α_i) = 0`` — for the block's unknowns (3 per
 spatial contour, 2 per planar one) by Newton's method with continuation over the
-positions, compiled (numba) over every design × position with no Python loop, exactly as
-the planar coupled solver does: the same Newton step (:func:`mechloop.modules.coupled.
-_step`, Gaussian elimination with the determinant and the Hadamard ratio ``|det J| /
-Π ‖column‖``), the same fixed starts (:func:`~mechloop.modules.coupled.start_points`), the
-same tolerances and the same break statuses (:data:`~mechloop.modules.coupled.REASONS`).
+positions, compiled (numba) over every design × position with no Python loop, by the
+planar coupled solver itself (:func:`mechloop.modules.coupled.continue_block` over the
+block's :class:`~mechloop.modules.coupled.Terms`): the same Newton step (Gaussian
+elimination with the determinant and the Hadamard ratio ``|det J| / Π ‖column‖``), the
+same fixed starts (:func:`~mechloop.modules.coupled.start_points`), the same tolerances
+and the same break statuses (:data:`~mechloop.modules.coupled.REASONS`).
 
 **Position 0** starts from the contours' ``guess`` (the converged solution nearest to it),
 or without one from the fixed starts, keeping the first regular solution whose Jacobian
@@ -32,273 +33,31 @@ with ``b₁`` the closure's time derivative at the known rates, and ``J ü = −
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
 
-from mechloop.modules.coupled import (
-    DEAD,
-    JUMP,
-    JUMP_ANGLE,
-    JUMP_LENGTH,
-    MAX_ITERATIONS,
-    NO_CONVERGENCE,
-    OK,
-    RESIDUAL_TOL,
-    STEP_TOL,
-    _step,
-    start_points,
-)
+from mechloop.modules.coupled import OK, Terms, continue_block
 
 Array = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
-class Plan:
-    """The block's terms (one per vector) as integer arrays: ``row[t]`` the first
-    equation of the term's contour, ``dim[t]`` its number of equations (3 spatial, 2
-    planar), ``sign[t]`` ±1 (a subtracted vector); per letter ``k`` of r, α, β:
-    ``unknown[k, t]`` the unknown it is linked to (−1: known), ``scale[k, t]`` and
-    ``col[k, t]`` the known stack's columns of the link's scale and of the value (known)
-    or offset (linked).  ``angle[i]`` marks the angle unknowns."""
+class Plan(Terms):
+    """The block's terms (:class:`~mechloop.modules.coupled.Terms`: per term its first
+    equation, its number of equations — 3 spatial, 2 planar —, its sign and where its r,
+    α, β come from), the names of its unknowns and ``angle[i]``, which marks the angle
+    unknowns."""
 
     unknowns: tuple[str, ...]
-    row: NDArray[np.int64]
-    dim: NDArray[np.int64]
-    sign: NDArray[np.float64]
-    unknown: NDArray[np.int64]
-    scale: NDArray[np.int64]
-    col: NDArray[np.int64]
     angle: NDArray[np.bool_]
 
-
-@njit(cache=True, nogil=True)
-def _value(K, r, c, u, unknown, scale, col, k, t):  # pragma: no cover - compiled
-    if unknown[k, t] >= 0:
-        return K[scale[k, t], r, c] * u[unknown[k, t]] + K[col[k, t], r, c]
-    return K[col[k, t], r, c]
-
-
-@njit(cache=True, nogil=True)
-def _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J):  # pragma: no cover
-    """Closure residual ``F`` and Jacobian ``J`` of the block at ``u``."""
-    m = u.shape[0]
-    for i in range(m):
-        F[i] = 0.0
-        for j in range(m):
-            J[i, j] = 0.0
-    d = np.empty(3)
-    da = np.empty(3)
-    db = np.empty(3)
-    for t in range(row.shape[0]):
-        length = sign[t] * _value(K, r, c, u, unknown, scale, col, 0, t)
-        a = _value(K, r, c, u, unknown, scale, col, 1, t)
-        ca, sa = math.cos(a), math.sin(a)
-        if dim[t] == 3:
-            b = _value(K, r, c, u, unknown, scale, col, 2, t)
-            cb, sb = math.cos(b), math.sin(b)
-            d[0], d[1], d[2] = ca * cb, sa, ca * sb
-            da[0], da[1], da[2] = -sa * cb, ca, -sa * sb
-            db[0], db[1], db[2] = -ca * sb, 0.0, ca * cb
-        else:
-            d[0], d[1] = ca, sa
-            da[0], da[1] = -sa, ca
-            db[0], db[1] = 0.0, 0.0
-        e = row[t]
-        for q in range(dim[t]):
-            F[e + q] += length * d[q]
-            if unknown[0, t] >= 0:
-                J[e + q, unknown[0, t]] += sign[t] * K[scale[0, t], r, c] * d[q]
-            if unknown[1, t] >= 0:
-                J[e + q, unknown[1, t]] += K[scale[1, t], r, c] * length * da[q]
-            if dim[t] == 3 and unknown[2, t] >= 0:
-                J[e + q, unknown[2, t]] += K[scale[2, t], r, c] * length * db[q]
-
-
-@njit(cache=True, nogil=True)
-def _newton(K, r, c, u, row, dim, sign, unknown, scale, col, angle, size, F, J, dx
-            ):  # pragma: no cover - compiled
-    """Newton's method from ``u`` (in place): ``(converged, det, ratio)``, as
-    :func:`mechloop.modules.coupled._newton`."""
-    m = u.shape[0]
-    polished = False
-    for _ in range(MAX_ITERATIONS):
-        _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J)
-        if polished:
-            res = 0.0
-            for i in range(m):
-                res = max(res, abs(F[i]))
-            det, ratio = _step(J, F, dx)
-            return res <= RESIDUAL_TOL * size and math.isfinite(det), det, ratio
-        det, ratio = _step(J, F, dx)
-        if det == 0.0 or not math.isfinite(det):
-            return False, 0.0, 0.0
-        big = 0.0
-        for i in range(m):
-            big = max(big, abs(dx[i]) if angle[i] else abs(dx[i]) / size)
-        if not math.isfinite(big):
-            return False, 0.0, 0.0
-        factor = 1.0 if big <= 1.0 else 1.0 / big
-        for i in range(m):
-            u[i] += factor * dx[i]
-        if big <= STEP_TOL:
-            polished = True
-    return False, 0.0, 0.0
-
-
-@njit(cache=True, nogil=True)
-def _size(K, r, c, unknown, col):  # pragma: no cover - compiled
-    """The block's length scale: the sum of its known lengths (1 if none)."""
-    total = 0.0
-    for t in range(unknown.shape[1]):
-        if unknown[0, t] < 0:
-            total += abs(K[col[0, t], r, c])
-    return total if total > 0 and math.isfinite(total) else 1.0
-
-
-@njit(cache=True, nogil=True)
-def _assemble(K, r, c, u, row, dim, sign, unknown, scale, col, angle, size, starts, want,
-              guessed, guess, singular_sin, F, J, dx):  # pragma: no cover - compiled
-    """An assembly at one position from the fixed starts (see
-    :func:`mechloop.modules.coupled._assemble`): ``(status, det)``, ``u`` the solution."""
-    m = u.shape[0]
-    best = np.empty(m)
-    best_det = 0.0
-    best_dist = np.inf
-    any_guess = False
-    for i in range(m):
-        any_guess = any_guess or guessed[i]
-    dead_seen = False
-    trial = np.empty(m)
-    for s in range(starts.shape[0]):
-        for i in range(m):
-            if guessed[i]:
-                trial[i] = guess[i]
-            elif angle[i]:
-                trial[i] = -math.pi + 2.0 * math.pi * starts[s, i]
-            else:
-                trial[i] = 2.0 * size * starts[s, i]
-        ok, det, ratio = _newton(K, r, c, trial, row, dim, sign, unknown, scale, col,
-                                 angle, size, F, J, dx)
-        if not ok:
-            continue
-        if not ratio > singular_sin:
-            dead_seen = True
-            continue
-        if any_guess:
-            dist = 0.0
-            for i in range(m):
-                if guessed[i]:
-                    d = trial[i] - guess[i]
-                    if angle[i]:
-                        d = (d + math.pi) % (2.0 * math.pi) - math.pi
-                    else:
-                        d /= size
-                    dist += d * d
-            if dist < best_dist:
-                best_dist = dist
-                best_det = det
-                best[:] = trial
-        elif want == 0 or (det > 0) == (want > 0):
-            u[:] = trial
-            return OK, det
-    if any_guess and best_dist < np.inf:
-        u[:] = best
-        return OK, best_det
-    return DEAD if dead_seen else NO_CONVERGENCE, 0.0
-
-
-@njit(cache=True, nogil=True)
-def _continue(K, row, dim, sign, unknown, scale, col, angle, starts, want, guessed, guess,
-              singular_sin, track, U, status, det_out):  # pragma: no cover - compiled
-    """Every row (design) of ``K`` along its columns (positions) by continuation."""
-    n_rows = K.shape[1]
-    n_cols = K.shape[2]
-    m = angle.shape[0]
-    F = np.empty(m)
-    J = np.empty((m, m))
-    dx = np.empty(m)
-    u = np.empty(m)
-    last = np.empty(m)
-    prev = np.empty(m)
-    tangent = np.empty(m)
-    for r in range(n_rows):
-        found = False
-        run = 0
-        branch = 0
-        for c in range(n_cols):
-            size = _size(K, r, c, unknown, col)
-            if not found:
-                code, det = _assemble(K, r, c, u, row, dim, sign, unknown, scale, col,
-                                      angle, size, starts, want, guessed, guess,
-                                      singular_sin, F, J, dx)
-                status[r, c] = code
-                det_out[r, c] = det
-                for i in range(m):
-                    U[r, c, i] = u[i] if code == OK else math.nan
-                if code == OK:
-                    found = True
-                    branch = 1 if det > 0 else -1
-                    last[:] = u
-                    run = 1
-                continue
-            for i in range(m):
-                u[i] = 2.0 * last[i] - prev[i] if run >= 2 else last[i]
-            predicted = False
-            if run < 2:  # the first-order predictor: the tangent step from the last one
-                _evaluate(K, r, c, u, row, dim, sign, unknown, scale, col, F, J)
-                d0, _ = _step(J, F, dx)
-                predicted = d0 != 0.0 and math.isfinite(d0)
-                for i in range(m):
-                    tangent[i] = dx[i]
-                    predicted = predicted and math.isfinite(dx[i])
-            ok, det, ratio = _newton(K, r, c, u, row, dim, sign, unknown, scale, col,
-                                     angle, size, F, J, dx)
-            code = OK
-            flip = False
-            if not ok:
-                code = NO_CONVERGENCE
-            elif not ratio > singular_sin:
-                code = DEAD
-            else:
-                if (det > 0) != (branch > 0):
-                    if track:
-                        flip = True
-                    else:
-                        code = JUMP
-                if code == OK and run >= 2:
-                    for i in range(m):
-                        d = abs(u[i] - (2.0 * last[i] - prev[i]))
-                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
-                                    2.0 * abs(last[i] - prev[i]))
-                        if d > limit:
-                            code = JUMP
-                elif code == OK and predicted:
-                    for i in range(m):
-                        d = abs(u[i] - (last[i] + tangent[i]))
-                        limit = max(JUMP_ANGLE if angle[i] else JUMP_LENGTH * size,
-                                    2.0 * abs(tangent[i]))
-                        if d > limit:
-                            code = JUMP
-                elif code == OK and flip:
-                    code = JUMP
-            if code == OK and flip:
-                branch = 1 if det > 0 else -1
-            status[r, c] = code
-            det_out[r, c] = det if code == OK else 0.0
-            if code == OK:
-                prev[:] = last
-                last[:] = u
-                run += 1
-                for i in range(m):
-                    U[r, c, i] = u[i]
-            else:
-                run = 0
-                for i in range(m):
-                    U[r, c, i] = math.nan
+    @property
+    def terms(self) -> Terms:
+        """The terms as the compiled solver of :mod:`mechloop.modules.coupled` reads
+        them: the plan itself."""
+        return self
 
 
 def solve_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
@@ -310,18 +69,8 @@ def solve_block(plan: Plan, known: Array, *, want: int, guess: dict[int, float],
     the determinant sign of the first assembly (−1 variant 1, +1 variant 2); ``guess``
     approximate unknowns (SI) by index; ``track`` follows the assembly through a sign
     change of the determinant (``variant: auto``)."""
-    _, n_rows, n_cols = known.shape
-    m = len(plan.unknowns)
-    U = np.empty((n_rows, n_cols, m))
-    status = np.empty((n_rows, n_cols), dtype=np.int8)
-    det = np.zeros((n_rows, n_cols))
-    guessed = np.zeros(m, dtype=bool)
-    values = np.zeros(m)
-    for i, v in guess.items():
-        guessed[i], values[i] = True, v
-    _continue(np.ascontiguousarray(known, dtype=float), plan.row, plan.dim, plan.sign,
-              plan.unknown, plan.scale, plan.col, plan.angle, start_points(m), int(want),
-              guessed, values, float(singular_sin), bool(track), U, status, det)
+    U, status, det, _ = continue_block(plan, known, want=want, guess=guess,
+                                       singular_sin=singular_sin, track=track)
     return U, status, det
 
 

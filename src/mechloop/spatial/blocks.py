@@ -17,9 +17,9 @@ contours may carry a ``guess`` of some of them (the assembly nearest to it).
 from __future__ import annotations
 
 from mechloop.errors import Problem
+from mechloop.model.block_guess import read_guess
 from mechloop.model.schema import Model
 from mechloop.model.structure import COUPLED, BlockInfo, ContourInfo, _components
-from mechloop.model.units import UnitProblem, to_si
 
 
 def coupled_blocks(model: Model, infos: list[ContourInfo],
@@ -52,19 +52,7 @@ def coupled_blocks(model: Model, infos: list[ContourInfo],
                                         "negative Jacobian determinant) or 2 (positive); "
                                         f"variant {contour.variant!r} does not apply",
                                         "set 'variant' to 1, 2 or 'auto'"))
-            for name, value in (contour.guess or {}).items():
-                path = ("contours", n - 1, "guess", name)
-                if name not in unknowns:
-                    problems.append(Problem(path, f"{name} is not an unknown of the "
-                                            "coupled block of contours "
-                                            f"{', '.join(map(str, group))}",
-                                            f"guess some of {', '.join(unknowns)}"))
-                    continue
-                kind = "length" if name[0] == "r" else "angle"
-                try:
-                    guess[name] = to_si(value, kind, getattr(model.units, kind))
-                except UnitProblem as exc:
-                    problems.append(Problem(path, exc.message, exc.hint))
+            read_guess(model, n, group, unknowns, guess, problems)
         variant = next((by_number[n].variant for n in group if by_number[n].variant != 1), 1)
         blocks.append(BlockInfo(number=i + 1, contours=tuple(group), unknowns=unknowns,
                                 needs=tuple(sorted({block_of[m] for n in group

@@ -46,6 +46,17 @@ PARALLEL_SIN = 1e-6
 RIGID_TOL = 1e-9
 
 
+
+def vectors_defined(model, number: int, body, problems: list[Problem]) -> bool:
+    """Whether every vector body ``number`` lists is a vector of ``model``; else a
+    problem at ``("bodies", number, "vectors")`` naming the first that is not."""
+    missing = [v for v in body.vectors if v not in model.vectors]
+    if missing:
+        problems.append(Problem(("bodies", number, "vectors"), f"body {number} lists "
+                                f"vector {missing[0]}, which is not defined",
+                                f"use vectors of {sorted(model.vectors)}"))
+    return not missing
+
 @dataclass(frozen=True)
 class Frame:
     """A moving body's frame over positions: ``axes`` ``(3, 3, P)`` (columns e1, e2, e3),

@@ -33,6 +33,7 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
+from mechloop.dynamics.mass_items import center_vector, mass_items
 from mechloop.errors import ModelError, Problem
 from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint
 from mechloop.model.schema import ArgumentRole, Model
@@ -45,6 +46,7 @@ from mechloop.spatial.bodies import (
     frame_vector,
     inertia_tensor,
     rod_symmetric,
+    vectors_defined,
 )
 from mechloop.spatial.joints import COMPONENTS, body_reference, build_drives3, build_joints3
 from mechloop.spatial.loads import Force3, Moment3, build_loads
@@ -162,14 +164,6 @@ class SpatialDynamics:
         return pd.concat([frame, pd.DataFrame(cols, index=frame.index), flag], axis=1)
 
 
-def _point_vector(point) -> int:
-    if isinstance(point, TailPoint):
-        return point.tail
-    if isinstance(point, HeadPoint):
-        return point.head
-    return point.vector
-
-
 def build_mechanism3(model: Model, results, problems: list[Problem]) -> Mechanism3:
     """Bodies and masses of ``model`` (SI) checked against its kinematics ``results``."""
     units = model.units
@@ -178,19 +172,12 @@ def build_mechanism3(model: Model, results, problems: list[Problem]) -> Mechanis
     for number, body in model.bodies.items():
         if number == 0:
             continue
-        path = ("bodies", number)
-        missing = [v for v in body.vectors if v not in model.vectors]
-        if missing:
-            problems.append(Problem((*path, "vectors"), f"body {number} lists vector "
-                                    f"{missing[0]}, which is not defined",
-                                    f"use vectors of {sorted(model.vectors)}"))
+        if not vectors_defined(model, number, body, problems):
             continue
         second = frame_vector(results, number, body.vectors, problems)
         bodies[number] = (body.vectors, second)
-        items = [(path, body.mass, body.inertia, body.center)]
-        items += [((*path, "parts", i), p.mass, p.inertia, p.center)
-                  for i, p in enumerate(body.parts)]
-        for where, mass, inertia, center in items:
+        for item in mass_items(number, body):
+            where, mass, inertia, center = item
             try:
                 m = to_si(mass, "mass", units.mass)
             except UnitProblem as exc:
@@ -200,16 +187,8 @@ def build_mechanism3(model: Model, results, problems: list[Problem]) -> Mechanis
                 problems.append(Problem((*where, "mass"), "a mass cannot be negative",
                                         "give a mass ≥ 0"))
                 continue
-            if center is None:
-                if m > 0 or inertia != 0:
-                    problems.append(Problem(where, f"body {number} has a mass but no centre "
-                                            "of mass", "add center: {vector: K, share: 0.5}"))
-                continue
-            v = _point_vector(center)
-            if v not in body.vectors:
-                problems.append(Problem((*where, "center"), f"the centre of mass is on vector "
-                                        f"{v}, which is not in body {number}",
-                                        f"place it on one of {body.vectors}"))
+            v = center_vector(number, body, item, m, problems)
+            if v is None:
                 continue
             if isinstance(center, VectorPoint) and center.across != 0:
                 problems.append(Problem((*where, "center", "across"), "'across' has no side "

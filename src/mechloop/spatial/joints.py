@@ -40,8 +40,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from mechloop.errors import Problem
-from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint
+from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint, point_vector
 from mechloop.model.schema import ArgumentRole, Model
+from mechloop.spatial.directions import unit_of
 from mechloop.spatial.points import Placement3
 
 Array = NDArray[np.float64]
@@ -107,25 +108,6 @@ class Drive3:
         return zero, head, np.stack([-np.sin(beta), 0.0 * beta, np.cos(beta)])
 
 
-def point_vector(point: PointOn) -> int:
-    """The vector a point is given on."""
-    if isinstance(point, TailPoint):
-        return point.tail
-    if isinstance(point, HeadPoint):
-        return point.head
-    return point.vector
-
-
-def _unit_axis(values, path: tuple, problems: list[Problem]) -> Array | None:
-    d = np.array([float(x) for x in values])
-    size = float(np.linalg.norm(d))
-    if not size > 0:
-        problems.append(Problem(path, "a direction needs a non-zero component",
-                                "give [x, y, z] with at least one component not 0"))
-        return None
-    return d / size
-
-
 def build_joints3(model: Model, moving: set[int], problems: list[Problem]) -> list[Joint3]:
     """The joints of ``model`` (a model with spatial contours; ``moving``: its moving
     bodies), every misuse a located problem with its fix."""
@@ -174,7 +156,7 @@ def build_joints3(model: Model, moving: set[int], problems: list[Problem]) -> li
                                         "exist", f"use one of {sorted(vectors)}"))
             axis = joint.axis
         else:
-            axis = _unit_axis(joint.axis, (*path, "axis"), problems)
+            axis = unit_of(joint.axis, (*path, "axis"), problems)
         at = joint.at
         if at is None and isinstance(axis, int) and kind in ("cylindrical", "prismatic"):
             at = TailPoint(tail=axis)

@@ -30,6 +30,7 @@ from mechloop.model.dynamic import (
 )
 from mechloop.model.indicator import IndicatorValue
 from mechloop.model.units import UnitProblem, to_si
+from mechloop.spatial.directions import unit_of
 from mechloop.spatial.points import unit_direction
 
 Array = NDArray[np.float64]
@@ -62,13 +63,10 @@ class _State:
 
 
 def _unit(values, path: tuple, problems: list[Problem]) -> Array | None:
-    d = np.array([float(x) for x in values])
-    size = float(np.linalg.norm(d))
-    if not size > 0:
-        problems.append(Problem(path, "a direction needs a non-zero component",
-                                "give [x, y, z] with at least one component not 0"))
-        return None
-    return (d / size)[:, None]
+    """A given direction as a unit column ``(3, 1)`` (:func:`~mechloop.spatial.directions.
+    unit_of`)."""
+    d = unit_of(values, path, problems)
+    return None if d is None else d[:, None]
 
 
 def _magnitude(model, value, kind, unit, time, n, results, path, problems):
@@ -84,6 +82,20 @@ def _magnitude(model, value, kind, unit, time, n, results, path, problems):
     return _values(model, value, kind, unit, time, n, path, problems)
 
 
+def _readable(load, path: tuple, bodies: set[int], problems: list[Problem]) -> bool:
+    """Whether a force or moment ``load`` (at YAML ``path``) acts on a moving body and
+    has no ``when`` (not read for spatial models yet); else a problem is appended."""
+    if load.body not in bodies:
+        problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
+                                f"use one of {sorted(bodies)}"))
+        return False
+    if load.when is not None:
+        problems.append(Problem((*path, "when"), "'when' is not read for a model with "
+                                "spatial contours yet", "remove 'when'"))
+        return False
+    return True
+
+
 def build_loads(model, results, masses, bodies: set[int], time, problems: list[Problem]
                 ) -> tuple[list[Force3], list[Moment3]]:
     """The forces (gravity included) and moments of ``model`` over its positions, from
@@ -94,13 +106,7 @@ def build_loads(model, results, masses, bodies: set[int], time, problems: list[P
     moments: list[Moment3] = []
     for i, load in enumerate(model.forces):
         path = ("forces", i)
-        if load.body not in bodies:
-            problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
-                                    f"use one of {sorted(bodies)}"))
-            continue
-        if load.when is not None:
-            problems.append(Problem((*path, "when"), "'when' is not read for a model with "
-                                    "spatial contours yet", "remove 'when'"))
+        if not _readable(load, path, bodies, problems):
             continue
         value = _magnitude(model, load.value, "force", units.force, time, n, results,
                            (*path, "value"), problems)
@@ -129,13 +135,7 @@ def build_loads(model, results, masses, bodies: set[int], time, problems: list[P
         forces.append(Force3(load.name or f"F{i + 1}", load.body, value * direction, load.at))
     for i, load in enumerate(model.moments):
         path = ("moments", i)
-        if load.body not in bodies:
-            problems.append(Problem((*path, "body"), f"body {load.body} is not a moving body",
-                                    f"use one of {sorted(bodies)}"))
-            continue
-        if load.when is not None:
-            problems.append(Problem((*path, "when"), "'when' is not read for a model with "
-                                    "spatial contours yet", "remove 'when'"))
+        if not _readable(load, path, bodies, problems):
             continue
         value = _magnitude(model, load.value, "moment", units.moment, time, n, results,
                            (*path, "value"), problems)

@@ -1,9 +1,10 @@
 """Points of a solved model with spatial contours, in 3-D, with exact derivatives.
 
-A contour is placed by its ``start`` (the origin, an end of a vector of another contour,
-or fixed coordinates ``[x, y]`` in the XY plane) and walked along its ``vectors`` list: a
-vector listed with a plus sign has its tail at the current point, one listed with a minus
-sign (subtracted, spatial contours only) has its head there.  Vectors come from
+A contour is placed (:mod:`mechloop.dynamics.placing`) by its ``start`` (the origin, an
+end of a vector of another contour, or fixed coordinates ``[x, y]`` in the XY plane) and
+walked along its ``vectors`` list: a vector listed with a plus sign has its tail at the
+current point, one listed with a minus sign (subtracted, spatial contours only) has its
+head there.  Vectors come from
 :meth:`~mechloop.spatial.solve.SpatialResults.components` (planar contours in their
 plane's axes), so derivatives are time derivatives, or analogs when the results are.
 
@@ -18,9 +19,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from mechloop.errors import ModelError, Problem
+from mechloop.dynamics.placing import ContourPlacement
 from mechloop.model.dynamic import HeadPoint, TailPoint, VectorPoint
-from mechloop.model.spatial import contour_signs
 from mechloop.model.units import to_si
 
 Array = NDArray[np.float64]
@@ -44,70 +44,22 @@ class Motion3:
         return Motion3(k * self.p, k * self.v, k * self.a)
 
 
-class Placement3:
-    """Tails and heads of every vector of a solved spatial model (``SpatialResults``)."""
+class Placement3(ContourPlacement[Motion3]):
+    """Tails and heads of every vector of a solved spatial model (``SpatialResults``):
+    the walk of :class:`~mechloop.dynamics.placing.ContourPlacement` over points
+    ``(3, P)``."""
 
     def __init__(self, results):
-        self.results = results
-        model = results.model
-        self._vectors = {n: Motion3(*(np.stack(x) for x in zip(*results.components(n),
-                                                                   strict=True)))
-                         for n in model.vectors}
-        self._tails: dict[int, Motion3] = {}
-        self._contour_of = {abs(v): i for i, c in enumerate(model.contours)
-                            for v in c.vectors}
-        for index in range(len(model.contours)):
-            self._place(index, ())
+        super().__init__(results, {
+            n: Motion3(*(np.stack(x) for x in zip(*results.components(n), strict=True)))
+            for n in results.model.vectors})
 
-    def _place(self, index: int, visiting: tuple[int, ...]) -> None:
-        model = self.results.model
-        signs = contour_signs(model, index)
-        if signs[0][0] in self._tails:
-            return
-        if index in visiting:
-            raise ModelError([Problem(("contours", index, "start"),
-                                      "the starts of contours refer to each other in a cycle",
-                                      "start one of them at the origin or at fixed "
-                                      "coordinates [x, y]")])
-        current = self._start(index, model.contours[index].start, (*visiting, index))
-        for number, sign in signs:
-            if sign > 0:
-                self._tails[number] = current
-                current = current + self._vectors[number]
-            else:
-                current = current - self._vectors[number]
-                self._tails[number] = current
+    def _at_rest(self, position: Array | None) -> Motion3:
+        zero = np.zeros((3, self.results.broken.size))
+        return Motion3(zero if position is None else position, zero, zero)
 
-    def _start(self, index: int, start, visiting: tuple[int, ...]) -> Motion3:
-        n = self.results.broken.size
-        zero = np.zeros((3, n))
-        if isinstance(start, str):
-            return Motion3(zero, zero, zero)
-        if isinstance(start, tuple | list):
-            units = self.results.model.units.length
-            x, y = (to_si(c, "length", units) for c in start)
-            return Motion3(zero + np.array([[x], [y], [0.0]]), zero, zero)
-        number = start.tail if isinstance(start, TailPoint) else start.head
-        if number not in self._contour_of:
-            raise ModelError([Problem(("contours", index, "start"),
-                                      f"vector {number} does not exist",
-                                      f"use one of {sorted(self._contour_of)}")])
-        other = self._contour_of[number]
-        if other == index:
-            raise ModelError([Problem(("contours", index, "start"),
-                                      f"vector {number} is in this contour",
-                                      "start a contour at a point of another contour")])
-        self._place(other, visiting)
-        return self.tail(number) if isinstance(start, TailPoint) else self.head(number)
-
-    def vector(self, number: int) -> Motion3:
-        return self._vectors[number]
-
-    def tail(self, number: int) -> Motion3:
-        return self._tails[number]
-
-    def head(self, number: int) -> Motion3:
-        return self._tails[number] + self._vectors[number]
+    def _fixed(self, x: float, y: float) -> Array:
+        return np.zeros((3, self.results.broken.size)) + np.array([[x], [y], [0.0]])
 
     def point(self, where: TailPoint | HeadPoint | VectorPoint) -> Motion3:
         """A point given as in a model file: an end, or ``share`` of the vector's length

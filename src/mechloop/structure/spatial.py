@@ -36,6 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from mechloop.dynamics.holds import shared_junctions, vector_holds
 from mechloop.errors import ModelError, Problem
 from mechloop.model.schema import ArgumentRole, Model
 
@@ -102,41 +103,16 @@ class SpatialStructure:
         return len(self.links)
 
 
-def _holds(model: Model, results) -> dict[tuple[int, str], set[int]]:
-    """Which links hold each end of each vector (as the planar mechanism)."""
-    constant = results.constant
-    holds: dict[tuple[int, str], set[int]] = defaultdict(set)
-    member: set[int] = set()
-    for number, body in model.bodies.items():
-        for v in body.vectors:
-            member.add(v)
-            if f"r{v}" in constant:
-                holds[(v, "tail")].add(number)
-                holds[(v, "head")].add(number)
-            else:
-                holds[(v, body.ends.get(v, "tail"))].add(number)
-    for v in model.vectors:
-        if v not in member and f"r{v}" in constant and f"a{v}" in constant \
-                and f"b{v}" in constant:
-            holds[(v, "tail")].add(0)
-            holds[(v, "head")].add(0)
-    return holds
-
-
 def _frames(model: Model, results, problems: list[Problem]):
     """Each link's axes ``(3, 3, P)``, angular velocity ``(3, P)`` and whether it is a
     rod; the ground's are the model axes and zero."""
-    from mechloop.spatial.bodies import body_frame, frame_vector
+    from mechloop.spatial.bodies import body_frame, frame_vector, vectors_defined
 
     count = results.positions.size
     frames = {0: (np.repeat(np.eye(3)[:, :, None], count, axis=2), np.zeros((3, count)),
                   False)}
     for number, body in model.bodies.items():
-        missing = [v for v in body.vectors if v not in model.vectors]
-        if missing:
-            problems.append(Problem(("bodies", number, "vectors"), f"body {number} lists "
-                                    f"vector {missing[0]}, which is not defined",
-                                    f"use vectors of {sorted(model.vectors)}"))
+        if not vectors_defined(model, number, body, problems):
             continue
         second = frame_vector(results, number, body.vectors, problems)
         frame = body_frame(results, body.vectors, second=second)
@@ -213,7 +189,7 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
     frames = _frames(model, results, problems)
     if problems:
         raise ModelError(problems)
-    holds = _holds(model, results)
+    holds = vector_holds(model, results.constant, letters="rab")
     place = Placement3(results)
     ok = ~np.asarray(results.broken, dtype=bool)
     first = int(np.argmax(ok))
@@ -221,28 +197,11 @@ def spatial_pairs(model: Model, results) -> tuple[tuple[int, ...], list[SpatialP
                for v in model.vectors) or 1.0
     found: dict[tuple[int, int], list[tuple[Array, bool]]] = defaultdict(list)
     sliding_along: dict[tuple[int, int], int] = {}
-    for ci, contour in enumerate(model.contours):
-        vectors = contour.vectors
-        for i, v in enumerate(vectors):
-            before = vectors[i - 1]  # signed: -K runs from K's head to its tail
-            leaving = (before, "head") if before > 0 else (-before, "tail")
-            entering = (v, "tail") if v > 0 else (-v, "head")
-            owners = holds.get(leaving, set()) | holds.get(entering, set())
-            if len(owners) < 2:
-                continue
-            if len(owners) > 2:
-                problems.append(Problem(
-                    ("contours", ci, "vectors", i),
-                    f"bodies {', '.join(map(str, sorted(owners)))} all hold the point where "
-                    f"vector {abs(before)} ends and vector {abs(v)} starts: which pairs they "
-                    "form is ambiguous", "name the kinematic pairs in joints:"))
-                continue
-            key = tuple(sorted(owners))
-            path = (place.tail(v) if v > 0 else place.head(-v)).p[:, ok]
-            if any(np.max(np.abs(path - p)) <= SAME_POINT_RTOL * size
-                   for p, _ in found[key]):
-                continue
-            found[key].append((path, False))
+    for v, key in shared_junctions(model, holds, problems):
+        path = (place.tail(v) if v > 0 else place.head(-v)).p[:, ok]
+        if any(np.max(np.abs(path - p)) <= SAME_POINT_RTOL * size for p, _ in found[key]):
+            continue
+        found[key].append((path, False))
     for v in model.vectors:
         if f"r{v}" in results.constant:
             continue

@@ -44,17 +44,13 @@ LINE_RTOL = 1e-7
 
 def _frames(model: Model, results, problems: list[Problem]):
     """Every moving body's vectors and the vector that sets its frame's e3."""
-    from mechloop.spatial.bodies import frame_vector
+    from mechloop.spatial.bodies import frame_vector, vectors_defined
 
     out: dict[int, tuple[list[int], int | None]] = {}
     for number, body in model.bodies.items():
         if number == 0:
             continue
-        missing = [v for v in body.vectors if v not in model.vectors]
-        if missing:
-            problems.append(Problem(("bodies", number, "vectors"), f"body {number} lists "
-                                    f"vector {missing[0]}, which is not defined",
-                                    f"use vectors of {sorted(model.vectors)}"))
+        if not vectors_defined(model, number, body, problems):
             continue
         out[number] = (body.vectors, frame_vector(results, number, body.vectors,
                                                   problems))

@@ -8,6 +8,7 @@ file); :func:`mechloop.views.figure.save_figure` writes PNG, SVG or PDF atomical
 * ``figure`` — figures without pyplot state, atomic saving;
 * ``display`` — display units and precision (KDAM's "units" and "tolerances" panels);
 * ``plan``, ``animation`` — position plans, overlays, trajectories, animations;
+* ``scene`` — what the planar and the 3-D scenes share (positions, vector colours);
 * ``curves`` — parameters, combinations, angle differences, increments;
 * ``dynamics`` — reduced characteristics, balancing loads, reactions, hodographs,
   the summary table, machine motion;

@@ -50,6 +50,7 @@ from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.labels import arrange_labels, settle
 from mechloop.views.russian import keep_names, model_names
+from mechloop.views.scene import VectorScene, check_position, check_positions
 
 Complex = NDArray[np.complex128]
 Limits = tuple[float, float, float, float]
@@ -70,7 +71,7 @@ _POINT_ADAPTER: TypeAdapter[Any] = TypeAdapter(PointOn)
 
 
 @dataclass(frozen=True)
-class PlanScene:
+class PlanScene(VectorScene):
     """Everything a plan draws, in display units (``unit``), over positions ``0..N``.
 
     ``tails`` and ``heads``: complex ``x + iy`` of every vector's ends, shape ``(P,)``;
@@ -85,19 +86,6 @@ class PlanScene:
     tails: dict[int, Complex]
     heads: dict[int, Complex]
     ground: Complex
-
-    @property
-    def count(self) -> int:
-        """Number of positions ``P = N + 1``."""
-        return int(self.results.broken.size)
-
-    def vectors(self) -> list[int]:
-        return sorted(self.tails)
-
-    def color(self, number: int) -> tuple[float, float, float, float]:
-        """The colour of vector ``number`` (the same in every view)."""
-        index = self.vectors().index(number)
-        return matplotlib.colormaps["tab10"](index % 10)
 
     def to_display(self, z: Complex) -> Complex:
         """SI points (m) → display units."""
@@ -207,27 +195,6 @@ def resolve_limits(scene: PlanScene, limits: str | Sequence[float] | None,
         raise ViewError(f"limits {limits!r} do not enclose an area",
                         "give finite (xmin, xmax, ymin, ymax) with xmin < xmax, ymin < ymax")
     return (x0, x1, y0, y1)
-
-
-def check_position(scene: PlanScene, position: int) -> int:
-    """``position`` as an int in ``0..N``, or a :class:`ViewError`."""
-    if isinstance(position, bool) or not isinstance(position, int | np.integer):
-        raise ViewError(f"position {position!r} is not a position number",
-                        f"use an integer 0..{scene.count - 1}")
-    if not 0 <= int(position) < scene.count:
-        raise ViewError(f"position {position} is outside the model's positions",
-                        f"use 0..{scene.count - 1}")
-    return int(position)
-
-
-def check_positions(scene: PlanScene, positions: Iterable[int] | None) -> list[int]:
-    """The chosen positions (default every one), each checked."""
-    if positions is None:
-        return list(range(scene.count))
-    chosen = [check_position(scene, p) for p in positions]
-    if not chosen:
-        raise ViewError("no positions chosen", "give at least one position, or None for all")
-    return chosen
 
 
 # ------------------------------------------------------------------------------- drawing

@@ -34,7 +34,7 @@ from mechloop.views.spatial_plan import (
     SpatialScene,
     _all_points,
     _draw_all,
-    check_position,
+    check_positions,
     position_title,
     scene_box,
     spatial_scene,
@@ -87,10 +87,7 @@ def animate_spatial(results: Results, path: str | os.PathLike[str], *,
                                   azim=azim, length_unit=length_unit, lang=lang,
                                   progress=progress)
     scene = spatial_scene(results, length_unit=length_unit)
-    chosen = (list(range(scene.count)) if positions is None
-              else [check_position(scene, p) for p in positions])
-    if not chosen:
-        raise ViewError("no positions chosen", "give at least one position, or None for all")
+    chosen = check_positions(scene, positions)
     if len(chosen) > 2 and same_pose(scene, chosen[0], chosen[-1]):
         chosen = chosen[:-1]
     interval = frame_interval(scene.results, chosen, fps)

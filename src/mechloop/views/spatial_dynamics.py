@@ -26,7 +26,7 @@ from mechloop.views.russian import keep_names, model_names
 SPATIAL_DYNAMIC_KINDS = ("reduced", "balancing", "summary", "reactions", "hodograph")
 
 
-def _linear(dyn: SpatialDynamics) -> bool:
+def length_argument(dyn: SpatialDynamics) -> bool:
     """Whether the (first) argument is a length (m_red, F_red, a balancing force)."""
     return dyn.kinematics.argument_kinds[next(iter(dyn.balancing))] == "length"
 
@@ -57,7 +57,7 @@ def reduced_series(dyn: SpatialDynamics) -> list[Series]:
                         f"{len(dyn.balancing)} arguments", "plot the balancing loads "
                         "(plot ... balancing) instead")
     inertia, slope, load = dyn.reduced
-    if _linear(dyn):
+    if length_argument(dyn):
         return [Series("m_red", inertia, "mass"), Series("dm_red", slope, "mass/length"),
                 Series("F_red", load, "force")]
     return [Series("J_red", inertia, "inertia"), Series("dJ_red", slope, "inertia/angle"),

@@ -41,7 +41,7 @@ from mechloop.views.spatial_plan import (
     AZIM,
     ELEV,
     SpatialScene,
-    check_position,
+    check_positions,
     check_view,
     moving_heads,
     spatial_scene,
@@ -198,10 +198,7 @@ def write_spatial_html(results: Results, path: str | os.PathLike[str], *,
     """
     target = Path(path)
     scene = spatial_scene(results, length_unit=length_unit)
-    chosen = (list(range(scene.count)) if positions is None
-              else [check_position(scene, p) for p in positions])
-    if not chosen:
-        raise ViewError("no positions chosen", "give at least one position, or None for all")
+    chosen = check_positions(scene, positions)
     if len(chosen) > 2 and same_pose(scene, chosen[0], chosen[-1]):
         chosen = chosen[:-1]
     lang = message_language() if lang is None else lang

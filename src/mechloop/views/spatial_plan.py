@@ -40,11 +40,11 @@ from matplotlib.path import Path
 from mpl_toolkits.mplot3d import Axes3D, proj3d
 from numpy.typing import NDArray
 
-from mechloop.model.dynamic import HeadPoint, TailPoint
-from mechloop.model.units import UnitProblem, to_si, unit_factor
+from mechloop.model.units import UnitProblem, unit_factor
 from mechloop.solve.results import Results, compress_positions
 from mechloop.views.figure import ViewError, new_figure
 from mechloop.views.russian import keep_names, model_names
+from mechloop.views.scene import VectorScene, check_position, check_positions
 
 Array = NDArray[np.float64]
 
@@ -67,7 +67,7 @@ SAME_POINT_RTOL = 1e-9
 
 
 @dataclass(frozen=True)
-class SpatialScene:
+class SpatialScene(VectorScene):
     """Every vector's ends of a spatial model in display units (``unit``), over the
     positions ``0..N``: ``tails`` and ``heads`` ``{n: (3, P)}``, ``ground`` ``(G, 3)``
     (the fixed points), ``scale`` display units per metre."""
@@ -79,23 +79,13 @@ class SpatialScene:
     heads: dict[int, Array]
     ground: Array
 
-    @property
-    def count(self) -> int:
-        """Number of positions ``P = N + 1``."""
-        return int(self.results.broken.size)
-
-    def vectors(self) -> list[int]:
-        return sorted(self.tails)
-
-    def color(self, number: int) -> tuple[float, float, float, float]:
-        """The colour of vector ``number`` (the same in every view)."""
-        return matplotlib.colormaps["tab10"](self.vectors().index(number) % 10)
-
 
 def spatial_scene(results: Results, *, length_unit: str | None = None) -> SpatialScene:
     """Place every vector of the solved spatial model ``results`` in 3-D, in
     ``length_unit`` (default: the model's).  Raises :class:`ViewError` for results that
-    are not spatial, an unknown unit, or contour starts that refer to each other."""
+    are not spatial or an unknown unit, :class:`~mechloop.errors.ModelError` for contour
+    starts that cannot be placed (that refer to each other in a cycle, or to a vector of
+    the contour itself or to none)."""
     if not callable(getattr(results, "components", None)):
         raise ViewError("a 3-D plan needs the results of a model with spatial contours",
                         "solve a model with 'spatial: true' contours by mechloop.solve, or "
@@ -112,50 +102,15 @@ def spatial_scene(results: Results, *, length_unit: str | None = None) -> Spatia
 
 
 def _place(results: Any) -> tuple[dict[int, Array], dict[int, Array]]:
-    """Tails and heads (m, ``(3, P)``) of every vector, each contour from its start."""
-    model = results.model
-    count = results.broken.size
-    vectors = {n: np.stack([np.broadcast_to(np.asarray(c[0], float), (count,))
-                            for c in results.components(n)]) for n in model.vectors}
-    contour_of = {abs(v): i for i, c in enumerate(model.contours) for v in c.vectors}
-    tails: dict[int, Array] = {}
-    heads: dict[int, Array] = {}
-
-    def place(index: int, visiting: tuple[int, ...]) -> None:
-        contour = model.contours[index]
-        if abs(contour.vectors[0]) in tails:
-            return
-        if index in visiting:
-            raise ViewError("the starts of contours refer to each other in a cycle",
-                            "start one of them at the origin or at fixed coordinates [x, y]")
-        start = contour.start
-        if isinstance(start, TailPoint | HeadPoint):
-            number = start.tail if isinstance(start, TailPoint) else start.head
-            if contour_of.get(number, index) == index:
-                raise ViewError(f"contour {index + 1} starts at vector {number}, which is "
-                                "in no other contour", "start a contour at a point of "
-                                "another contour, or at the origin")
-            place(contour_of[number], (*visiting, index))
-            point = (tails if isinstance(start, TailPoint) else heads)[number]
-        elif isinstance(start, tuple | list):
-            unit = model.units.length
-            xy = [to_si(c, "length", unit) for c in start]
-            point = np.array([xy[0], xy[1], 0.0])[:, None] + np.zeros((3, count))
-        else:
-            point = np.zeros((3, count))
-        for entry in contour.vectors:
-            n = abs(entry)
-            if entry < 0 and contour.spatial:  # subtracted: it ends at the point reached
-                heads[n], tails[n] = point, point - vectors[n]
-                point = tails[n]
-            else:
-                tails[n], heads[n] = point, point + vectors[n]
-                point = heads[n]
+    """Tails and heads (m, ``(3, P)``) of every vector, each contour from its start (the
+    walk of :class:`~mechloop.spatial.points.Placement3`, which raises a located
+    :class:`~mechloop.errors.ModelError` for a start that cannot be placed)."""
+    from mechloop.spatial.points import Placement3
 
     with np.errstate(invalid="ignore"):
-        for index in range(len(model.contours)):
-            place(index, ())
-    return tails, heads
+        place = Placement3(results)
+        numbers = results.model.vectors
+        return ({n: place.tail(n).p for n in numbers}, {n: place.head(n).p for n in numbers})
 
 
 def _ground(results: Results, tails: dict[int, Array], heads: dict[int, Array]) -> Array:
@@ -218,17 +173,6 @@ def _all_points(scene: SpatialScene, positions: Sequence[int] | None = None) -> 
     pick = slice(None) if positions is None else list(positions)
     return [*(p[:, pick] for p in (*scene.tails.values(), *scene.heads.values())),
             scene.ground.T]
-
-
-def check_position(scene: SpatialScene, position: int) -> int:
-    """``position`` as an int in ``0..N``, or a :class:`ViewError`."""
-    if isinstance(position, bool) or not isinstance(position, int | np.integer):
-        raise ViewError(f"position {position!r} is not a position number",
-                        f"use an integer 0..{scene.count - 1}")
-    if not 0 <= int(position) < scene.count:
-        raise ViewError(f"position {position} is outside the model's positions",
-                        f"use 0..{scene.count - 1}")
-    return int(position)
 
 
 def check_view(views: str, elev: float, azim: float) -> None:
@@ -509,10 +453,7 @@ def plot_spatial_overlay(results: Results, positions: Iterable[int] | None = Non
     each other as faded lines, coloured by vector; broken positions are left out and
     named in the title."""
     scene = spatial_scene(results, length_unit=length_unit)
-    chosen = (list(range(scene.count)) if positions is None
-              else [check_position(scene, p) for p in positions])
-    if not chosen:
-        raise ViewError("no positions chosen", "give at least one position, or None for all")
+    chosen = check_positions(scene, positions)
     st = stage(scene, _box(scene, None, chosen), views=views, elev=elev, azim=azim,
                grid=grid, legend=_legend_handles(scene)[:len(scene.vectors())])
     keep_names(st.figure, model_names(scene.results.model))

@@ -282,10 +282,6 @@ ENTRIES: list[Entry] = [
     (r"solve a model with 'spatial: true' contours by mechloop\.solve, or draw a planar "
      r"model by plot_plan", "решите модель с контурами 'spatial: true' функцией "
      "'mechloop.solve' или нарисуйте плоскую модель функцией 'plot_plan'"),
-    (r"contour (?P<c>\d+) starts at vector (?P<n>-?\d+), which is in no other contour",
-     "контур {c} начинается на векторе {n}, который не входит ни в один другой контур"),
-    (r"start a contour at a point of another contour, or at the origin",
-     "начните контур в точке другого контура или в начале координат"),
     (r"unknown views (?P<v>'[^']*'|\S+) of a 3-D plan",
      "неизвестный набор видов объёмного плана {v}"),
     (r"use 'all' \(the 3-D view and the three projections\) or '3d'",
