@@ -47,6 +47,7 @@ from mechloop.report.docx_styles import (
     set_styles,
 )
 from mechloop.report.docx_table import cleaned, fits, table_element
+from mechloop.views.save_once import save_once
 
 __all__ = ["DPI", "write_docx"]
 
@@ -198,7 +199,7 @@ def _figure(doc, document: Document, item: Numbered) -> None:
         width = Emu(int(min(TEXT_WIDTH, FIGURE_HEIGHT * inches_w / inches_h)))
         dpi = DPI * width.inches / inches_w
         picture = io.BytesIO()
-        figure.savefig(picture, format="png", dpi=dpi, facecolor="white")
+        save_once(figure, picture, format="png", dpi=dpi, facecolor="white")
     finally:
         pyplot = sys.modules.get("matplotlib.pyplot")
         if pyplot is not None:

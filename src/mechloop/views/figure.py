@@ -25,6 +25,7 @@ def new_figure(width: float = 8.0, height: float = 6.0) -> Figure:
 def save_figure(figure: Figure, path: str | os.PathLike[str], *, dpi: int = 150) -> Path:
     """Write ``figure`` as PNG, SVG or PDF (by the suffix of ``path``), atomically."""
     from mechloop.output.atomic import atomic_file
+    from mechloop.views.save_once import save_once
 
     target = Path(path)
     suffix = target.suffix.lower()
@@ -32,5 +33,5 @@ def save_figure(figure: Figure, path: str | os.PathLike[str], *, dpi: int = 150)
         raise ViewError(f"{target}: cannot save a figure as '{suffix or 'no suffix'}'",
                         "use a file name ending in .png, .svg or .pdf")
     with atomic_file(target) as handle:
-        figure.savefig(handle, format=suffix[1:], dpi=dpi)
+        save_once(figure, handle, format=suffix[1:], dpi=dpi)
     return target
