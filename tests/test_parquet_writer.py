@@ -106,6 +106,10 @@ def test_a_python_buffer_gets_the_same_bytes_as_a_file(tmp_path, monkeypatch):
         handle.write(b"head")
         parquet.write_parquet(frame, handle)
     assert (tmp_path / "after.bin").read_bytes() == b"head" + expected
+    with open(tmp_path / "before.bin", "wb") as handle:  # Arrow's own file, then more
+        parquet.write_parquet(frame, handle)
+        handle.write(b"tail")
+    assert (tmp_path / "before.bin").read_bytes() == expected + b"tail"
 
     def refused(path, mode):
         raise PermissionError(13, "Permission denied", path)

@@ -79,9 +79,10 @@ def _has_nan(values: np.ndarray) -> bool:
 @contextmanager
 def _native(handle: BinaryIO) -> Iterator[pa.NativeFile | BinaryIO]:
     """A native Arrow file writing the regular, empty file ``handle`` writes (opened
-    again by its ``/proc/self/fd`` link), else ``handle`` itself (a buffer, a pipe, a
-    file already written into, a system without ``/proc``, or a file its owner may not
-    open for writing: a umask without the owner's write bit)."""
+    again by its ``/proc/self/fd`` link; ``handle`` is moved to its end afterwards), else
+    ``handle`` itself (a buffer, a pipe, a file already written into, a system without
+    ``/proc``, or a file its owner may not open for writing: a umask without the owner's
+    write bit)."""
     import pyarrow as pa
 
     try:
@@ -102,6 +103,7 @@ def _native(handle: BinaryIO) -> Iterator[pa.NativeFile | BinaryIO]:
         return
     with sink:
         yield sink
+    handle.seek(0, io.SEEK_END)
 
 
 def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
