@@ -16,14 +16,18 @@ Each choice was measured on a table of 300,000 rows x 202 columns of mechanism r
 (``benchmarks/bench_output.py --contours 22 --positions 300000``; 461 MB), encoded into
 ``/dev/null`` on the loaded 2-core development machine, in CPU-seconds:
 
-- snappy: 0.7 more for a file only a fifth smaller (noisy doubles do not compress);
+- snappy: 0.05-0.06 more (lz4 the same) for a file a fifth smaller (noisy doubles hardly
+  compress); written and fsynced, both took the same time here (0.74-0.93 s against
+  0.81-0.85 s, three runs each under load), so compression would pay only on a disk
+  slower than this one's 1-1.5 GB/s (set PARQUET_COMPRESSION);
 - min/max statistics of the float columns: 0.10, as much again as the whole encoding of
   the other choices (0.09-0.10) — readers skip row groups by them, but a results table is
   read whole; the int, bool and string columns (positions, marks) keep theirs;
 - optional instead of required columns: 0.15-0.17 (definition levels for every value);
 - Arrow's default batches of 1,024 values: 0.05-0.08 more than batches of 65,536;
-- pandas' conversion (``pa.Table.from_pandas``, which searches every value for NaN again
-  and copies): 0.3; the search here, once per column: 0.04;
+- pandas' conversion (``pa.Table.from_pandas``: no copy either, but Arrow's search of
+  every value for NaN and pandas' bookkeeping, group by group): 0.3; the search here
+  (the minimum of each column, once): 0.04;
 - writing through a Python file object: 0.05-0.1 more than through a native file, with
   Python's lock taken for every buffer.
 """
