@@ -24,7 +24,8 @@ Each choice was measured on a table of 300,000 rows x 202 columns of mechanism r
   the other choices (0.09-0.10) — readers skip row groups by them, but a results table is
   read whole; the int, bool and string columns (positions, marks) keep theirs;
 - optional instead of required columns: 0.15-0.17 (definition levels for every value);
-- Arrow's default batches of 1,024 values: 0.05-0.08 more than batches of 65,536;
+- Arrow's default batches of 1,024 values: 0.05-0.08 more than batches of 32,768 or
+  65,536;
 - pandas' conversion (``pa.Table.from_pandas``: no copy either, but Arrow's search of
   every value for NaN and pandas' bookkeeping, group by group): 0.3; the search here
   (the minimum of each column, once): 0.04;
@@ -56,13 +57,16 @@ PARQUET_COMPRESSION = "none"
 PARQUET_GROUP_VALUES = 1 << 23
 
 #: Values Arrow's writer takes from a column at a time (its default, 1,024, spends more in
-#: the steps around each batch than in the encoding of doubles).
-PARQUET_BATCH_VALUES = 1 << 16
+#: the steps around each batch than in the encoding of doubles): a page of doubles.
+PARQUET_BATCH_VALUES = 1 << 15
 
-#: Bytes and values in one data page at most (1 MiB: Arrow's default size; its default
-#: of 20,000 values would cut a column of doubles into pages of 160 kB).
-PARQUET_PAGE_BYTES = 1 << 20
-PARQUET_PAGE_VALUES = 1 << 17
+#: Bytes and values in one data page at most: 256 KiB, so that a page is built in the
+#: core's L2 cache (1.25 MiB on the development machine) and copied from there into the
+#: page cache.  Pages of Arrow's default 1 MiB took 1.65-1.77 CPU-s for the 10^6 rows x
+#: 202 columns of ``bench_output.py --contours 22 --positions 1000000``, pages of 256 KiB
+#: 0.9-1.2 (written and fsynced, under load).
+PARQUET_PAGE_BYTES = 1 << 18
+PARQUET_PAGE_VALUES = 1 << 15
 
 
 def _numbers(series: pd.Series) -> np.ndarray | None:
