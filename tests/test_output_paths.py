@@ -373,3 +373,39 @@ def test_a_copy_that_stops_short_is_an_error_not_a_short_file(tmp_path, monkeypa
         atomic_write_bytes(target, b"content\n")
     assert target.read_bytes() == b"old\n"
     assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]
+
+
+def test_a_large_file_is_written_back_while_it_is_written(tmp_path, monkeypatch):
+    """The writeback thread asks for the new bytes to go to the disk as they come (so
+    that the final fsync waits for the last ones only) and is gone before the file is
+    synced and named, also when the writer fails."""
+    import threading
+    import time
+    from itertools import pairwise
+
+    if atomic_module._sync_file_range() is None:
+        pytest.skip("no sync_file_range here")
+    asked: list[tuple[int, int]] = []
+    monkeypatch.setattr(atomic_module, "WRITEBACK_BYTES", 1000)
+    monkeypatch.setattr(atomic_module, "WRITEBACK_SECONDS", 0.001)
+    monkeypatch.setattr(atomic_module._Writeback, "_call",
+                        lambda fd, offset, length: asked.append((offset, length)) or 0)
+    monkeypatch.setattr(atomic_module._Writeback, "_looked", True)
+    target = tmp_path / "big.bin"
+    with atomic_file(target) as handle:
+        for _ in range(5):
+            handle.write(b"x" * 3000)
+            handle.flush()
+            deadline = time.monotonic() + 5
+            while sum(length for _, length in asked) < handle.tell() and \
+                    time.monotonic() < deadline:
+                time.sleep(0.001)
+    assert target.read_bytes() == b"x" * 15000
+    assert asked[0][0] == 0 and all(a + n == b for (a, n), (b, _) in pairwise(asked))
+    assert sum(length for _, length in asked) == 15000
+    assert not [t for t in threading.enumerate() if t.name == "mechloop-writeback"]
+    with pytest.raises(RuntimeError), atomic_file(tmp_path / "failed.bin") as handle:
+        handle.write(b"y" * 5000)
+        raise RuntimeError("writer failed")
+    assert not [t for t in threading.enumerate() if t.name == "mechloop-writeback"]
+    assert [p.name for p in tmp_path.iterdir()] == ["big.bin"]

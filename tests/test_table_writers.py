@@ -15,7 +15,7 @@ import pytest
 from typer.testing import CliRunner
 
 from mechloop.cli import app
-from mechloop.output import OutputError, lines, parallel, tables
+from mechloop.output import OutputError, lines, parallel, parquet, tables
 from mechloop.output.tables import check_table_size, write_frame
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -53,7 +53,7 @@ def small_chunks(monkeypatch, request):
     monkeypatch.setattr(tables, "CHUNK_VALUES", 20)
     monkeypatch.setattr(tables, "GATHER_VALUES", 45)
     monkeypatch.setattr(tables, "PIECE_VALUES", 70)
-    monkeypatch.setattr(tables, "PARQUET_GROUP_VALUES", 30)
+    monkeypatch.setattr(parquet, "PARQUET_GROUP_VALUES", 30)
     monkeypatch.setattr(lines, "BLOCK_VALUES", 25)
     monkeypatch.setattr(tables, "_compiled", lambda values: True)  # as for a large table
     threads = 3 if request.param.endswith("3 threads") else 1

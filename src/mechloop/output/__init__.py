@@ -7,7 +7,8 @@ writable, the path is no folder, the input model and its CSV tables are not
 overwritten) and the streaming
 table writers (:mod:`.tables`: CSV, JSON, Parquet and XLSX in bounded memory; large tables
 of numbers formatted in compiled code on threads, :mod:`.lines`, every float by the
-shortest round-trip formatter :mod:`.shortest`).
+shortest round-trip formatter :mod:`.shortest`; Parquet by :mod:`.parquet`, from the
+table's memory).
 
 May import: :mod:`mechloop.errors`, NumPy, pandas, orjson, pyarrow and numba (the last
 four only inside the functions that need them, so that the command line starts fast), and

@@ -8,6 +8,9 @@ onto the target at once (``os.replace``), a window of two system calls.  Elsewhe
 file system without ``O_TMPFILE``, a hidden temporary file beside the target is written
 instead and removed on any exception, on Ctrl-C and on SIGTERM/SIGHUP.
 
+While a file is written, a thread has the disk write its pages back every 32 MB (Linux's
+``sync_file_range``), so that the final fsync does not wait for the whole file.
+
 The written file keeps the mode (and, where allowed, the owner) of the file it replaces; a
 new file gets ``0o666`` less the umask, as any program's.  A symlink as the target is
 followed: the file it points to is replaced and the link stays.
@@ -20,8 +23,9 @@ import os
 import secrets
 import signal
 import stat
+import sys
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import BinaryIO
@@ -84,6 +88,7 @@ class _Stage:
         self.named: Path | None = None
         fd = self._anonymous()
         self.fd = fd if fd is not None else self._named()
+        self.writeback = _Writeback.start(self.fd)
 
     def _anonymous(self) -> int | None:
         flag = getattr(os, "O_TMPFILE", None)
@@ -115,6 +120,11 @@ class _Stage:
         """A path by which another program (ffmpeg) can open the staged file to write."""
         return str(self.named) if self.named is not None else f"/proc/{os.getpid()}/fd/{self.fd}"
 
+    def _stop_writeback(self) -> None:
+        if self.writeback is not None:
+            self.writeback.stop()
+            self.writeback = None
+
     def _keep_mode(self) -> None:
         """Give the staged file the mode and (where allowed) the owner of the file it
         replaces; before its fsync, so that they are on disk with it."""
@@ -131,6 +141,7 @@ class _Stage:
 
     def commit(self) -> None:
         """Put the staged file, complete and on disk, in place of the target."""
+        self._stop_writeback()
         self._keep_mode()
         os.fsync(self.fd)
         if self.named is None:
@@ -179,12 +190,76 @@ class _Stage:
 
     def discard(self) -> None:
         """Drop the staged file: close it and remove its temporary name, if it has one."""
+        self._stop_writeback()
         if self.fd >= 0:
             os.close(self.fd)
             self.fd = -1
         if self.named is not None:
             self.named.unlink(missing_ok=True)
             self.named = None
+
+
+#: Bytes written into the staged file between two requests to write them back to the disk,
+#: and seconds between two looks at its size.
+WRITEBACK_BYTES = 32 << 20
+WRITEBACK_SECONDS = 0.05
+
+
+def _sync_file_range() -> Callable[[int, int, int], int] | None:
+    """Linux's ``sync_file_range(fd, offset, length, SYNC_FILE_RANGE_WRITE)``: start
+    writing a range of a file back to the disk without waiting for it; None elsewhere."""
+    if not sys.platform.startswith("linux"):
+        return None
+    import ctypes
+
+    try:
+        call = ctypes.CDLL(None, use_errno=True).sync_file_range
+    except (AttributeError, OSError):
+        return None
+    call.argtypes = [ctypes.c_int, ctypes.c_int64, ctypes.c_int64, ctypes.c_uint]
+    return lambda fd, offset, length: call(fd, offset, length, 2)  # SYNC_FILE_RANGE_WRITE
+
+
+class _Writeback:
+    """A thread that has the disk write the staged file back while it is being written,
+    every WRITEBACK_BYTES: the fsync at the end then waits for the last pages only.  A
+    file of 1.5 GB stays below the kernel's threshold for writing back in the background
+    (10 % of the available memory), so without it the fsync wrote the whole file after
+    the writer had finished: 1.28-2.50 s in all for 1.5 GB written in 1 MiB blocks on the
+    development machine, against 0.88-1.07 s with it (three runs each, under load)."""
+
+    _call: Callable[[int, int, int], int] | None = None
+    _looked = False
+
+    def __init__(self, fd: int, call: Callable[[int, int, int], int]):
+        self._fd, self._call_range = fd, call
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="mechloop-writeback",
+                                        daemon=True)
+        self._thread.start()
+
+    @classmethod
+    def start(cls, fd: int) -> _Writeback | None:
+        """The thread for ``fd``, or None where the system cannot start a writeback."""
+        if not cls._looked:
+            cls._call, cls._looked = _sync_file_range(), True
+        return None if cls._call is None else cls(fd, cls._call)
+
+    def _run(self) -> None:
+        done = 0
+        while not self._stop.wait(WRITEBACK_SECONDS):
+            try:
+                end = os.fstat(self._fd).st_size
+            except OSError:
+                return
+            if end - done >= WRITEBACK_BYTES:
+                self._call_range(self._fd, done, end - done)  # errors: the fsync tells
+                done = end
+
+    def stop(self) -> None:
+        """Stop the thread (before the file is synced or closed)."""
+        self._stop.set()
+        self._thread.join()
 
 
 def _sync_folder(folder: Path) -> None:

@@ -19,7 +19,8 @@ Formats (as before the writers streamed):
   broken position) is an empty field, a boolean is ``True``/``False``, ``inf`` is ``inf``.
 - JSON: a list of records ``[{"column": value, ...}, ...]``, one per row; NaN and
   infinities are ``null``, booleans ``true``/``false``, integers stay integers.
-- Parquet: one column per column with its type; NaN is null.
+- Parquet: one column per column with its type; NaN is null (:mod:`mechloop.output.parquet`:
+  uncompressed, columns of numbers handed to Arrow without a copy).
 - XLSX: one sheet, refused past the format's 1,048,576 rows or 16,384 columns.
 """
 
@@ -29,7 +30,6 @@ import csv
 import io
 import os
 from collections.abc import Iterator
-from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import TYPE_CHECKING, BinaryIO
 
@@ -37,6 +37,7 @@ import numpy as np
 
 from mechloop.output.atomic import atomic_file
 from mechloop.output.parallel import Part, Render, threads_for, write_ordered
+from mechloop.output.parquet import write_parquet
 from mechloop.output.paths import TABLE_SUFFIXES, OutputError
 
 if TYPE_CHECKING:
@@ -64,22 +65,6 @@ GATHER_VALUES = 1 << 20
 #: Values in one piece of rows (about 5 MB of CSV text; gathers of columns do not cross
 #: pieces).
 PIECE_VALUES = 1 << 18
-
-#: Parquet's compression of the columns' pages: none.  The writer is bound by the CPU, not
-#: by the disk: a table of 300,000 rows x 202 columns (``benchmarks/bench_output.py
-#: --contours 22 --positions 300000 --formats parquet``, two runs each on the loaded 2-core
-#: development machine) took 2.4-2.5 s with snappy (363 MB, 282-336 MB per CPU-second)
-#: and 1.3-2.0 s without compression (461 MB, 442-485 MB per CPU-second): of the CPU time,
-#: the conversion from pandas takes about 0.35 CPU-s, snappy's encoding 0.7 and the
-#: uncompressed encoding 0.57 (measured apart, written to the page cache).  Results of
-#: mechanisms are doubles with noise in their last digits, which snappy shrinks by only a
-#: fifth.  The values read back the same whatever the compression.
-PARQUET_COMPRESSION = "none"
-
-#: Values in one Parquet row group (about 64 MB of doubles: fewer, larger groups write
-#: faster and read better; the group is held in memory while it is written).
-PARQUET_GROUP_VALUES = 1 << 23
-
 
 def _compiled(values: int) -> bool:
     """Whether to format a table of ``values`` values (numbers only) in compiled code."""
@@ -365,29 +350,3 @@ def write_json(frame: pd.DataFrame, handle: BinaryIO) -> None:
 
     _write_pieces(columns, handle, render)
     handle.write(b"}\n]\n")
-
-
-def write_parquet(frame: pd.DataFrame, handle: BinaryIO) -> None:
-    """``frame`` as Parquet (row groups of about 8 million values; dictionary encoding
-    only for columns that are not floats; PARQUET_COMPRESSION) into ``handle``: a group
-    is encoded and written by a thread while the next is converted from the frame (at
-    most two in memory)."""
-    import pyarrow as pa
-    import pyarrow.parquet as pq
-
-    named = frame.set_axis([str(c) for c in frame.columns], axis=1)
-    schema = pa.Schema.from_pandas(named, preserve_index=False)
-    step = max(1, PARQUET_GROUP_VALUES // max(1, len(named.columns)))
-    coded = [str(c) for c in named.columns if named[c].dtype.kind != "f"]  # few values
-    with pq.ParquetWriter(handle, schema, use_dictionary=coded,
-                          compression=PARQUET_COMPRESSION) as writer, \
-            ThreadPoolExecutor(1) as pool:  # a group is encoded and written beside the next
-        writing: Future[None] | None = None  # conversion (both release Python's lock)
-        for start in range(0, len(named), step):
-            group = pa.Table.from_pandas(named.iloc[start:start + step], schema=schema,
-                                         preserve_index=False)
-            if writing is not None:
-                writing.result()  # at most two groups in memory
-            writing = pool.submit(writer.write_table, group)
-        if writing is not None:
-            writing.result()
