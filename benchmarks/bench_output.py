@@ -8,7 +8,7 @@ columns, 1,803 columns at the default, solved by ``mechloop.solve``.
 Each format is written in a forked child process (the table is shared copy-on-write), so
 its peak memory is its own: ``peak RSS`` is the child's ``ru_maxrss`` and ``above the
 table`` that minus the resident size at the fork.  CSV and JSON are formatted in
-compiled code by a thread per idle core while the writer's thread writes (``threads``:
+compiled code by a thread per core while the writer's thread writes (``threads``:
 how many the writer chose).  ``MB/CPU-s`` is the size over the CPU time of the writer's
 threads together (how fast one free core formats; ``MB/s`` depends on the machine's load
 and its free cores).  The file
@@ -296,16 +296,12 @@ def main() -> int:
                         help="also time polars' write_csv/write_ndjson and Arrow's C++ "
                         "CSV writer")
     parser.add_argument("--threads", choices=("auto", "all", "one"), default="auto",
-                        help="CSV/JSON formatting threads: auto (one per idle core, as "
-                        "mechloop does), all (one per core, whatever the load: to measure "
-                        "them on a busy machine), one")
+                        help="CSV/JSON formatting threads: auto or all (one per core, as "
+                        "mechloop does), one")
     args = parser.parse_args()
-    from mechloop.output import parallel, tables
+    from mechloop.output import tables
 
-    if args.threads == "all":
-        os.getloadavg = lambda: (0.0, 0.0, 0.0)  # this process only: every core counts
-        parallel.running_threads = lambda: None
-    elif args.threads == "one":
+    if args.threads == "one":
         tables.threads_for = lambda values: 1
 
     t0 = time.perf_counter()

@@ -276,22 +276,17 @@ def test_one_or_two_rows_and_single_columns(tmp_path, rows, columns):
         [type(v) for v in r.values()] for r in expected]
 
 
-def test_threads_for_idle_cores(monkeypatch):
-    """A formatting thread per idle core (cores less the load), at least one, and not
-    more than one per 2^16 values."""
+def test_threads_for_every_core_whatever_the_load(monkeypatch):
+    """A formatting thread per core the process may use, whatever the load average or
+    the threads running, at least one, and not more than one per 2^16 values."""
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(4)), raising=False)
-    monkeypatch.setattr(parallel, "running_threads", lambda: 99)  # the average decides
-    for load, threads in ((0.0, 4), (0.6, 3), (1.4, 3), (2.4, 2), (2.6, 1), (9.0, 1)):
-        monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, 0.0, 0.0))
-        assert parallel.threads_for(10**6) == threads, load
-    # the average still holds this process's own solve (or a job just ended), but
-    # nothing else runs now: every core is idle
-    monkeypatch.setattr(os, "getloadavg", lambda: (3.0, 0.0, 0.0))
-    for running, threads in ((1, 4), (2, 3), (3, 2), (4, 1)):
-        monkeypatch.setattr(parallel, "running_threads", lambda running=running: running)
-        assert parallel.threads_for(10**6) == threads, running
-    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    for load in (0.0, 1.4, 9.0):
+        monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, load, load))
+        monkeypatch.setattr(parallel, "running_threads", lambda: 7)
+        assert parallel.threads_for(10**6) == 4, load
     assert parallel.threads_for(3 << 16) == 3 and parallel.threads_for(10) == 1
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(64)), raising=False)
+    assert parallel.threads_for(10**8) == parallel.MAX_THREADS
 
 
 def test_tables_of_every_size_are_the_same_text_compiled_or_not(tmp_path, monkeypatch):

@@ -10,7 +10,7 @@ boolean as ``True``/``False`` (CSV) or ``true``/``false`` (JSON); a NaN is an em
 field or a JSON ``null``, an infinity ``inf``/``-inf`` in CSV and ``null`` in JSON.
 
 :func:`write_lines` cuts the rows into blocks of about BLOCK_VALUES values, formats them
-on a pool of threads (one per idle core, at least one: the compiled code does not hold
+on a pool of threads (one per core, at least one: the compiled code does not hold
 Python's lock, so the threads run at once) and writes them in order from the calling
 thread while the next blocks are formatted.  At most AHEAD blocks per thread are held, each
 in a buffer reused from block to block: memory stays bounded whatever the rows.

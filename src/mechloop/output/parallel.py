@@ -1,10 +1,11 @@
 """Cores for the table writers, and formatting beside writing.
 
 :func:`threads_for` tells how many threads format a large table in compiled code
-(:mod:`mechloop.output.lines`): one per idle core, at least one.  :func:`write_ordered`
-writes the pieces of a table formatted in Python (orjson, which holds Python's lock: small
-tables, tables with strings) from a thread of its own (:class:`_Writer`), so that the
-write — on a busy disk as costly as the formatting — runs beside it.
+(:mod:`mechloop.output.lines`): one per core the process may use, whatever the load.
+:func:`write_ordered` writes the pieces of a table formatted in Python (orjson, which holds
+Python's lock: small tables, tables with strings) from a thread of its own
+(:class:`_Writer`), so that the write — on a busy disk as costly as the formatting — runs
+beside it.
 
 Forked worker processes formatting pieces of the text (orjson's, under Python's lock) were
 the way to use idle cores before the numbers were formatted in compiled code; threads
@@ -39,14 +40,15 @@ def buffers(part: Part) -> list[bytes | memoryview]:
 
 
 def threads_for(values: int) -> int:
-    """Threads to format a table of ``values`` values in compiled code: one per idle core
-    the process may use (its cores less the 1-minute load average — at most the threads
-    running now besides this one, so that this process's own solve before the write, or a
-    job just ended, does not count —, rounded), at least one and at most MAX_THREADS and
-    one per 2^16 values.  The calling thread writes meanwhile."""
-    count = min(usable_cores(), MAX_THREADS, max(1, values >> 16),
-                int(idle_cores(now=True) + 0.5))
-    return max(1, count)
+    """Threads to format a table of ``values`` values in compiled code: one per core the
+    process may use, at most MAX_THREADS and one per 2^16 values, at least one.  The
+    calling thread writes meanwhile.
+
+    Not fewer on a loaded machine: the load average (and a count of the threads running
+    at one instant) mistook this process's own solve, a job just ended or a kernel thread
+    for other work and left a core idle half the time, halving the write's speed; threads
+    beside other work only share the cores, for as long as the write lasts."""
+    return max(1, min(usable_cores(), MAX_THREADS, values >> 16))
 
 def usable_cores() -> int:
     """The cores this process may run on (its affinity; all of them where unknown)."""

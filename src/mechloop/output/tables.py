@@ -3,7 +3,7 @@
 A table of a million rows and thousands of columns is written in chunks of rows, so memory
 stays bounded by a few chunks.  A large table of numbers (float, int and bool columns) is
 formatted in compiled code without Python's lock (:mod:`mechloop.output.lines`; every float
-by :mod:`mechloop.output.shortest`), on a thread per idle core, while the calling thread
+by :mod:`mechloop.output.shortest`), on a thread per core, while the calling thread
 writes the blocks in order.  Small tables (loading the compiled code costs about half a
 CPU-second) and tables with strings or objects are formatted by orjson and joined in
 Python, into the same text, and written by a thread of their own while the next chunks
@@ -150,7 +150,7 @@ class _Columns:
 
     def write_compiled(self, handle: BinaryIO, prefixes: list[bytes], suffix: bytes, *,
                        csv: bool, skip: int = 0) -> None:
-        """Every row formatted in compiled code on a thread per idle core and written in
+        """Every row formatted in compiled code on a thread per core and written in
         order into ``handle`` (the first ``skip`` bytes left out)."""
         from mechloop.output.lines import write_lines
 
@@ -273,7 +273,7 @@ def _csv_chunk(columns: _Columns, start: int, stop: int) -> Part:
 
 def write_csv(frame: pd.DataFrame, handle: BinaryIO) -> None:
     """``frame`` as CSV (header, then one line per row) into the binary ``handle``,
-    formatted on every idle core for a large table (:mod:`mechloop.output.lines`)."""
+    formatted on every core for a large table (:mod:`mechloop.output.lines`)."""
     handle.write(b",".join(_csv_value(str(c)) for c in frame.columns) + b"\n")
     columns = _Columns(frame)
     if not columns.runs:

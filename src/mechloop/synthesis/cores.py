@@ -21,13 +21,13 @@ Each share is evaluated by a private shallow copy of the problem (and of its cir
 sub-problems), kept between calls, so the state an evaluation stores on its problem is
 never shared between two threads.
 
-How many threads: one per core this process may use that other work leaves idle — the
-rule of the table writers (:func:`mechloop.output.parallel.idle_cores`: the cores less
-the 1-minute load average), where this process's own recent work, its CPU time per
-second averaged over the same minute, is not counted as other work, and where other
-work counts at most as the threads running elsewhere at that moment (a job that has
-just ended weighs on the average for a minute).  On a busy machine that leaves one
-core, and the population is evaluated in one call.
+How many threads: one per core this process may use that other work leaves idle
+(:func:`mechloop.output.parallel.idle_cores`: the cores less the 1-minute load average;
+the table writers, whose write lasts seconds, take every core instead), where this
+process's own recent work, its CPU time per second averaged over the same minute, is not
+counted as other work, and where other work counts at most as the threads running
+elsewhere at that moment (a job that has just ended weighs on the average for a minute).
+On a busy machine that leaves one core, and the population is evaluated in one call.
 """
 
 from __future__ import annotations
