@@ -26,7 +26,7 @@ from typing import BinaryIO
 import numpy as np
 from numba import njit
 
-from mechloop.output.memory import address_of, load8, load_int64, load_uint8, store8
+from mechloop.output.memory import address_of, load8, load_uint8, store8
 from mechloop.output.shortest import SLACK, write_double_at, write_int_at
 
 #: Values in one block of rows formatted by one thread at a time (about 1.3 MB of CSV
@@ -91,7 +91,7 @@ def _format_rows(addresses: np.ndarray, strides: np.ndarray, kinds: np.ndarray,
                     tile[r * columns + c] = np.uint64(load_uint8(address + r * strides[c]))
             else:
                 for r in range(count):
-                    tile[r * columns + c] = np.uint64(load_int64(address + r * strides[c]))
+                    tile[r * columns + c] = load8(address + r * strides[c])
         for r in range(count):
             for c in range(columns):
                 at = _copy(prefix_address + prefix_at[c], prefix_at[c + 1] - prefix_at[c], at)

@@ -50,16 +50,6 @@ def store1(typingctx, address, byte):
 
 
 @intrinsic
-def load_int64(typingctx, address):
-    """The int64 at a memory address (any alignment)."""
-    def codegen(context, builder, signature, args):
-        pointer = builder.inttoptr(args[0], ir.IntType(64).as_pointer())
-        return builder.load(pointer, align=1)
-
-    return types.int64(types.intp), codegen
-
-
-@intrinsic
 def load_uint8(typingctx, address):
     """The byte at a memory address."""
     def codegen(context, builder, signature, args):
