@@ -147,9 +147,18 @@ def test_random_coupled_spatial_block_closes_and_starts_at_its_assembly(seed):
                                + math.radians(data["vectors"][3]["b"]["delta"]), atol=1e-12)
     np.testing.assert_allclose(res.values["a6"][ok], res.values["a2"][ok]
                                + math.radians(data["vectors"][6]["a"]["delta"]), atol=1e-12)
-    run = ok[1:] & ok[:-1]
+    # the assembly of position 0 followed up to the first break: four times finer input
+    # steps give the same solutions (a jump to another assembly between two positions
+    # would not be taken by both; a fixed bound on a step would not do: near a pole of
+    # its β a link turns fast).  After a break the block is found again by a search,
+    # which may enter another assembly: that part is not compared.
+    fine = _solve(_coupled_pair(seed, positions=4 * data["positions"])[0])
+    both = ok & ~fine.broken[::4]
+    run = int(np.argmin(both)) if not both.all() else both.size
+    assert run >= 1
     for name in true:
-        assert np.abs(np.diff(res.values[name])[run]).max(initial=0) < 0.5
+        np.testing.assert_allclose(res.values[name][:run], fine.values[name][::4][:run],
+                                   rtol=0, atol=1e-9)
     # a broken position is reported, never silently; where the block breaks right after a
     # good position, least squares on the raw closure from that solution finds no assembly
     # either (a limit position: the block cannot follow the input)
