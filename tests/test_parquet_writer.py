@@ -12,6 +12,7 @@ import pandas as pd
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
+from helpers.bits import same_bits
 
 from mechloop.output import parquet
 from mechloop.output.tables import write_frame
@@ -43,13 +44,6 @@ def _frame(rows: int = 23) -> pd.DataFrame:
     })
 
 
-def _same_bits(a, b) -> bool:
-    a, b = np.asarray(a, np.float64), np.asarray(b, np.float64)
-    nan = np.isnan(a)
-    return bool(np.array_equal(nan, np.isnan(b))
-                and np.array_equal(a[~nan].view(np.int64), b[~nan].view(np.int64)))
-
-
 def test_columns_without_nan_are_required_and_nan_is_null(tmp_path):
     frame = _frame()
     write_frame(frame, tmp_path / "t.parquet")
@@ -68,7 +62,7 @@ def test_columns_without_nan_are_required_and_nan_is_null(tmp_path):
     back = table.to_pandas()
     assert list(back.columns) == list(frame.columns)
     for name in ("exact [m]", "late [rad]", "first [N]"):
-        assert _same_bits(frame[name], back[name]), name
+        assert same_bits(frame[name], back[name]), name
     assert back["position"].dtype == np.int64 and back["chain_break"].dtype == bool
     assert back["position"].tolist() == frame["position"].tolist()
     assert back["chain_break"].tolist() == frame["chain_break"].tolist()

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from helpers.bits import same_bits
 from typer.testing import CliRunner
 
 from mechloop.cli import app
@@ -60,13 +61,6 @@ def small_chunks(monkeypatch, request):
     monkeypatch.setattr(tables, "threads_for", lambda values: threads)
 
 
-def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
-    a, b = np.asarray(a, np.float64), np.asarray(b, np.float64)
-    nan = np.isnan(a)
-    return bool(np.array_equal(nan, np.isnan(b))
-                and np.array_equal(a[~nan].view(np.int64), b[~nan].view(np.int64)))
-
-
 def test_csv_reads_back_bit_for_bit_and_as_pandas_wrote_it(tmp_path):
     frame = _frame()
     write_frame(frame, tmp_path / "t.csv")
@@ -76,7 +70,7 @@ def test_csv_reads_back_bit_for_bit_and_as_pandas_wrote_it(tmp_path):
     assert list(back.columns) == list(frame.columns)
     assert dict(back.dtypes) == dict(before.dtypes)  # same types as the old writer gave
     for name in ("time [s]", "a2 [deg]", "da2 [rad/s]", "dda2 [rad/s^2]"):
-        assert _same_bits(frame[name], back[name]), name
+        assert same_bits(frame[name], back[name]), name
     assert back["position"].tolist() == frame["position"].tolist()
     assert back["chain_break"].tolist() == frame["chain_break"].tolist()
     assert back["note"].fillna("").tolist() == frame["note"].tolist()
@@ -99,7 +93,7 @@ def test_json_is_the_old_list_of_records_with_exact_values(tmp_path):
         assert [type(v) for v in new.values()] == [type(v) for v in was.values()]
     for name in ("time [s]", "a2 [deg]", "da2 [rad/s]", "dda2 [rad/s^2]"):
         got = np.array([np.nan if r[name] is None else r[name] for r in records])
-        assert _same_bits(frame[name], got), name
+        assert same_bits(frame[name], got), name
     assert records[3]["a2 [deg]"] is None and records[3]["chain_break"] is True
     assert [r["note"] for r in records] == frame["note"].tolist()
 
@@ -111,7 +105,7 @@ def test_parquet_keeps_types_and_values(tmp_path):
     assert list(back.columns) == list(frame.columns)
     for name in frame.columns:
         if frame[name].dtype.kind == "f":
-            assert _same_bits(frame[name], back[name]), name
+            assert same_bits(frame[name], back[name]), name
         else:
             assert back[name].tolist() == frame[name].tolist(), name
     assert back["position"].dtype == np.int64 and back["chain_break"].dtype == bool
@@ -195,7 +189,7 @@ def test_solve_writes_every_format_with_the_same_values(tmp_path, suffix):
     assert list(back.columns) == list(frame.columns)
     for name in frame.columns:
         if frame[name].dtype.kind == "f" and suffix != ".xlsx":
-            assert _same_bits(frame[name], back[name]), name
+            assert same_bits(frame[name], back[name]), name
         else:
             assert np.allclose(back[name].astype(float), frame[name].astype(float),
                                rtol=1e-15, equal_nan=True), name

@@ -138,7 +138,6 @@ class Lines:
         self.words = np.frombuffer(b"".join(texts) + bytes(8), dtype=np.uint8)
         self.word_at = np.concatenate(([0], np.cumsum([len(t) for t in texts]))
                                       ).astype(np.int64)
-        self.csv = csv
         #: the most bytes one row takes
         self.row_bytes = (sum(lengths) + len(suffix)
                           + sum(_WIDEST[int(k)] for k in self.kinds))
