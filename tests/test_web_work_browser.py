@@ -102,7 +102,11 @@ def test_a_simulation_shows_its_curves_and_is_cancelled(browser, server):  # noq
     assert "duration: t = 0.3 s" in summary  # the library's account of how the run ended
     plot = browser.find_element(By.ID, "sim-plot")
     assert browser.execute_script("return arguments[0].naturalWidth", plot) > 100
-    # a long run, cancelled while it runs
+    # a long run, cancelled while it runs (not stopped at the steady cycle, which the
+    # example reaches after 2.7 s simulated: the run could end before the click)
+    browser.execute_script("const e = document.getElementById('editor');"
+                           "e.value = e.value.replace('until_steady: true',"
+                           " 'until_steady: false'); e.dispatchEvent(new Event('input'));")
     field = browser.find_element(By.ID, "sim-duration")
     field.clear()
     field.send_keys("300")
